@@ -1,0 +1,47 @@
+#include "graph/compiler/steps.h"
+
+namespace volgraph {
+
+std::string_view cull_reason_name(CullReason reason) {
+  switch (reason) {
+    case CullReason::scene_lacks: return "scene_lacks";
+    case CullReason::input_culled: return "input_culled";
+    case CullReason::unused: return "unused";
+  }
+  return "?";
+}
+
+std::string_view placement_method_name(PlacementMethod method) {
+  switch (method) {
+    case PlacementMethod::unaliased: return "unaliased";
+    case PlacementMethod::greedy_by_size: return "greedy_by_size";
+    case PlacementMethod::linear_scan: return "linear_scan";
+  }
+  return "?";
+}
+
+Plan compile(const Graph& graph, const CompileOptions& options, const RequirementsFn& requirements) {
+  using namespace compiler;
+  Plan plan;
+  plan.options = options;
+  const FlatGraph flat = flatten(graph);
+  Schedule schedule = order_and_cull(flat, options.cull);
+  plan.lifetimes = lifetimes(flat, schedule);
+  MemoryLayout memory = place_memory(graph, plan.lifetimes, options.alias, requirements);
+  BarrierPlan barriers = plan_barriers(flat, schedule, plan.lifetimes, memory.handovers, options.serialize);
+
+  plan.order.reserve(schedule.order.size());
+  for (uint32_t pos = 0; pos < schedule.order.size(); ++pos) {
+    plan.order.push_back({schedule.order[pos], barriers.begin[pos], barriers.count[pos]});
+  }
+  plan.culled = std::move(schedule.culled);
+  plan.position = std::move(schedule.position);
+  plan.placements = std::move(memory.placements);
+  plan.heaps = std::move(memory.heaps);
+  plan.handovers = std::move(memory.handovers);
+  plan.memory = memory.stats;
+  plan.barriers = std::move(barriers.barriers);
+  return plan;
+}
+
+}  // namespace volgraph

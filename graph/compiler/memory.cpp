@@ -1,0 +1,336 @@
+// Transient memory: each resource gets bytes in a heap of its class; two resources
+// share bytes only when their lifetimes are disjoint. Placement is greedy by size
+// with best fit among the gaps left by resources alive at the same time.
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "graph/compiler/steps.h"
+
+namespace volgraph::compiler {
+uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
+
+namespace {
+
+bool overlaps(const Lifetime& a, const Lifetime& b) { return a.first <= b.last && b.first <= a.last; }
+
+struct Item {
+  uint32_t resource;
+  Lifetime life;
+  MemoryRequirements req;
+};
+
+// Resources placed so far, found by the time buckets their lifetimes cover.
+class TimeIndex {
+ public:
+  explicit TimeIndex(uint32_t positions) : buckets_(positions / kWidth + 1) {}
+
+  void add(uint32_t item, const Lifetime& life) {
+    for (uint32_t b = life.first / kWidth; b <= life.last / kWidth; ++b) buckets_[b].push_back(item);
+  }
+
+  // Items whose lifetime overlaps `life` (each once).
+  template <typename F>
+  void for_each_overlapping(const Lifetime& life, const std::vector<Item>& items, F&& f) {
+    ++stamp_;
+    if (seen_.size() < items.size()) seen_.resize(items.size(), 0);
+    for (uint32_t b = life.first / kWidth; b <= life.last / kWidth; ++b) {
+      for (uint32_t i : buckets_[b]) {
+        if (seen_[i] == stamp_ || !overlaps(items[i].life, life)) continue;
+        seen_[i] = stamp_;
+        f(i);
+      }
+    }
+  }
+
+ private:
+  static constexpr uint32_t kWidth = 16;
+  std::vector<std::vector<uint32_t>> buckets_;
+  std::vector<uint32_t> seen_;
+  uint32_t stamp_ = 0;
+};
+
+// The lowest-waste offset for `item` among gaps between `busy` ranges (sorted by offset).
+uint64_t best_fit(const Item& item, const std::vector<std::pair<uint64_t, uint64_t>>& busy) {
+  const uint64_t size = item.req.size;
+  const uint64_t align = item.req.alignment;
+  uint64_t cursor = 0, best = UINT64_MAX, best_gap = UINT64_MAX;
+  for (const auto& [begin, end] : busy) {
+    const uint64_t start = align_up(cursor, align);
+    if (begin > start && begin - start >= size && begin - start < best_gap) {
+      best_gap = begin - start;
+      best = start;
+    }
+    cursor = std::max(cursor, end);
+  }
+  return best != UINT64_MAX ? best : align_up(cursor, align);
+}
+
+// Greedy by size keeps to the lower bound far better than a linear scan, and costs
+// time in proportion to the pairs of resources alive together; past this many pairs
+// per resource on average the linear scan takes over.
+constexpr uint64_t kGreedyPairsPerResource = 48;
+
+std::vector<uint64_t> place_aliased(std::vector<Item>& items, uint32_t positions) {
+  std::vector<uint32_t> by_size(items.size());
+  for (uint32_t i = 0; i < items.size(); ++i) by_size[i] = i;
+  std::sort(by_size.begin(), by_size.end(), [&](uint32_t a, uint32_t b) {
+    if (items[a].req.size != items[b].req.size) return items[a].req.size > items[b].req.size;
+    if (items[a].life.first != items[b].life.first) return items[a].life.first < items[b].life.first;
+    return items[a].resource < items[b].resource;
+  });
+  std::vector<uint64_t> offset(items.size(), 0);
+  TimeIndex index(positions);
+  std::vector<std::pair<uint64_t, uint64_t>> busy;
+  for (uint32_t i : by_size) {
+    busy.clear();
+    index.for_each_overlapping(items[i].life, items,
+                               [&](uint32_t j) { busy.emplace_back(offset[j], offset[j] + items[j].req.size); });
+    std::sort(busy.begin(), busy.end());
+    offset[i] = best_fit(items[i], busy);
+    index.add(i, items[i].life);
+  }
+  return offset;
+}
+
+// Side by side, strictest alignment first so that padding stays rare.
+std::vector<uint64_t> place_unaliased(const std::vector<Item>& items) {
+  std::vector<uint32_t> by_alignment(items.size());
+  for (uint32_t i = 0; i < items.size(); ++i) by_alignment[i] = i;
+  std::stable_sort(by_alignment.begin(), by_alignment.end(),
+                   [&](uint32_t a, uint32_t b) { return items[a].req.alignment > items[b].req.alignment; });
+  std::vector<uint64_t> offset(items.size());
+  uint64_t cursor = 0;
+  for (uint32_t i : by_alignment) {
+    offset[i] = align_up(cursor, items[i].req.alignment);
+    cursor = offset[i] + items[i].req.size;
+  }
+  return offset;
+}
+
+// A linear scan in order of first use: each resource takes the best-fitting free
+// block (or the top of the heap) and gives its block back after its last use.
+// O(n log n) whatever the lifetimes, at the price of some fragmentation.
+class FreeList {
+ public:
+  // Where a block of `size` aligned to `align` goes; grows the heap when no block fits.
+  uint64_t take(uint64_t size, uint64_t align) {
+    for (auto it = by_size_.lower_bound({size, 0}); it != by_size_.end(); ++it) {
+      const auto [length, start] = *it;
+      const uint64_t at = align_up(start, align);
+      if (at + size > start + length) continue;
+      erase(start, length);
+      if (at > start) insert(start, at - start);
+      if (at + size < start + length) insert(at + size, start + length - at - size);
+      return at;
+    }
+    // Nothing fits: extend the heap, reusing a free block that reaches its top.
+    uint64_t at = align_up(top_, align);
+    if (!by_offset_.empty()) {
+      const auto last = std::prev(by_offset_.end());
+      if (last->first + last->second == top_) {
+        const uint64_t start = last->first, length = last->second;
+        erase(start, length);
+        at = align_up(start, align);
+        if (at > start) insert(start, at - start);
+      }
+    }
+    top_ = std::max(top_, at + size);
+    return at;
+  }
+
+  void give_back(uint64_t start, uint64_t length) {
+    auto next = by_offset_.lower_bound(start);
+    if (next != by_offset_.end() && next->first == start + length) {  // merge with the block after
+      length += next->second;
+      erase(next->first, next->second);
+    }
+    auto prev = by_offset_.lower_bound(start);
+    if (prev != by_offset_.begin()) {
+      --prev;
+      if (prev->first + prev->second == start) {  // and with the block before
+        start = prev->first;
+        length += prev->second;
+        erase(prev->first, prev->second);
+      }
+    }
+    insert(start, length);
+  }
+
+ private:
+  void insert(uint64_t start, uint64_t length) {
+    by_offset_.emplace(start, length);
+    by_size_.emplace(length, start);
+  }
+  void erase(uint64_t start, uint64_t length) {
+    by_offset_.erase(start);
+    by_size_.erase({length, start});
+  }
+
+  std::map<uint64_t, uint64_t> by_offset_;       // start → length
+  std::set<std::pair<uint64_t, uint64_t>> by_size_;  // (length, start)
+  uint64_t top_ = 0;
+};
+
+std::vector<uint64_t> place_linear_scan(const std::vector<Item>& items) {
+  std::vector<uint32_t> by_first(items.size()), by_last(items.size());
+  for (uint32_t i = 0; i < items.size(); ++i) by_first[i] = by_last[i] = i;
+  std::sort(by_first.begin(), by_first.end(), [&](uint32_t a, uint32_t b) {
+    if (items[a].life.first != items[b].life.first) return items[a].life.first < items[b].life.first;
+    if (items[a].req.size != items[b].req.size) return items[a].req.size > items[b].req.size;
+    return items[a].resource < items[b].resource;
+  });
+  std::sort(by_last.begin(), by_last.end(),
+            [&](uint32_t a, uint32_t b) { return items[a].life.last < items[b].life.last; });
+  std::vector<uint64_t> offset(items.size(), 0);
+  FreeList heap;
+  size_t released = 0;
+  for (uint32_t i : by_first) {
+    for (; released < by_last.size() && items[by_last[released]].life.last < items[i].life.first; ++released) {
+      const uint32_t j = by_last[released];
+      heap.give_back(offset[j], items[j].req.size);
+    }
+    offset[i] = heap.take(items[i].req.size, items[i].req.alignment);
+  }
+  return offset;
+}
+
+// How many pairs of resources are alive at a common position: greedy-by-size visits
+// each such pair, so it stays the method only while they are few.
+uint64_t overlapping_pairs(const std::vector<Item>& items, uint32_t positions) {
+  std::vector<uint64_t> started(positions + 1, 0), ended(positions + 1, 0);  // counts up to a position
+  for (const Item& it : items) {
+    ++started[it.life.first];
+    ++ended[it.life.last];
+  }
+  for (uint32_t p = 1; p <= positions; ++p) {
+    started[p] += started[p - 1];
+    ended[p] += ended[p - 1];
+  }
+  uint64_t pairs = 0;  // for each resource: started by its last position − ended before its first
+  for (const Item& it : items) pairs += started[it.life.last] - (it.life.first ? ended[it.life.first - 1] : 0) - 1;
+  return pairs / 2;
+}
+
+uint64_t heap_size(const std::vector<Item>& items, const std::vector<uint64_t>& offset) {
+  uint64_t size = 0;
+  for (size_t i = 0; i < items.size(); ++i) size = std::max(size, offset[i] + items[i].req.size);
+  return size;
+}
+
+// The most bytes alive at one position: no placement can do better.
+uint64_t live_bytes_peak(const std::vector<Item>& items, uint32_t positions) {
+  std::vector<int64_t> delta(positions + 2, 0);
+  for (const Item& it : items) {
+    delta[it.life.first] += static_cast<int64_t>(it.req.size);
+    delta[it.life.last + 1] -= static_cast<int64_t>(it.req.size);
+  }
+  int64_t live = 0, peak = 0;
+  for (int64_t d : delta) peak = std::max(peak, live += d);
+  return static_cast<uint64_t>(peak);
+}
+
+// Sweeps the heap in order of first use; the latest occupant of each byte range is
+// the one a new resource hands over from.
+void find_handovers(const std::vector<Item>& items, const std::vector<uint64_t>& offset,
+                    std::vector<Handover>& out) {
+  std::vector<uint32_t> by_start(items.size());
+  for (uint32_t i = 0; i < items.size(); ++i) by_start[i] = i;
+  std::sort(by_start.begin(), by_start.end(), [&](uint32_t a, uint32_t b) {
+    if (items[a].life.first != items[b].life.first) return items[a].life.first < items[b].life.first;
+    return items[a].resource < items[b].resource;
+  });
+  struct Segment {
+    uint64_t end;
+    uint32_t item;
+  };
+  std::map<uint64_t, Segment> occupant;  // start → [start, end) last used by item
+  std::vector<uint32_t> previous;
+  for (uint32_t i : by_start) {
+    const uint64_t begin = offset[i], end = begin + items[i].req.size;
+    if (end == begin) continue;
+    previous.clear();
+    auto it = occupant.upper_bound(begin);
+    if (it != occupant.begin() && std::prev(it)->second.end > begin) --it;
+    while (it != occupant.end() && it->first < end) {
+      const uint64_t s = it->first;
+      const Segment seg = it->second;
+      previous.push_back(seg.item);
+      it = occupant.erase(it);
+      if (s < begin) occupant.emplace(s, Segment{begin, seg.item});
+      if (seg.end > end) occupant.emplace(end, Segment{seg.end, seg.item});
+    }
+    occupant.emplace(begin, Segment{end, i});
+    std::sort(previous.begin(), previous.end());
+    previous.erase(std::unique(previous.begin(), previous.end()), previous.end());
+    for (uint32_t p : previous) out.push_back({items[i].resource, items[p].resource});
+  }
+}
+
+}  // namespace
+
+MemoryLayout place_memory(const Graph& graph, const std::vector<Lifetime>& lifetimes, bool alias,
+                          const RequirementsFn& requirements) {
+  MemoryLayout m;
+  m.placements.resize(graph.resources.size());
+  uint32_t positions = 0;
+  std::map<uint32_t, std::vector<Item>> by_class;
+  for (uint32_t r = 0; r < graph.resources.size(); ++r) {
+    const Lifetime& life = lifetimes[r];
+    if (life.first == kNone) continue;
+    const ResourceDesc& desc = graph.resources[r].desc;
+    MemoryRequirements req = requirements ? requirements(desc) : estimate_requirements(desc);
+    req.alignment = std::max<uint64_t>(1, req.alignment);
+    m.placements[r].requirements = req;
+    if (desc.persistent) {
+      m.stats.persistent_bytes += req.size;
+      continue;
+    }
+    positions = std::max(positions, life.last + 1);
+    by_class[req.heap_class].push_back({r, life, req});
+  }
+  for (auto& [heap_class, items] : by_class) {
+    const PlacementMethod method = !alias ? PlacementMethod::unaliased
+                                   : overlapping_pairs(items, positions) <= kGreedyPairsPerResource * items.size()
+                                       ? PlacementMethod::greedy_by_size
+                                       : PlacementMethod::linear_scan;
+    // Side by side is what --no-alias allocates; an aliased layout that padding made
+    // larger (mixed alignments) gives way to it.
+    const std::vector<uint64_t> side_by_side = place_unaliased(items);
+    const uint64_t side_by_side_size = heap_size(items, side_by_side);
+    std::vector<uint64_t> offset = method == PlacementMethod::greedy_by_size ? place_aliased(items, positions)
+                                   : method == PlacementMethod::linear_scan  ? place_linear_scan(items)
+                                                                             : side_by_side;
+    if (heap_size(items, offset) > side_by_side_size) offset = side_by_side;
+    m.stats.method = std::max(m.stats.method, method);
+    Heap heap{heap_class, heap_size(items, offset), 1};
+    const uint32_t heap_index = static_cast<uint32_t>(m.heaps.size());
+    for (size_t i = 0; i < items.size(); ++i) {
+      Placement& p = m.placements[items[i].resource];
+      p.heap = heap_index;
+      p.offset = offset[i];
+      heap.alignment = std::max(heap.alignment, items[i].req.alignment);
+    }
+    m.stats.unaliased_bytes += side_by_side_size;
+    m.stats.transient_count += items.size();
+    m.stats.aliased_bytes += heap.size;
+    m.stats.lower_bound_bytes += live_bytes_peak(items, positions);
+    m.heaps.push_back(heap);
+    if (alias) find_handovers(items, offset, m.handovers);
+  }
+  return m;
+}
+
+}  // namespace volgraph::compiler
+
+namespace volgraph {
+
+MemoryRequirements estimate_requirements(const ResourceDesc& desc) {
+  // Typical of desktop drivers: 64 KiB for optimal-tiling images, 256 B for buffers,
+  // and buffers kept apart from images (buffer-image granularity).
+  const bool buffer = desc.kind == ResourceKind::buffer;
+  const uint64_t alignment = buffer ? 256 : 65536;
+  return {compiler::align_up(std::max<uint64_t>(1, content_bytes(desc)), alignment), alignment, buffer ? 1u : 0u};
+}
+
+}  // namespace volgraph

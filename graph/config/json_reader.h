@@ -1,0 +1,72 @@
+// Strict reading of JSON values with diagnostics. Internal to graph/config: it pulls
+// in nlohmann/json, which must stay out of widely included headers.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "graph/config/diagnostics.h"
+#include "graph/config/json_lines.h"
+
+namespace volgraph::config {
+
+using Json = nlohmann::ordered_json;
+
+struct Source {
+  std::string file;  // as named by the user (or the including file)
+  std::string dir;   // folder that relative paths inside the file start from
+  JsonLines lines;
+};
+
+// A JSON value, where it is, and the sink for what is wrong with it.
+class Node {
+ public:
+  Node(const Source& source, const Json& json, std::string pointer, Diagnostics& diags)
+      : source_(&source), json_(&json), pointer_(std::move(pointer)), diags_(&diags) {}
+
+  const Json& json() const { return *json_; }
+  const std::string& pointer() const { return pointer_; }
+  const Source& source() const { return *source_; }
+  Where where() const;
+  void error(std::string message) const;
+
+  // Whether this is an object; reports keys not in `allowed`, with a suggestion.
+  bool object(std::initializer_list<const char*> allowed) const;
+  bool object_any_keys() const;
+  bool array() const;
+  std::optional<Node> member(const char* key) const;
+  Node child(const std::string& key) const;
+  Node element(size_t index) const;
+  size_t size() const { return json_->size(); }
+
+  std::optional<double> number(double min, double max) const;
+  std::optional<int64_t> integer(int64_t min, int64_t max) const;
+  std::optional<bool> boolean() const;
+  std::optional<std::string> string() const;
+  std::optional<std::array<double, 3>> vec3(double min, double max) const;
+  // A path relative to the file's folder; checks the file exists.
+  std::optional<std::string> existing_path() const;
+
+ private:
+  const Source* source_;
+  const Json* json_;
+  std::string pointer_;
+  Diagnostics* diags_;
+};
+
+std::string describe(const Json& j);  // "a string \"x\"", "an object", ... for messages
+std::string range_text(double min, double max);
+
+// Reads member `key` into `out` when present (leaves it unchanged when absent or bad).
+void read(const Node& obj, const char* key, double& out, double min, double max);
+void read(const Node& obj, const char* key, std::array<double, 3>& out, double min, double max);
+void read(const Node& obj, const char* key, bool& out);
+void read(const Node& obj, const char* key, std::string& out);
+
+}  // namespace volgraph::config

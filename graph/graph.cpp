@@ -1,0 +1,152 @@
+#include "graph/graph.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace volgraph {
+
+GraphBuilder::GraphBuilder(Extent output_size, SceneFeatures scene) {
+  graph_.output_size = output_size;
+  graph_.scene = scene;
+}
+
+uint32_t GraphBuilder::add_pass(std::string name, const PassDecl& decl, uint16_t variant) {
+  GraphPass p;
+  p.name = std::move(name);
+  p.decl = &decl;
+  p.variant = variant;
+  p.kind = decl.kind;
+  p.needs = decl.needs;
+  graph_.passes.push_back(std::move(p));
+  return static_cast<uint32_t>(graph_.passes.size() - 1);
+}
+
+void GraphBuilder::check_slot(uint32_t pass, uint16_t slot, SlotDirection direction, const GraphResource* resource) {
+  const GraphPass& p = graph_.passes.at(pass);
+  if (slot >= p.decl->slots.size()) throw GraphError(pass, slot, "no such slot");
+  const SlotDecl& s = p.decl->slots[slot];
+  if (s.direction != direction) throw GraphError(pass, slot, "slot '" + s.name + "' has another direction");
+  for (const ResourceUse& u : p.uses) {
+    if (u.slot == slot) throw GraphError(pass, slot, "slot '" + s.name + "' is bound twice");
+  }
+  if (!resource) return;
+  if (resource->desc.kind != s.kind) {
+    throw GraphError(pass, slot,
+                     "slot '" + s.name + "' takes a " + std::string(kind_name(s.kind)) + ", but '" +
+                         resource->desc.name + "' is a " + std::string(kind_name(resource->desc.kind)));
+  }
+  if (s.format != Format::undefined && resource->desc.format != s.format) {
+    throw GraphError(pass, slot,
+                     "slot '" + s.name + "' takes format " + std::string(format_info(s.format).name) + ", but '" +
+                         resource->desc.name + "' is " + std::string(format_info(resource->desc.format).name));
+  }
+}
+
+ResourceVersion GraphBuilder::create(uint32_t pass, uint16_t slot, ResourceDesc desc) {
+  check_slot(pass, slot, SlotDirection::output, nullptr);
+  GraphPass& p = graph_.passes[pass];
+  const SlotDecl& s = p.decl->slots[slot];
+  if (desc.name.empty()) desc.name = p.name + "." + s.name;
+  if (!usage_fits_kind(s.usage, desc.kind)) {
+    throw GraphError(pass, slot, "slot '" + s.name + "' cannot be used as " + std::string(usage_name(s.usage)) +
+                                     " on a " + std::string(kind_name(desc.kind)));
+  }
+  desc.persistent = desc.persistent || s.persistent;
+  GraphResource r;
+  r.desc = std::move(desc);
+  r.creator = pass;
+  r.version_writers.push_back(pass);
+  graph_.resources.push_back(std::move(r));
+  const uint32_t id = static_cast<uint32_t>(graph_.resources.size() - 1);
+  p.uses.push_back({id, 0, slot, s.usage, SlotDirection::output, false});
+  return {id, 0};
+}
+
+// A pass that reads a version through one slot and modifies it through another would
+// have to run before itself: say so rather than report a cycle of one pass.
+void GraphBuilder::check_not_read_and_modified(uint32_t pass, uint16_t slot, ResourceVersion what, SlotDirection direction) {
+  const GraphPass& p = graph_.passes[pass];
+  for (const ResourceUse& u : p.uses) {
+    if (u.resource != what.resource || u.version != what.version || u.direction == direction) continue;
+    if (u.direction == SlotDirection::output) continue;
+    throw GraphError(pass, slot,
+                     "slots '" + p.decl->slots[u.slot].name + "' and '" + p.decl->slots[slot].name + "' both take '" +
+                         graph_.resources[what.resource].desc.name +
+                         "', and one modifies it; read it through the modifying slot instead");
+  }
+}
+
+void GraphBuilder::read(uint32_t pass, uint16_t slot, ResourceVersion what) {
+  if (what.resource >= graph_.resources.size()) throw GraphError(pass, slot, "no such resource");
+  const GraphResource& r = graph_.resources[what.resource];
+  check_slot(pass, slot, SlotDirection::input, &r);
+  if (what.version >= r.version_writers.size()) throw GraphError(pass, slot, "no such version");
+  check_not_read_and_modified(pass, slot, what, SlotDirection::input);
+  GraphPass& p = graph_.passes[pass];
+  const SlotDecl& s = p.decl->slots[slot];
+  p.uses.push_back({what.resource, what.version, slot, s.usage, SlotDirection::input, s.optional});
+}
+
+ResourceVersion GraphBuilder::modify(uint32_t pass, uint16_t slot, ResourceVersion what) {
+  if (what.resource >= graph_.resources.size()) throw GraphError(pass, slot, "no such resource");
+  GraphResource& r = graph_.resources[what.resource];
+  check_slot(pass, slot, SlotDirection::inout, &r);
+  if (what.version + 1 != r.version_writers.size()) {
+    const std::string& other = graph_.passes[r.version_writers[what.version + 1]].name;
+    throw GraphError(pass, slot,
+                     "'" + r.desc.name + "' is already modified by pass '" + other +
+                         "'; chain the modifications (wire this slot to '" + other + "')");
+  }
+  check_not_read_and_modified(pass, slot, what, SlotDirection::inout);
+  GraphPass& p = graph_.passes[pass];
+  const SlotDecl& s = p.decl->slots[slot];
+  p.uses.push_back({what.resource, what.version, slot, s.usage, SlotDirection::inout, false});
+  r.version_writers.push_back(pass);
+  return {what.resource, what.version + 1};
+}
+
+void GraphBuilder::mark_output(ResourceVersion what) {
+  if (what.resource >= graph_.resources.size()) throw GraphError(kNone, -1, "no such resource");
+  const GraphResource& r = graph_.resources[what.resource];
+  if (what.version + 1 != r.version_writers.size()) {
+    throw GraphError(kNone, -1,
+                     "graph output '" + r.desc.name + "' is modified later by pass '" +
+                         graph_.passes[r.version_writers[what.version + 1]].name + "'; output that pass's slot");
+  }
+  if (std::find(graph_.outputs.begin(), graph_.outputs.end(), what) == graph_.outputs.end()) {
+    graph_.outputs.push_back(what);
+  }
+}
+
+Graph GraphBuilder::finish() { return std::move(graph_); }
+
+ResourceDesc resolve_slot(const PassDecl& decl, const SlotDecl& slot, Extent output_size, int64_t size_param) {
+  (void)decl;
+  ResourceDesc d;
+  d.kind = slot.kind;
+  d.format = slot.format;
+  d.persistent = slot.persistent;
+  switch (slot.size.mode) {
+    case SizeSpec::Mode::absolute:
+      d.extent = slot.size.absolute;
+      d.buffer_bytes = slot.size.buffer_bytes;
+      break;
+    case SizeSpec::Mode::relative: {
+      auto scaled = [](uint32_t n, float s) {
+        return std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(double(n) * s)));
+      };
+      d.extent = {scaled(output_size.width, slot.size.scale_x), scaled(output_size.height, slot.size.scale_y),
+                  std::max<uint32_t>(1, slot.size.absolute.depth)};
+      break;
+    }
+    case SizeSpec::Mode::square_param: {
+      const uint32_t side = static_cast<uint32_t>(std::max<int64_t>(1, size_param));
+      d.extent = {side, side, std::max<uint32_t>(1, slot.size.absolute.depth)};
+      break;
+    }
+  }
+  if (d.kind == ResourceKind::texture2d) d.extent.depth = 1;
+  return d;
+}
+
+}  // namespace volgraph

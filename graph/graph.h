@@ -1,0 +1,91 @@
+// The wired graph the compiler takes: passes, the resources they create, and every
+// use of a resource by a pass, with versions (a pass that modifies a resource makes
+// a new version of it). Built by the config loader, or directly with GraphBuilder.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "graph/pass_decl.h"
+#include "graph/resource.h"
+
+namespace volgraph {
+
+constexpr uint32_t kNone = 0xffffffffu;
+
+struct ResourceVersion {
+  uint32_t resource = kNone;
+  uint32_t version = 0;
+  friend bool operator==(const ResourceVersion&, const ResourceVersion&) = default;
+};
+
+struct ResourceUse {
+  uint32_t resource = kNone;
+  uint32_t version = 0;  // the version read; a writer makes version + 1 (a creator makes 0)
+  uint16_t slot = 0;     // index into the pass decl's slots
+  Usage usage = Usage::sampled;
+  SlotDirection direction = SlotDirection::input;
+  bool optional = false;
+};
+
+struct GraphPass {
+  std::string name;
+  const PassDecl* decl = nullptr;
+  uint16_t variant = 0;
+  PassKind kind = PassKind::compute;
+  SceneFeatures needs = 0;
+  std::vector<ResourceUse> uses;
+  std::vector<ParamValue> params;  // as the decl's params; empty: the defaults
+};
+
+struct GraphResource {
+  ResourceDesc desc;
+  uint32_t creator = kNone;              // pass that makes version 0
+  std::vector<uint32_t> version_writers;  // pass that made version v (v = 0: creator)
+};
+
+struct Graph {
+  Extent output_size{};
+  SceneFeatures scene = 0;
+  std::vector<GraphPass> passes;
+  std::vector<GraphResource> resources;
+  std::vector<ResourceVersion> outputs;  // what the frame delivers
+};
+
+// A graph that cannot be built (wiring broken): what and where, in graph terms.
+class GraphError : public std::runtime_error {
+ public:
+  GraphError(uint32_t pass, int slot, const std::string& message)
+      : std::runtime_error(message), pass(pass), slot(slot) {}
+  uint32_t pass;  // kNone when not about one pass
+  int slot;       // -1 when not about one slot
+};
+
+class GraphBuilder {
+ public:
+  GraphBuilder(Extent output_size, SceneFeatures scene);
+
+  uint32_t add_pass(std::string name, const PassDecl& decl, uint16_t variant = 0);
+  // Creates the resource of an output slot; desc.name is filled in when empty.
+  ResourceVersion create(uint32_t pass, uint16_t slot, ResourceDesc desc);
+  void read(uint32_t pass, uint16_t slot, ResourceVersion what);
+  // An inout slot: reads `what` and makes the next version of the same resource.
+  ResourceVersion modify(uint32_t pass, uint16_t slot, ResourceVersion what);
+  void mark_output(ResourceVersion what);
+
+  Graph& graph() { return graph_; }
+  Graph finish();
+
+ private:
+  void check_slot(uint32_t pass, uint16_t slot, SlotDirection direction, const GraphResource* resource);
+  void check_not_read_and_modified(uint32_t pass, uint16_t slot, ResourceVersion what, SlotDirection direction);
+  Graph graph_;
+};
+
+// The resource desc an output slot of `decl` gets in a frame of `output_size`
+// (size_param: the value of a square_param size, 0 when unused).
+ResourceDesc resolve_slot(const PassDecl& decl, const SlotDecl& slot, Extent output_size, int64_t size_param);
+
+}  // namespace volgraph

@@ -1,0 +1,126 @@
+#include "graph/pass_decl.h"
+
+#include <cstdio>
+
+namespace volgraph {
+namespace {
+
+template <typename T>
+int index_by_name(const std::vector<T>& items, std::string_view name) {
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (items[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::string number_text(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+}  // namespace
+
+int PassDecl::variant_index(std::string_view variant) const { return index_by_name(variants, variant); }
+int PassDecl::param_index(std::string_view param) const { return index_by_name(params, param); }
+int PassDecl::slot_index(std::string_view slot) const { return index_by_name(slots, slot); }
+
+ParamDecl param_bool(std::string name, bool def, std::string doc) {
+  return {std::move(name), ParamType::boolean, def, 0, 1, "", {}, std::move(doc)};
+}
+
+ParamDecl param_int(std::string name, int64_t def, int64_t min, int64_t max, std::string unit, std::string doc) {
+  return {std::move(name), ParamType::integer, def, double(min), double(max), std::move(unit), {}, std::move(doc)};
+}
+
+ParamDecl param_number(std::string name, double def, double min, double max, std::string unit, std::string doc) {
+  return {std::move(name), ParamType::number, def, min, max, std::move(unit), {}, std::move(doc)};
+}
+
+ParamDecl param_vec3(std::string name, std::array<double, 3> def, double min, double max, std::string unit,
+                     std::string doc) {
+  return {std::move(name), ParamType::vec3, def, min, max, std::move(unit), {}, std::move(doc)};
+}
+
+ParamDecl param_choice(std::string name, std::string def, std::vector<std::string> choices, std::string doc) {
+  return {std::move(name), ParamType::choice, std::move(def), 0, 0, "", std::move(choices), std::move(doc)};
+}
+
+SlotDecl slot_in(std::string name, ResourceKind kind, Usage usage, std::string doc) {
+  SlotDecl s;
+  s.name = std::move(name);
+  s.direction = SlotDirection::input;
+  s.kind = kind;
+  s.usage = usage;
+  s.doc = std::move(doc);
+  return s;
+}
+
+SlotDecl slot_optional_in(std::string name, ResourceKind kind, Usage usage, std::string doc) {
+  SlotDecl s = slot_in(std::move(name), kind, usage, std::move(doc));
+  s.optional = true;
+  return s;
+}
+
+SlotDecl slot_out(std::string name, ResourceKind kind, Usage usage, Format format, SizeSpec size, std::string doc) {
+  SlotDecl s;
+  s.name = std::move(name);
+  s.direction = SlotDirection::output;
+  s.kind = kind;
+  s.usage = usage;
+  s.format = format;
+  s.size = std::move(size);
+  s.doc = std::move(doc);
+  return s;
+}
+
+SlotDecl slot_out_like(std::string name, std::string input_slot, Usage usage, std::string doc) {
+  SlotDecl s;
+  s.name = std::move(name);
+  s.direction = SlotDirection::output;
+  s.usage = usage;
+  s.like = std::move(input_slot);
+  s.doc = std::move(doc);
+  return s;
+}
+
+SlotDecl slot_inout(std::string name, ResourceKind kind, Usage usage, std::string doc) {
+  SlotDecl s = slot_in(std::move(name), kind, usage, std::move(doc));
+  s.direction = SlotDirection::inout;
+  return s;
+}
+
+std::string_view pass_kind_name(PassKind kind) {
+  switch (kind) {
+    case PassKind::compute: return "compute";
+    case PassKind::graphics: return "graphics";
+    case PassKind::transfer: return "transfer";
+  }
+  return "?";
+}
+
+std::string_view param_type_name(ParamType type) {
+  switch (type) {
+    case ParamType::boolean: return "boolean";
+    case ParamType::integer: return "integer";
+    case ParamType::number: return "number";
+    case ParamType::vec3: return "vec3";
+    case ParamType::choice: return "choice";
+  }
+  return "?";
+}
+
+std::string param_value_text(const ParamValue& value) {
+  struct Visitor {
+    std::string operator()(bool b) const { return b ? "true" : "false"; }
+    std::string operator()(int64_t i) const { return std::to_string(i); }
+    std::string operator()(double d) const { return number_text(d); }
+    std::string operator()(const std::array<double, 3>& v) const {
+      return "[" + number_text(v[0]) + ", " + number_text(v[1]) + ", " + number_text(v[2]) + "]";
+    }
+    std::string operator()(const std::string& s) const { return "\"" + s + "\""; }
+  };
+  return std::visit(Visitor{}, value);
+}
+
+}  // namespace volgraph

@@ -1,0 +1,90 @@
+// The declaration of a pass type: what a user may wire, set and swap.
+// Each pass file builds one PassDecl as a table: variants, parameters, slots, needs.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "graph/access.h"
+#include "graph/resource.h"
+#include "graph/scene_features.h"
+
+namespace volgraph {
+
+enum class ParamType : uint8_t { boolean, integer, number, vec3, choice };
+
+using ParamValue = std::variant<bool, int64_t, double, std::array<double, 3>, std::string>;
+
+struct ParamDecl {
+  std::string name;
+  ParamType type = ParamType::number;
+  ParamValue default_value;
+  double min = 0.0;  // integer, number, vec3 (each component)
+  double max = 0.0;
+  std::string unit;                  // "m", "1/m", "texels", "" for none
+  std::vector<std::string> choices;  // choice
+  std::string doc;
+};
+
+struct VariantDecl {
+  std::string name;
+  std::string doc;
+};
+
+enum class SlotDirection : uint8_t {
+  input,   // reads a resource another pass made
+  output,  // creates a resource
+  inout,   // modifies a resource another pass made; downstream sees the new version
+};
+
+struct SlotDecl {
+  std::string name;
+  SlotDirection direction = SlotDirection::input;
+  ResourceKind kind = ResourceKind::texture2d;
+  Usage usage = Usage::sampled;
+  Format format = Format::undefined;  // outputs: the default; inputs: undefined = any
+  SizeSpec size{};                    // outputs only
+  bool optional = false;              // inputs: the pass runs without it
+  bool persistent = false;            // outputs: kept across frames, never aliased
+  bool format_overridable = false;    // outputs: config may choose another format
+  bool size_overridable = false;      // outputs: config may choose another size
+  std::string like;                   // outputs: take kind, format and size from this input slot
+  std::string doc;
+};
+
+struct PassDecl {
+  std::string name;
+  PassKind kind = PassKind::compute;
+  std::string doc;
+  std::vector<VariantDecl> variants;  // first is the default; never empty
+  std::vector<ParamDecl> params;
+  std::vector<SlotDecl> slots;
+  SceneFeatures needs = 0;
+
+  int variant_index(std::string_view variant) const;  // -1 when unknown
+  int param_index(std::string_view param) const;
+  int slot_index(std::string_view slot) const;
+};
+
+// Table helpers, so a pass reads as one declaration.
+ParamDecl param_bool(std::string name, bool def, std::string doc);
+ParamDecl param_int(std::string name, int64_t def, int64_t min, int64_t max, std::string unit, std::string doc);
+ParamDecl param_number(std::string name, double def, double min, double max, std::string unit, std::string doc);
+ParamDecl param_vec3(std::string name, std::array<double, 3> def, double min, double max, std::string unit,
+                     std::string doc);
+ParamDecl param_choice(std::string name, std::string def, std::vector<std::string> choices, std::string doc);
+
+SlotDecl slot_in(std::string name, ResourceKind kind, Usage usage, std::string doc);
+SlotDecl slot_optional_in(std::string name, ResourceKind kind, Usage usage, std::string doc);
+SlotDecl slot_out(std::string name, ResourceKind kind, Usage usage, Format format, SizeSpec size, std::string doc);
+SlotDecl slot_out_like(std::string name, std::string input_slot, Usage usage, std::string doc);
+SlotDecl slot_inout(std::string name, ResourceKind kind, Usage usage, std::string doc);
+
+std::string_view pass_kind_name(PassKind kind);
+std::string_view param_type_name(ParamType type);
+std::string param_value_text(const ParamValue& value);
+
+}  // namespace volgraph

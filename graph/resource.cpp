@@ -1,0 +1,83 @@
+#include "graph/resource.h"
+
+#include <array>
+
+namespace volgraph {
+namespace {
+
+constexpr std::array<FormatInfo, 14> kFormats = {{
+    {"undefined", 0, false, false},
+    {"r8_unorm", 1, false, false},
+    {"rgba8_unorm", 4, false, true},
+    {"rgba8_srgb", 4, false, false},
+    {"r16_float", 2, false, false},
+    {"rg16_float", 4, false, false},
+    {"rgba16_float", 8, false, true},
+    {"r32_float", 4, false, true},
+    {"rg32_float", 8, false, true},
+    {"rgba32_float", 16, false, true},
+    {"r11g11b10_float", 4, false, false},
+    {"r32_uint", 4, false, true},
+    {"d16_unorm", 2, true, false},
+    {"d32_float", 4, true, false},
+}};
+
+constexpr std::array<std::string_view, 3> kKinds = {"texture2d", "texture3d", "buffer"};
+
+}  // namespace
+
+const FormatInfo& format_info(Format format) { return kFormats[static_cast<size_t>(format)]; }
+
+std::optional<Format> format_from_name(std::string_view name) {
+  for (size_t i = 1; i < kFormats.size(); ++i) {
+    if (kFormats[i].name == name) return static_cast<Format>(i);
+  }
+  return std::nullopt;
+}
+
+std::string_view kind_name(ResourceKind kind) { return kKinds[static_cast<size_t>(kind)]; }
+
+std::optional<ResourceKind> kind_from_name(std::string_view name) {
+  for (size_t i = 0; i < kKinds.size(); ++i) {
+    if (kKinds[i] == name) return static_cast<ResourceKind>(i);
+  }
+  return std::nullopt;
+}
+
+SizeSpec SizeSpec::fixed(uint32_t w, uint32_t h, uint32_t d) {
+  SizeSpec s;
+  s.mode = Mode::absolute;
+  s.absolute = {w, h, d};
+  return s;
+}
+
+SizeSpec SizeSpec::of_output(float sx, float sy, uint32_t depth) {
+  SizeSpec s;
+  s.mode = Mode::relative;
+  s.scale_x = sx;
+  s.scale_y = sy;
+  s.absolute.depth = depth;
+  return s;
+}
+
+SizeSpec SizeSpec::square_of(std::string param_name) {
+  SizeSpec s;
+  s.mode = Mode::square_param;
+  s.param = std::move(param_name);
+  return s;
+}
+
+SizeSpec SizeSpec::bytes(uint64_t n) {
+  SizeSpec s;
+  s.mode = Mode::absolute;
+  s.buffer_bytes = n;
+  return s;
+}
+
+uint64_t content_bytes(const ResourceDesc& desc) {
+  if (desc.kind == ResourceKind::buffer) return desc.buffer_bytes;
+  return uint64_t{format_info(desc.format).bytes_per_texel} * desc.extent.width * desc.extent.height *
+         desc.extent.depth;
+}
+
+}  // namespace volgraph

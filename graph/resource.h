@@ -1,0 +1,80 @@
+// Resources a render graph passes between its nodes: kinds, formats, sizes.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace volgraph {
+
+enum class ResourceKind : uint8_t { texture2d, texture3d, buffer };
+
+// Texel formats a slot may hold. Storage-capable ones match WebGPU storage formats.
+enum class Format : uint8_t {
+  undefined,
+  r8_unorm,
+  rgba8_unorm,
+  rgba8_srgb,
+  r16_float,
+  rg16_float,
+  rgba16_float,
+  r32_float,
+  rg32_float,
+  rgba32_float,
+  r11g11b10_float,
+  r32_uint,
+  d16_unorm,
+  d32_float,
+};
+
+struct FormatInfo {
+  std::string_view name;
+  uint32_t bytes_per_texel;
+  bool is_depth;
+  bool storage_capable;  // usable as a storage texture on both backends
+};
+
+const FormatInfo& format_info(Format format);
+std::optional<Format> format_from_name(std::string_view name);
+std::string_view kind_name(ResourceKind kind);
+std::optional<ResourceKind> kind_from_name(std::string_view name);
+
+struct Extent {
+  uint32_t width = 1;
+  uint32_t height = 1;
+  uint32_t depth = 1;
+  friend bool operator==(const Extent&, const Extent&) = default;
+};
+
+// How a slot's size is decided: fixed, a fraction of the frame's output size,
+// or a square whose side is an integer parameter of the pass (shadow map resolution).
+struct SizeSpec {
+  enum class Mode : uint8_t { absolute, relative, square_param };
+  Mode mode = Mode::relative;
+  Extent absolute{};             // absolute: all three; relative/square_param: depth only
+  float scale_x = 1.0f;          // relative
+  float scale_y = 1.0f;          // relative
+  std::string param;             // square_param
+  uint64_t buffer_bytes = 0;     // buffers: absolute size in bytes
+
+  static SizeSpec fixed(uint32_t w, uint32_t h = 1, uint32_t d = 1);
+  static SizeSpec of_output(float sx = 1.0f, float sy = 1.0f, uint32_t depth = 1);
+  static SizeSpec square_of(std::string param_name);
+  static SizeSpec bytes(uint64_t n);
+};
+
+// A concrete resource once sizes are resolved against the frame.
+struct ResourceDesc {
+  std::string name;  // "pass.slot" of the pass that creates it
+  ResourceKind kind = ResourceKind::texture2d;
+  Format format = Format::undefined;
+  Extent extent{};
+  uint64_t buffer_bytes = 0;
+  bool persistent = false;  // lives across frames (history, LUT cache): never aliased
+};
+
+// Bytes the resource's contents take, before any alignment a backend adds.
+uint64_t content_bytes(const ResourceDesc& desc);
+
+}  // namespace volgraph

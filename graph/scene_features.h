@@ -1,0 +1,31 @@
+// What a scene contains that passes may need; a pass whose needs fail is culled.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace volgraph {
+
+enum class SceneFeature : uint8_t {
+  geometry,              // at least one object
+  lights,                // at least one light
+  shadow_casting_light,  // a directional or spot light that casts shadows
+  medium,                // any participating medium (global, height fog or volume)
+  local_volumes,         // media confined to local volumes
+  atmosphere,
+  clouds,
+  translucent_objects,   // objects whose material transmits light
+  count,
+};
+
+using SceneFeatures = uint32_t;  // bit (1 << feature)
+
+constexpr SceneFeatures feature_bit(SceneFeature f) { return 1u << static_cast<uint32_t>(f); }
+std::string_view feature_name(SceneFeature f);
+std::optional<SceneFeature> feature_from_name(std::string_view name);
+// "medium, clouds" for the bits set; `none` when there are none.
+std::string features_text(SceneFeatures features, std::string_view none = "nothing");
+
+}  // namespace volgraph

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Command-line behaviour, one case per call:
+#   cli_test.sh VOLGRAPH good CONFIG      validate and plan (text, --json, --dot through graphviz) succeed
+#   cli_test.sh VOLGRAPH bad CONFIG       exit 2, one diagnostic naming file, line and pointer, nothing on stdout
+#   cli_test.sh VOLGRAPH render CONFIG    render says it is not there yet and writes no file
+#   cli_test.sh VOLGRAPH usage            bad command lines exit 2 with one message
+set -uo pipefail
+volgraph=$1 mode=$2 config=${3:-}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+case "$mode" in
+  good)
+    "$volgraph" validate "$config" >"$tmp/out" 2>"$tmp/err" || fail "validate $config: $(cat "$tmp/err")"
+    grep -q "valid" "$tmp/out" || fail "validate printed: $(cat "$tmp/out")"
+    for flags in "" "--json" "--dot" "--no-cull" "--no-alias" "--serialize" "--size 320x180"; do
+      # shellcheck disable=SC2086
+      "$volgraph" plan "$config" $flags >"$tmp/plan" 2>"$tmp/err" || fail "plan $flags $config: $(cat "$tmp/err")"
+      [ -s "$tmp/plan" ] || fail "plan $flags printed nothing"
+    done
+    "$volgraph" plan "$config" --dot >"$tmp/plan.dot" || fail "plan --dot"
+    dot -Tsvg "$tmp/plan.dot" >"$tmp/plan.svg" 2>"$tmp/err" || fail "graphviz rejects the dot output: $(cat "$tmp/err")"
+    grep -q "<svg" "$tmp/plan.svg" || fail "no svg from dot"
+    ;;
+  bad)
+    expect=$(cat "${config%.json}.expect")
+    dir=$(dirname "$config")
+    (cd "$dir" && "$volgraph" validate "$(basename "$config")" >"$tmp/out" 2>"$tmp/err")
+    code=$?
+    [ "$code" -eq 2 ] || fail "exit $code (expected 2) for $config; stderr: $(cat "$tmp/err")"
+    [ ! -s "$tmp/out" ] || fail "stdout not empty: $(cat "$tmp/out")"
+    head -n 1 "$tmp/err" | grep -qF -- "$expect" || fail "expected: $expect
+got: $(cat "$tmp/err")"
+    [ "$(wc -l <"$tmp/err")" -eq 1 ] || fail "expected one message, got: $(cat "$tmp/err")"
+    (cd "$dir" && "$volgraph" plan "$(basename "$config")" >/dev/null 2>&1)
+    [ $? -eq 2 ] || fail "plan does not exit 2 for $config"
+    ;;
+  render)
+    "$volgraph" render "$config" -o "$tmp/out.png" >"$tmp/out" 2>"$tmp/err"
+    code=$?
+    [ "$code" -eq 1 ] || fail "render exit $code (expected 1 until the Vulkan backend lands)"
+    grep -q "arrives with the Vulkan backend" "$tmp/err" || fail "render message: $(cat "$tmp/err")"
+    [ ! -e "$tmp/out.png" ] || fail "render wrote a file"
+    ;;
+  usage)
+    for args in "" "frobnicate x.json" "plan" "plan $config --bogus" "plan $config --size 0x10" \
+                "plan $config --size 20000x10" "plan $config --set"; do
+      # shellcheck disable=SC2086
+      "$volgraph" $args >"$tmp/out" 2>"$tmp/err"
+      code=$?
+      [ "$code" -eq 2 ] || fail "'volgraph $args' exit $code (expected 2)"
+    done
+    "$volgraph" --help >"$tmp/out" || fail "--help"
+    grep -q "usage: volgraph" "$tmp/out" || fail "--help text"
+    "$volgraph" plan /no/such.json 2>"$tmp/err"
+    [ $? -eq 2 ] || fail "missing config must exit 2"
+    grep -q "/no/such.json: error: cannot read" "$tmp/err" || fail "missing config message: $(cat "$tmp/err")"
+    ;;
+  *) fail "unknown mode $mode" ;;
+esac
+echo "ok"
