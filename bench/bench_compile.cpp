@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "graph/plan.h"
@@ -23,10 +24,21 @@ struct Recipe {
   std::vector<uint32_t> build_order;
 };
 
-Recipe record(uint32_t passes) {
+// Two shapes of random graph. Frame-like: the scene has every feature, inputs come
+// mostly from the last 8 passes and at most 64 back, 2 % of resources are graph
+// outputs. Stress: the property tests' shape — random scene needs (most passes get
+// culled), long-range reads from anywhere in the frame, 5 % outputs.
+enum class Shape { frame_like, stress };
+
+Recipe record(uint32_t passes, Shape shape) {
   test::RandomGraphOptions o;
   o.passes = passes;
   o.seed = 20261121 + passes;
+  if (shape == Shape::frame_like) {
+    o.allow_needs = false;
+    o.far_window = 64;
+    o.output_fraction = 0.02;
+  }
   Recipe r{test::make_random_graph(o), {}};
   const Plan all = compile(r.source.graph, {.cull = false});
   for (const PlannedPass& p : all.order) r.build_order.push_back(p.pass);
@@ -53,10 +65,10 @@ Graph rebuild(const Recipe& r) {
   return b.finish();
 }
 
-const Recipe& recipe(uint32_t passes) {
-  static std::map<uint32_t, Recipe> cache;  // benchmark fixtures outlive one run only here
-  auto it = cache.find(passes);
-  if (it == cache.end()) it = cache.emplace(passes, record(passes)).first;
+const Recipe& recipe(uint32_t passes, Shape shape) {
+  static std::map<std::pair<uint32_t, Shape>, Recipe> cache;  // generated once per size and shape
+  auto it = cache.find({passes, shape});
+  if (it == cache.end()) it = cache.emplace(std::pair{passes, shape}, record(passes, shape)).first;
   return it->second;
 }
 
@@ -67,8 +79,8 @@ void report_memory(benchmark::State& state, const Plan& plan) {
   state.counters["barriers"] = double(plan.barriers.size());
 }
 
-void BM_BuildAndCompile(benchmark::State& state) {
-  const Recipe& r = recipe(uint32_t(state.range(0)));
+void build_and_compile(benchmark::State& state, Shape shape) {
+  const Recipe& r = recipe(uint32_t(state.range(0)), shape);
   Plan plan;
   for (auto _ : state) {
     Graph g = rebuild(r);
@@ -79,17 +91,22 @@ void BM_BuildAndCompile(benchmark::State& state) {
   state.counters["live_passes"] = double(plan.order.size());
   state.counters["ns_per_pass"] = benchmark::Counter(double(state.range(0)) * double(state.iterations()),
                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(std::string(placement_method_name(plan.memory.method)));
 }
-BENCHMARK(BM_BuildAndCompile)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
-void BM_CompileOnly(benchmark::State& state) {
-  const Recipe& r = recipe(uint32_t(state.range(0)));
+void BM_BuildAndCompile_FrameLike(benchmark::State& state) { build_and_compile(state, Shape::frame_like); }
+void BM_BuildAndCompile_Stress(benchmark::State& state) { build_and_compile(state, Shape::stress); }
+BENCHMARK(BM_BuildAndCompile_FrameLike)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BuildAndCompile_Stress)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+void BM_CompileOnly_FrameLike(benchmark::State& state) {
+  const Recipe& r = recipe(uint32_t(state.range(0)), Shape::frame_like);
   for (auto _ : state) {
     Plan plan = compile(r.source.graph);
     benchmark::DoNotOptimize(plan.order.data());
   }
 }
-BENCHMARK(BM_CompileOnly)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CompileOnly_FrameLike)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 void BM_FullFrame(benchmark::State& state) {
   const auto frame = fixtures::full_frame();

@@ -41,8 +41,12 @@ std::string_view cull_reason_name(CullReason reason);
 struct CulledPass {
   uint32_t pass;
   CullReason reason;
-  std::string detail;  // which feature, which input, ...
+  SceneFeatures missing = 0;  // scene_lacks: the features the scene lacks
+  uint16_t slot = 0;          // input_culled: the required input whose producer was culled
 };
+
+// "scene has no medium", "input 'volume' (fog.volume) comes from a culled pass", …
+std::string cull_detail(const Graph& graph, const CulledPass& culled);
 
 struct Lifetime {
   uint32_t first = kNone;  // position in `order` of the first use

@@ -71,7 +71,7 @@ std::string plan_text(const Graph& g, const Plan& plan, const PlanReportContext&
   }
   o << "\nculled:" << (plan.culled.empty() ? " none\n" : "\n");
   for (const CulledPass& c : plan.culled) {
-    o << "  " << g.passes[c.pass].name << "  " << cull_reason_name(c.reason) << ": " << c.detail << "\n";
+    o << "  " << g.passes[c.pass].name << "  " << cull_reason_name(c.reason) << ": " << cull_detail(g, c) << "\n";
   }
   o << "\nresources (lifetime in plan positions):\n";
   for (uint32_t r = 0; r < g.resources.size(); ++r) {
@@ -124,7 +124,7 @@ std::string plan_json(const Graph& g, const Plan& plan, const PlanReportContext&
   j["order"] = order;
   Json culled = Json::array();
   for (const CulledPass& c : plan.culled) {
-    culled.push_back({{"pass", g.passes[c.pass].name}, {"reason", cull_reason_name(c.reason)}, {"detail", c.detail}});
+    culled.push_back({{"pass", g.passes[c.pass].name}, {"reason", cull_reason_name(c.reason)}, {"detail", cull_detail(g, c)}});
   }
   j["culled"] = culled;
   Json resources = Json::array();

@@ -142,6 +142,8 @@ BarrierPlan plan_barriers(const FlatGraph& g, const Schedule& schedule, const st
 
   std::vector<Barrier> barriers;
   std::vector<uint32_t> positions;
+  barriers.reserve(uses.uses.size());
+  positions.reserve(uses.uses.size());
   std::vector<uint32_t> first_barrier(graph.resources.size(), kNone);
   std::vector<Tracker> last_state(graph.resources.size());
   for (uint32_t r = 0; r < graph.resources.size(); ++r) {

@@ -20,6 +20,24 @@ std::string_view placement_method_name(PlacementMethod method) {
   return "?";
 }
 
+std::string cull_detail(const Graph& graph, const CulledPass& culled) {
+  switch (culled.reason) {
+    case CullReason::scene_lacks:
+      return "scene has no " + features_text(culled.missing);
+    case CullReason::input_culled: {
+      const GraphPass& pass = graph.passes[culled.pass];
+      std::string resource;
+      for (const ResourceUse& u : pass.uses) {
+        if (u.slot == culled.slot) resource = graph.resources[u.resource].desc.name;
+      }
+      return "input '" + pass.decl->slots[culled.slot].name + "' (" + resource + ") comes from a culled pass";
+    }
+    case CullReason::unused:
+      return "no output of it reaches a graph output";
+  }
+  return "";
+}
+
 Plan compile(const Graph& graph, const CompileOptions& options, const RequirementsFn& requirements) {
   using namespace compiler;
   Plan plan;

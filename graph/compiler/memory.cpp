@@ -3,6 +3,7 @@
 // with best fit among the gaps left by resources alive at the same time.
 #include <algorithm>
 #include <map>
+#include <memory_resource>
 #include <set>
 
 #include "graph/compiler/steps.h"
@@ -20,23 +21,33 @@ struct Item {
   MemoryRequirements req;
 };
 
-// Resources placed so far, found by the time buckets their lifetimes cover.
+// Which items live in each time bucket, as compressed rows built up front (every
+// item's lifetime is known); an item counts once it is placed.
 class TimeIndex {
  public:
-  explicit TimeIndex(uint32_t positions) : buckets_(positions / kWidth + 1) {}
-
-  void add(uint32_t item, const Lifetime& life) {
-    for (uint32_t b = life.first / kWidth; b <= life.last / kWidth; ++b) buckets_[b].push_back(item);
+  TimeIndex(const std::vector<Item>& items, uint32_t positions)
+      : items_(items), begin_(positions / kWidth + 2, 0), placed_(items.size(), 0), seen_(items.size(), 0) {
+    for (const Item& it : items) {
+      for (uint32_t b = it.life.first / kWidth; b <= it.life.last / kWidth; ++b) ++begin_[b + 1];
+    }
+    for (size_t b = 1; b < begin_.size(); ++b) begin_[b] += begin_[b - 1];
+    entries_.resize(begin_.back());
+    std::vector<uint32_t> fill(begin_.begin(), begin_.end() - 1);
+    for (uint32_t i = 0; i < items.size(); ++i) {
+      for (uint32_t b = items[i].life.first / kWidth; b <= items[i].life.last / kWidth; ++b) entries_[fill[b]++] = i;
+    }
   }
 
-  // Items whose lifetime overlaps `life` (each once).
+  void place(uint32_t item) { placed_[item] = 1; }
+
+  // Placed items whose lifetime overlaps `life` (each once).
   template <typename F>
-  void for_each_overlapping(const Lifetime& life, const std::vector<Item>& items, F&& f) {
+  void for_each_overlapping(const Lifetime& life, F&& f) {
     ++stamp_;
-    if (seen_.size() < items.size()) seen_.resize(items.size(), 0);
     for (uint32_t b = life.first / kWidth; b <= life.last / kWidth; ++b) {
-      for (uint32_t i : buckets_[b]) {
-        if (seen_[i] == stamp_ || !overlaps(items[i].life, life)) continue;
+      for (uint32_t k = begin_[b]; k < begin_[b + 1]; ++k) {
+        const uint32_t i = entries_[k];
+        if (!placed_[i] || seen_[i] == stamp_ || !overlaps(items_[i].life, life)) continue;
         seen_[i] = stamp_;
         f(i);
       }
@@ -45,7 +56,9 @@ class TimeIndex {
 
  private:
   static constexpr uint32_t kWidth = 16;
-  std::vector<std::vector<uint32_t>> buckets_;
+  const std::vector<Item>& items_;
+  std::vector<uint32_t> begin_, entries_;
+  std::vector<uint8_t> placed_;
   std::vector<uint32_t> seen_;
   uint32_t stamp_ = 0;
 };
@@ -80,15 +93,14 @@ std::vector<uint64_t> place_aliased(std::vector<Item>& items, uint32_t positions
     return items[a].resource < items[b].resource;
   });
   std::vector<uint64_t> offset(items.size(), 0);
-  TimeIndex index(positions);
+  TimeIndex index(items, positions);
   std::vector<std::pair<uint64_t, uint64_t>> busy;
   for (uint32_t i : by_size) {
     busy.clear();
-    index.for_each_overlapping(items[i].life, items,
-                               [&](uint32_t j) { busy.emplace_back(offset[j], offset[j] + items[j].req.size); });
+    index.for_each_overlapping(items[i].life, [&](uint32_t j) { busy.emplace_back(offset[j], offset[j] + items[j].req.size); });
     std::sort(busy.begin(), busy.end());
     offset[i] = best_fit(items[i], busy);
-    index.add(i, items[i].life);
+    index.place(i);
   }
   return offset;
 }
@@ -113,62 +125,65 @@ std::vector<uint64_t> place_unaliased(const std::vector<Item>& items) {
 // O(n log n) whatever the lifetimes, at the price of some fragmentation.
 class FreeList {
  public:
-  // Where a block of `size` aligned to `align` goes; grows the heap when no block fits.
+  explicit FreeList(std::pmr::memory_resource* arena) : by_start_(arena), by_size_(arena) {}
+
+  // Where a block of `size` aligned to `align` goes: the smallest free block it fits
+  // in, else the top of the heap (reusing a free block that reaches the top).
   uint64_t take(uint64_t size, uint64_t align) {
     for (auto it = by_size_.lower_bound({size, 0}); it != by_size_.end(); ++it) {
       const auto [length, start] = *it;
       const uint64_t at = align_up(start, align);
       if (at + size > start + length) continue;
       erase(start, length);
-      if (at > start) insert(start, at - start);
-      if (at + size < start + length) insert(at + size, start + length - at - size);
+      if (at > start) add(start, at - start);
+      if (at + size < start + length) add(at + size, start + length - at - size);
       return at;
     }
-    // Nothing fits: extend the heap, reusing a free block that reaches its top.
     uint64_t at = align_up(top_, align);
-    if (!by_offset_.empty()) {
-      const auto last = std::prev(by_offset_.end());
+    if (!by_start_.empty()) {
+      const auto last = std::prev(by_start_.end());
       if (last->first + last->second == top_) {
         const uint64_t start = last->first, length = last->second;
         erase(start, length);
         at = align_up(start, align);
-        if (at > start) insert(start, at - start);
+        if (at > start) add(start, at - start);
       }
     }
     top_ = std::max(top_, at + size);
     return at;
   }
 
+  // Returns a block, merged with free neighbours that touch it.
   void give_back(uint64_t start, uint64_t length) {
-    auto next = by_offset_.lower_bound(start);
-    if (next != by_offset_.end() && next->first == start + length) {  // merge with the block after
+    auto next = by_start_.lower_bound(start);
+    if (next != by_start_.end() && next->first == start + length) {
       length += next->second;
       erase(next->first, next->second);
+      next = by_start_.lower_bound(start);
     }
-    auto prev = by_offset_.lower_bound(start);
-    if (prev != by_offset_.begin()) {
-      --prev;
-      if (prev->first + prev->second == start) {  // and with the block before
+    if (next != by_start_.begin()) {
+      const auto prev = std::prev(next);
+      if (prev->first + prev->second == start) {
         start = prev->first;
         length += prev->second;
         erase(prev->first, prev->second);
       }
     }
-    insert(start, length);
+    add(start, length);
   }
 
  private:
-  void insert(uint64_t start, uint64_t length) {
-    by_offset_.emplace(start, length);
+  void add(uint64_t start, uint64_t length) {
+    by_start_.emplace(start, length);
     by_size_.emplace(length, start);
   }
   void erase(uint64_t start, uint64_t length) {
-    by_offset_.erase(start);
+    by_start_.erase(start);
     by_size_.erase({length, start});
   }
 
-  std::map<uint64_t, uint64_t> by_offset_;       // start → length
-  std::set<std::pair<uint64_t, uint64_t>> by_size_;  // (length, start)
+  std::pmr::map<uint64_t, uint64_t> by_start_;            // start → length
+  std::pmr::set<std::pair<uint64_t, uint64_t>> by_size_;  // (length, start): best fit
   uint64_t top_ = 0;
 };
 
@@ -183,7 +198,8 @@ std::vector<uint64_t> place_linear_scan(const std::vector<Item>& items) {
   std::sort(by_last.begin(), by_last.end(),
             [&](uint32_t a, uint32_t b) { return items[a].life.last < items[b].life.last; });
   std::vector<uint64_t> offset(items.size(), 0);
-  FreeList heap;
+  std::pmr::monotonic_buffer_resource arena;
+  FreeList heap(&arena);
   size_t released = 0;
   for (uint32_t i : by_first) {
     for (; released < by_last.size() && items[by_last[released]].life.last < items[i].life.first; ++released) {
@@ -232,8 +248,7 @@ uint64_t live_bytes_peak(const std::vector<Item>& items, uint32_t positions) {
 
 // Sweeps the heap in order of first use; the latest occupant of each byte range is
 // the one a new resource hands over from.
-void find_handovers(const std::vector<Item>& items, const std::vector<uint64_t>& offset,
-                    std::vector<Handover>& out) {
+void find_handovers(const std::vector<Item>& items, const std::vector<uint64_t>& offset, std::vector<Handover>& out) {
   std::vector<uint32_t> by_start(items.size());
   for (uint32_t i = 0; i < items.size(); ++i) by_start[i] = i;
   std::sort(by_start.begin(), by_start.end(), [&](uint32_t a, uint32_t b) {
@@ -242,25 +257,26 @@ void find_handovers(const std::vector<Item>& items, const std::vector<uint64_t>&
   });
   struct Segment {
     uint64_t end;
-    uint32_t item;
+    uint32_t item;  // the last resource to use [start, end)
   };
-  std::map<uint64_t, Segment> occupant;  // start → [start, end) last used by item
+  std::pmr::monotonic_buffer_resource arena;
+  std::pmr::map<uint64_t, Segment> occupied(&arena);  // start → segment; disjoint
   std::vector<uint32_t> previous;
   for (uint32_t i : by_start) {
     const uint64_t begin = offset[i], end = begin + items[i].req.size;
     if (end == begin) continue;
     previous.clear();
-    auto it = occupant.upper_bound(begin);
-    if (it != occupant.begin() && std::prev(it)->second.end > begin) --it;
-    while (it != occupant.end() && it->first < end) {
-      const uint64_t s = it->first;
+    auto it = occupied.upper_bound(begin);
+    if (it != occupied.begin() && std::prev(it)->second.end > begin) --it;
+    while (it != occupied.end() && it->first < end) {
+      const uint64_t start = it->first;
       const Segment seg = it->second;
       previous.push_back(seg.item);
-      it = occupant.erase(it);
-      if (s < begin) occupant.emplace(s, Segment{begin, seg.item});
-      if (seg.end > end) occupant.emplace(end, Segment{seg.end, seg.item});
+      it = occupied.erase(it);
+      if (start < begin) occupied.emplace(start, Segment{begin, seg.item});
+      if (seg.end > end) it = occupied.emplace(end, Segment{seg.end, seg.item}).first;
     }
-    occupant.emplace(begin, Segment{end, i});
+    occupied.emplace(begin, Segment{end, i});
     std::sort(previous.begin(), previous.end());
     previous.erase(std::unique(previous.begin(), previous.end()), previous.end());
     for (uint32_t p : previous) out.push_back({items[i].resource, items[p].resource});

@@ -126,20 +126,19 @@ std::vector<uint8_t> cull_for_needs(const FlatGraph& g, const std::vector<uint32
                                     std::vector<CulledPass>& culled) {
   const Graph& graph = *g.graph;
   std::vector<uint8_t> dead(g.pass_count(), 0);
+  (void)graph;
   for (uint32_t p : order) {
     const GraphPass& pass = graph.passes[p];
     if (const SceneFeatures missing = pass.needs & ~graph.scene) {
       dead[p] = 1;
-      culled.push_back({p, CullReason::scene_lacks, "scene has no " + features_text(missing)});
+      culled.push_back({p, CullReason::scene_lacks, missing, 0});
     }
     for (uint32_t k = g.use_begin[p]; k < g.use_begin[p + 1] && !dead[p]; ++k) {
       const ResourceUse& u = g.uses[k];
       if (u.direction == SlotDirection::output || u.optional) continue;
       if (versions.exists[g.version_index(u.resource, u.version)]) continue;
       dead[p] = 1;
-      culled.push_back({p, CullReason::input_culled,
-                        "input '" + pass.decl->slots[u.slot].name + "' (" + graph.resources[u.resource].desc.name +
-                            ") comes from a culled pass"});
+      culled.push_back({p, CullReason::input_culled, 0, u.slot});
     }
     if (!dead[p]) continue;
     for (uint32_t k = g.use_begin[p]; k < g.use_begin[p + 1]; ++k) {
@@ -203,7 +202,7 @@ Schedule order_and_cull(const FlatGraph& g, bool cull) {
     const std::vector<uint8_t> dead = cull_for_needs(g, topo, versions, s.culled);
     live = reach_from_outputs(g, versions, dead, s.output_live);
     for (uint32_t p = 0; p < n; ++p) {
-      if (!dead[p] && !live[p]) s.culled.push_back({p, CullReason::unused, "no output of it reaches a graph output"});
+      if (!dead[p] && !live[p]) s.culled.push_back({p, CullReason::unused, 0, 0});
     }
     std::sort(s.culled.begin(), s.culled.end(), [](const CulledPass& a, const CulledPass& b) { return a.pass < b.pass; });
   } else {

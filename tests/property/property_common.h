@@ -149,7 +149,7 @@ inline std::string plan_difference(const Plan& a, const Plan& b, uint32_t aspect
     if (a.culled.size() != b.culled.size()) return "culled sizes differ";
     for (size_t i = 0; i < a.culled.size(); ++i) {
       if (a.culled[i].pass != b.culled[i].pass || a.culled[i].reason != b.culled[i].reason ||
-          a.culled[i].detail != b.culled[i].detail) {
+          a.culled[i].missing != b.culled[i].missing || a.culled[i].slot != b.culled[i].slot) {
         os << "culled entry " << i << " differs: #" << a.culled[i].pass << " vs #" << b.culled[i].pass;
         return os.str();
       }

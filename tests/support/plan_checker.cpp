@@ -1113,7 +1113,9 @@ std::string plan_text(const Graph& graph, const Plan& plan) {
   }
   for (const CulledPass& c : plan.culled) {
     os << "  culled " << (c.pass < graph.passes.size() ? graph.passes[c.pass].name : std::string("?")) << " (#"
-       << c.pass << "): " << cull_reason_name(c.reason) << " " << c.detail << "\n";
+       << c.pass << "): " << cull_reason_name(c.reason) << " "
+       << (c.pass < graph.passes.size() && c.slot < graph.passes[c.pass].decl->slots.size() ? cull_detail(graph, c) : "?")
+       << "\n";
   }
   for (size_t r = 0; r < plan.lifetimes.size() && r < plan.placements.size(); ++r) {
     const Lifetime& l = plan.lifetimes[r];

@@ -272,7 +272,7 @@ class Wiring {
       if (window_begin < pool.size() && rng_.chance(0.85)) {
         i = window_begin + rng_.below(pool.size() - window_begin);
       } else {
-        i = rng_.below(pool.size());
+        i = far_begin(pool, seq) + rng_.below(pool.size() - far_begin(pool, seq));
       }
       if (!excluded(pool[i].resource)) return pool[i].resource;
     }
@@ -280,6 +280,14 @@ class Wiring {
       if (!excluded(pool[i].resource)) return pool[i].resource;
     }
     return kNone;
+  }
+
+  // Where long-range reads may start: the whole pool, or the last far_window passes.
+  size_t far_begin(const std::vector<Entry>& pool, uint32_t seq) const {
+    if (options_.far_window == 0 || seq <= options_.far_window) return 0;
+    const uint32_t from = seq - options_.far_window;
+    const auto it = std::lower_bound(pool.begin(), pool.end(), from, [](const Entry& e, uint32_t s) { return e.seq < s; });
+    return it == pool.end() ? pool.size() - 1 : static_cast<size_t>(it - pool.begin());
   }
 
   Rng& rng_;

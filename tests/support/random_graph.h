@@ -31,6 +31,7 @@ struct RandomGraphOptions {
   bool allow_inout = true;        // decls may have an inout slot
   bool allow_persistent = true;   // outputs may be persistent
   double stale_fraction = 0.05;   // chance per input slot to read an older version when acyclic
+  uint32_t far_window = 0;        // long-range reads reach at most this many passes back (0: anywhere)
 };
 
 // Builds a random acyclic graph: passes are added in a shuffled order, then wired along a

@@ -94,10 +94,10 @@ TEST(Compiler, MissingMediumCullsFogAndForwardsTheColour) {
   // Culled passes are listed in declaration order: apply (1), volume (2).
   EXPECT_EQ(plan.culled[0].pass, f.apply);
   EXPECT_EQ(plan.culled[0].reason, CullReason::input_culled);
-  EXPECT_NE(plan.culled[0].detail.find("volume"), std::string::npos);
+  EXPECT_NE(cull_detail(f.graph, plan.culled[0]).find("volume"), std::string::npos);
   EXPECT_EQ(plan.culled[1].pass, f.volume);
   EXPECT_EQ(plan.culled[1].reason, CullReason::scene_lacks);
-  EXPECT_EQ(plan.culled[1].detail, "scene has no medium");
+  EXPECT_EQ(cull_detail(f.graph, plan.culled[1]), "scene has no medium");
   // tonemap reads the colour draw made: one barrier, colour attachment → sampled.
   const PlannedPass& tm = plan.order[1];
   ASSERT_EQ(tm.barrier_count, 2u);  // the colour, and the output's first use
@@ -272,7 +272,7 @@ TEST_F(ShippedConfigs, PointLightsCullTheShadowMapAndLeaveItsInputsUnbound) {
   ASSERT_EQ(plan.culled.size(), 1u);
   EXPECT_EQ(c.graph.passes[plan.culled[0].pass].name, "sun_shadow");
   EXPECT_EQ(plan.culled[0].reason, CullReason::scene_lacks);
-  EXPECT_EQ(plan.culled[0].detail, "scene has no shadow_casting_light");
+  EXPECT_EQ(cull_detail(c.graph, plan.culled[0]), "scene has no shadow_casting_light");
   for (uint32_t r = 0; r < c.graph.resources.size(); ++r) {
     if (c.graph.resources[r].desc.name.rfind("sun_shadow.", 0) == 0) EXPECT_EQ(plan.lifetimes[r].first, kNone);
   }
