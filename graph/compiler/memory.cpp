@@ -21,28 +21,39 @@ struct Item {
   MemoryRequirements req;
 };
 
-// Which items live in each time bucket, as compressed rows built up front (every
-// item's lifetime is known); an item counts once it is placed.
+// Placed items by the time buckets their lifetimes cover, as compressed rows built up
+// front (every lifetime is known); an item counts once placed. Items living longer
+// than kLong buckets are kept apart and scanned once per query, not once per bucket.
 class TimeIndex {
  public:
   TimeIndex(const std::vector<Item>& items, uint32_t positions)
       : items_(items), begin_(positions / kWidth + 2, 0), placed_(items.size(), 0), seen_(items.size(), 0) {
+    auto buckets = [](const Item& it) { return it.life.last / kWidth - it.life.first / kWidth + 1; };
     for (const Item& it : items) {
+      if (buckets(it) > kLong) continue;
       for (uint32_t b = it.life.first / kWidth; b <= it.life.last / kWidth; ++b) ++begin_[b + 1];
     }
     for (size_t b = 1; b < begin_.size(); ++b) begin_[b] += begin_[b - 1];
     entries_.resize(begin_.back());
     std::vector<uint32_t> fill(begin_.begin(), begin_.end() - 1);
     for (uint32_t i = 0; i < items.size(); ++i) {
+      if (buckets(items[i]) > kLong) continue;
       for (uint32_t b = items[i].life.first / kWidth; b <= items[i].life.last / kWidth; ++b) entries_[fill[b]++] = i;
     }
   }
 
-  void place(uint32_t item) { placed_[item] = 1; }
+  void place(uint32_t item) {
+    placed_[item] = 1;
+    const Lifetime& l = items_[item].life;
+    if (l.last / kWidth - l.first / kWidth + 1 > kLong) long_lived_.push_back(item);
+  }
 
   // Placed items whose lifetime overlaps `life` (each once).
   template <typename F>
   void for_each_overlapping(const Lifetime& life, F&& f) {
+    for (uint32_t i : long_lived_) {
+      if (overlaps(items_[i].life, life)) f(i);
+    }
     ++stamp_;
     for (uint32_t b = life.first / kWidth; b <= life.last / kWidth; ++b) {
       for (uint32_t k = begin_[b]; k < begin_[b + 1]; ++k) {
@@ -56,8 +67,9 @@ class TimeIndex {
 
  private:
   static constexpr uint32_t kWidth = 16;
+  static constexpr uint32_t kLong = 4;
   const std::vector<Item>& items_;
-  std::vector<uint32_t> begin_, entries_;
+  std::vector<uint32_t> begin_, entries_, long_lived_;
   std::vector<uint8_t> placed_;
   std::vector<uint32_t> seen_;
   uint32_t stamp_ = 0;
