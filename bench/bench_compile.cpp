@@ -22,6 +22,7 @@ namespace {
 struct Recipe {
   test::RandomGraph source;
   std::vector<uint32_t> build_order;
+  std::vector<uint32_t> version_begin;  // resource r's versions start here in a flat array
 };
 
 // Two shapes of random graph. Frame-like: the scene has every feature, inputs come
@@ -42,6 +43,10 @@ Recipe record(uint32_t passes, Shape shape) {
   Recipe r{test::make_random_graph(o), {}};
   const Plan all = compile(r.source.graph, {.cull = false});
   for (const PlannedPass& p : all.order) r.build_order.push_back(p.pass);
+  r.version_begin.push_back(0);
+  for (const GraphResource& res : r.source.graph.resources) {
+    r.version_begin.push_back(r.version_begin.back() + uint32_t(res.version_writers.size()));
+  }
   return r;
 }
 
@@ -49,19 +54,20 @@ Graph rebuild(const Recipe& r) {
   const Graph& g = r.source.graph;
   GraphBuilder b(g.output_size, g.scene);
   for (const GraphPass& p : g.passes) b.add_pass(p.name, *p.decl, p.variant);
-  std::vector<std::vector<ResourceVersion>> made(g.resources.size());
+  std::vector<ResourceVersion> made(r.version_begin.back());  // what the builder returned per version
+  auto version = [&](uint32_t res, uint32_t v) -> ResourceVersion& { return made[r.version_begin[res] + v]; };
   for (uint32_t p : r.build_order) {
     for (const ResourceUse& u : g.passes[p].uses) {
       if (u.direction == SlotDirection::output) {
-        made[u.resource].push_back(b.create(p, u.slot, g.resources[u.resource].desc));
+        version(u.resource, 0) = b.create(p, u.slot, g.resources[u.resource].desc);
       } else if (u.direction == SlotDirection::inout) {
-        made[u.resource].push_back(b.modify(p, u.slot, made[u.resource][u.version]));
+        version(u.resource, u.version + 1) = b.modify(p, u.slot, version(u.resource, u.version));
       } else {
-        b.read(p, u.slot, made[u.resource][u.version]);
+        b.read(p, u.slot, version(u.resource, u.version));
       }
     }
   }
-  for (const ResourceVersion& o : g.outputs) b.mark_output(made[o.resource][o.version]);
+  for (const ResourceVersion& o : g.outputs) b.mark_output(version(o.resource, o.version));
   return b.finish();
 }
 
@@ -141,14 +147,11 @@ void print_full_frame_memory() {
 
 int main(int argc, char** argv) {
   volgraph::print_full_frame_memory();
-  // Medians over repeated runs unless the caller asks for something else.
-  std::vector<char*> args(argv, argv + argc);
+  // Medians over repeated runs; the caller's own flags come later and win.
   char repetitions[] = "--benchmark_repetitions=7";
   char aggregates[] = "--benchmark_report_aggregates_only=true";
-  if (argc == 1) {
-    args.push_back(repetitions);
-    args.push_back(aggregates);
-  }
+  std::vector<char*> args = {argv[0], repetitions, aggregates};
+  args.insert(args.end(), argv + 1, argv + argc);
   int n = int(args.size());
   benchmark::Initialize(&n, args.data());
   benchmark::RunSpecifiedBenchmarks();

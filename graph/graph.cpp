@@ -17,6 +17,7 @@ uint32_t GraphBuilder::add_pass(std::string name, const PassDecl& decl, uint16_t
   p.variant = variant;
   p.kind = decl.kind;
   p.needs = decl.needs;
+  p.uses.reserve(decl.slots.size());
   graph_.passes.push_back(std::move(p));
   return static_cast<uint32_t>(graph_.passes.size() - 1);
 }
