@@ -9,6 +9,8 @@
 
 #include "graph/config/config.h"
 #include "graph/plan_report.h"
+#include "graph/rhi/device_error.h"
+#include "graph/rhi/vulkan/context.h"
 #include "passes/passes.h"
 
 namespace volgraph {
@@ -23,6 +25,7 @@ commands:
   plan CONFIG [--json|--dot]   the compiled plan: order, culling, lifetimes, memory, barriers
   render CONFIG -o OUT         render to .png, .exr or .pfm (arrives with the Vulkan backend)
   passes                       the pass types with their variants, parameters and slots
+  devices                      the Vulkan devices (index for --device N; lavapipe is the default)
   test                         run the whole test suite (handled by tools/volgraph)
 
 options (plan, validate, render):
@@ -165,8 +168,20 @@ int print_passes(const PassRegistry& registry) {
   return kOk;
 }
 
+int print_devices() {
+  const auto devices = vulkan::Context::list_devices();
+  if (devices.empty()) std::cout << "no Vulkan devices\n";
+  for (size_t i = 0; i < devices.size(); ++i) {
+    const auto& d = devices[i];
+    std::cout << i << ": " << d.name << " — " << d.driver << ", Vulkan " << VK_API_VERSION_MAJOR(d.api_version) << "."
+              << VK_API_VERSION_MINOR(d.api_version) << "." << VK_API_VERSION_PATCH(d.api_version) << "\n";
+  }
+  return kOk;
+}
+
 int run(const Args& args, const PassRegistry& registry) {
   if (args.command == "passes") return print_passes(registry);
+  if (args.command == "devices") return print_devices();
   const bool known = args.command == "validate" || args.command == "plan" || args.command == "render";
   if (!known) {
     if (args.command == "reference" || args.command == "ab" || args.command == "sweep") {
@@ -210,6 +225,9 @@ int main(int argc, char** argv) {
   } catch (const ConfigError& e) {
     std::cerr << e.what() << "\n";
     return kBadInput;
+  } catch (const DeviceError& e) {
+    std::cerr << "volgraph: device error: " << e.what() << "\n";
+    return kFailure;
   } catch (const std::exception& e) {
     std::cerr << "volgraph: internal error: " << e.what() << "\n";
     return kFailure;

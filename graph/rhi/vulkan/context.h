@@ -1,0 +1,85 @@
+// The Vulkan 1.3 instance, device and queue volgraph renders with: Mesa lavapipe by
+// default (any Vulkan 1.3 driver by index), synchronization2 and dynamic rendering on,
+// and, when asked, the Khronos validation layer with synchronization validation whose
+// messages are collected so that tests can fail on any of them.
+// Only the Vulkan backend and its tests include this header (it pulls in vulkan.h).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "graph/rhi/device_error.h"
+
+namespace volgraph::vulkan {
+
+struct ContextOptions {
+  bool validation = false;       // VK_LAYER_KHRONOS_validation, synchronization validation included
+  int device_index = -1;         // -1: lavapipe when present, else the first Vulkan 1.3 device
+};
+
+struct DeviceInfo {
+  std::string name;
+  std::string driver;
+  uint32_t api_version = 0;
+  uint32_t vendor_id = 0;
+};
+
+class Context {
+ public:
+  // Throws DeviceError (no_device, unsupported, …) with a message a user can act on.
+  static std::unique_ptr<Context> create(const ContextOptions& options);
+  static std::vector<DeviceInfo> list_devices();
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  VkInstance instance() const { return instance_; }
+  VkPhysicalDevice physical_device() const { return physical_; }
+  VkDevice device() const { return device_; }
+  VkQueue queue() const { return queue_; }
+  uint32_t queue_family() const { return queue_family_; }
+  const DeviceInfo& info() const { return info_; }
+  const VkPhysicalDeviceLimits& limits() const { return limits_; }
+  float timestamp_period_ns() const { return limits_.timestampPeriod; }
+  bool validation() const { return messenger_ != VK_NULL_HANDLE; }
+
+  // Validation messages (warnings and errors) since the last take.
+  std::vector<std::string> take_validation_messages();
+
+  // Records with `record`, submits, waits. For set-up, uploads and readbacks.
+  void submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
+  // A memory type index with `required` properties among `type_bits`; throws when none.
+  uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required) const;
+
+ private:
+  Context() = default;
+  static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                   VkDebugUtilsMessageTypeFlagsEXT types,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+  void create_instance(bool validation);
+  void pick_device(int index);
+  void create_device();
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queue_family_ = 0;
+  VkCommandPool pool_ = VK_NULL_HANDLE;
+  DeviceInfo info_;
+  VkPhysicalDeviceLimits limits_{};
+  VkPhysicalDeviceMemoryProperties memory_{};
+  std::mutex messages_mutex_;
+  std::vector<std::string> messages_;
+};
+
+// Throws the DeviceError a failed call deserves (out of memory, device lost, …).
+void check(VkResult result, const char* what);
+
+}  // namespace volgraph::vulkan
