@@ -40,7 +40,7 @@ Recipe record(uint32_t passes, Shape shape) {
     o.far_window = 64;
     o.output_fraction = 0.02;
   }
-  Recipe r{test::make_random_graph(o), {}};
+  Recipe r{test::make_random_graph(o), {}, {}};
   const Plan all = compile(r.source.graph, {.cull = false});
   for (const PlannedPass& p : all.order) r.build_order.push_back(p.pass);
   r.version_begin.push_back(0);

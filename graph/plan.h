@@ -25,8 +25,9 @@ struct MemoryRequirements {
   uint32_t heap_class = 0;  // resources share bytes only within a class
 };
 
-// What a backend says a resource takes; the default estimates from the format.
-using RequirementsFn = std::function<MemoryRequirements(const ResourceDesc&)>;
+// What a backend says resource `resource` (index into Graph::resources) takes, e.g. from
+// the VkImage it made for it; without one, the compiler estimates from the format.
+using RequirementsFn = std::function<MemoryRequirements(uint32_t resource, const ResourceDesc&)>;
 MemoryRequirements estimate_requirements(const ResourceDesc& desc);
 
 // A pass culled for its scene needs forwards its inout slots: downstream readers of the

@@ -307,7 +307,7 @@ MemoryLayout place_memory(const Graph& graph, const std::vector<Lifetime>& lifet
     const Lifetime& life = lifetimes[r];
     if (life.first == kNone) continue;
     const ResourceDesc& desc = graph.resources[r].desc;
-    MemoryRequirements req = requirements ? requirements(desc) : estimate_requirements(desc);
+    MemoryRequirements req = requirements ? requirements(r, desc) : estimate_requirements(desc);
     req.alignment = std::max<uint64_t>(1, req.alignment);
     m.placements[r].requirements = req;
     if (desc.persistent) {

@@ -372,7 +372,7 @@ TEST(HandBuilt, ChainAliasesToTheLowerBound) {
 // heap ends up larger than the two resources side by side: aliased_bytes (48 KiB) >
 // unaliased_bytes (36 KiB). Image first (or any alignment-aware order) needs no padding.
 TEST(HandBuilt, AliasedNeverExceedsUnaliasedWithMixedAlignments) {
-  const RequirementsFn mixed = [](const ResourceDesc& d) {
+  const RequirementsFn mixed = [](uint32_t, const ResourceDesc& d) {
     MemoryRequirements m;
     m.alignment = d.kind == RK::buffer ? 4096 : 16384;
     m.size = (content_bytes(d) + m.alignment - 1) / m.alignment * m.alignment;

@@ -59,7 +59,7 @@ inline RandomGraphOptions options_for_seed(uint64_t seed, uint32_t max_passes = 
 }
 
 // A requirements function unlike the default one: several heap classes and coarse alignments.
-inline MemoryRequirements coarse_requirements(const ResourceDesc& d) {
+inline MemoryRequirements coarse_requirements(uint32_t, const ResourceDesc& d) {
   MemoryRequirements m;
   const uint64_t bytes = content_bytes(d) == 0 ? 1 : content_bytes(d);
   auto round_up = [](uint64_t x, uint64_t a) { return (x + a - 1) / a * a; };
@@ -74,10 +74,9 @@ inline MemoryRequirements coarse_requirements(const ResourceDesc& d) {
   return m;
 }
 
-// One heap class for everything: buffers and images alias each other. (One alignment:
-// mixed alignments in a class hit a known placement issue, isolated in
-// HandBuilt.AliasedNeverExceedsUnaliasedWithMixedAlignments.)
-inline MemoryRequirements unified_requirements(const ResourceDesc& d) {
+// One heap class for everything: buffers and images alias each other. (Mixed alignments
+// in one class are covered by HandBuilt.AliasedNeverExceedsUnaliasedWithMixedAlignments.)
+inline MemoryRequirements unified_requirements(uint32_t, const ResourceDesc& d) {
   MemoryRequirements m;
   m.heap_class = 0;
   m.alignment = 16384;

@@ -102,7 +102,7 @@ struct GlobalBarrier {
 class Checker {
  public:
   Checker(const Graph& g, const Plan& plan, const CompileOptions& options, const RequirementsFn& req)
-      : g_(g), plan_(plan), opt_(options), req_(req ? req : RequirementsFn(estimate_requirements)) {}
+      : g_(g), plan_(plan), opt_(options), req_(req ? req : RequirementsFn([](uint32_t, const ResourceDesc& d) { return estimate_requirements(d); })) {}
 
   std::vector<std::string> run() {
     if (!check_shapes()) return std::move(out_);
@@ -531,7 +531,7 @@ void Checker::check_memory() {
       }
       continue;
     }
-    const MemoryRequirements m = req_(res.desc);
+    const MemoryRequirements m = req_(r, res.desc);
     reqs_[r] = m;
     if (pl.requirements.size != m.size || pl.requirements.alignment != m.alignment ||
         pl.requirements.heap_class != m.heap_class) {

@@ -1,0 +1,136 @@
+#include "graph/rhi/vulkan/graph_resources.h"
+
+#include "graph/rhi/vulkan/formats.h"
+
+namespace volgraph::vulkan {
+namespace {
+
+constexpr uint32_t heap_class(uint32_t memory_type, bool buffer) { return memory_type * 2 + (buffer ? 1 : 0); }
+
+}  // namespace
+
+GraphResources::GraphResources(Context& context, const Graph& graph)
+    : context_(context), graph_(graph), objects_(graph.resources.size()) {
+  set_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+      vkGetDeviceProcAddr(context.device(), "vkSetDebugUtilsObjectNameEXT"));
+  std::vector<VkImageUsageFlags> image_usage(graph.resources.size(), 0);
+  std::vector<VkBufferUsageFlags> buffer_usage(graph.resources.size(), 0);
+  std::vector<VkFormatFeatureFlags> features(graph.resources.size(), 0);
+  for (const GraphPass& p : graph.passes) {
+    for (const ResourceUse& u : p.uses) {
+      image_usage[u.resource] |= vulkan::image_usage(u.usage);
+      buffer_usage[u.resource] |= vulkan::buffer_usage(u.usage);
+      features[u.resource] |= format_features(u.usage);
+    }
+  }
+  for (const ResourceVersion& o : graph.outputs) {  // read back after the frame
+    image_usage[o.resource] |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    buffer_usage[o.resource] |= VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+  }
+  for (uint32_t r = 0; r < graph.resources.size(); ++r) {
+    const ResourceDesc& d = graph.resources[r].desc;
+    if (d.kind != ResourceKind::buffer) {
+      VkFormatProperties props;
+      vkGetPhysicalDeviceFormatProperties(context.physical_device(), to_vk(d.format), &props);
+      if ((props.optimalTilingFeatures & features[r]) != features[r]) {
+        throw DeviceError(DeviceError::Kind::unsupported, d.name + ": " + context.info().name + " cannot use format " +
+                                                              std::string(format_info(d.format).name) + " the way the graph does");
+      }
+    }
+    create(r, image_usage[r], buffer_usage[r]);
+  }
+}
+
+void GraphResources::create(uint32_t r, VkImageUsageFlags image_usage, VkBufferUsageFlags buffer_usage) {
+  const ResourceDesc& d = graph_.resources[r].desc;
+  Object& o = objects_[r];
+  const VkDevice device = context_.device();
+  if (d.kind == ResourceKind::buffer) {
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = std::max<uint64_t>(4, d.buffer_bytes);
+    info.usage = buffer_usage ? buffer_usage : VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    check(vkCreateBuffer(device, &info, nullptr, &o.buffer), "vkCreateBuffer");
+    vkGetBufferMemoryRequirements(device, o.buffer, &o.requirements);
+    name(VK_OBJECT_TYPE_BUFFER, uint64_t(o.buffer), d.name);
+  } else {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = d.kind == ResourceKind::texture3d ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
+    info.format = to_vk(d.format);
+    info.extent = {d.extent.width, d.extent.height, d.kind == ResourceKind::texture3d ? d.extent.depth : 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = image_usage ? image_usage : VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    check(vkCreateImage(device, &info, nullptr, &o.image), "vkCreateImage");
+    vkGetImageMemoryRequirements(device, o.image, &o.requirements);
+    name(VK_OBJECT_TYPE_IMAGE, uint64_t(o.image), d.name);
+  }
+  o.memory_type = context_.memory_type(o.requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+}
+
+RequirementsFn GraphResources::requirements() const {
+  return [this](uint32_t r, const ResourceDesc& d) {
+    const Object& o = objects_[r];
+    return MemoryRequirements{o.requirements.size, o.requirements.alignment,
+                              heap_class(o.memory_type, d.kind == ResourceKind::buffer)};
+  };
+}
+
+VkDeviceMemory GraphResources::allocate(uint64_t size, uint32_t memory_type, const std::string& text) {
+  VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  info.allocationSize = size;
+  info.memoryTypeIndex = memory_type;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  check(vkAllocateMemory(context_.device(), &info, nullptr, &memory), ("vkAllocateMemory for " + text).c_str());
+  memory_.push_back(memory);
+  name(VK_OBJECT_TYPE_DEVICE_MEMORY, uint64_t(memory), text);
+  return memory;
+}
+
+void GraphResources::bind(const Plan& plan) {
+  std::vector<VkDeviceMemory> heaps;
+  for (size_t h = 0; h < plan.heaps.size(); ++h) {
+    heaps.push_back(allocate(plan.heaps[h].size, plan.heaps[h].heap_class / 2, "transient heap " + std::to_string(h)));
+    transient_bytes_ += plan.heaps[h].size;
+  }
+  const VkDevice device = context_.device();
+  for (uint32_t r = 0; r < objects_.size(); ++r) {
+    if (plan.lifetimes[r].first == kNone) continue;
+    const Placement& p = plan.placements[r];
+    const Object& o = objects_[r];
+    VkDeviceMemory memory;
+    uint64_t offset = 0;
+    if (p.heap == kNone) {
+      memory = allocate(o.requirements.size, o.memory_type, graph_.resources[r].desc.name);
+      persistent_bytes_ += o.requirements.size;
+    } else {
+      memory = heaps[p.heap];
+      offset = p.offset;
+    }
+    if (o.buffer) check(vkBindBufferMemory(device, o.buffer, memory, offset), "vkBindBufferMemory");
+    if (o.image) check(vkBindImageMemory(device, o.image, memory, offset), "vkBindImageMemory");
+  }
+}
+
+void GraphResources::name(VkObjectType type, uint64_t handle, const std::string& text) const {
+  if (!set_name_) return;
+  VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+  info.objectType = type;
+  info.objectHandle = handle;
+  info.pObjectName = text.c_str();
+  set_name_(context_.device(), &info);
+}
+
+GraphResources::~GraphResources() {
+  const VkDevice device = context_.device();
+  vkDeviceWaitIdle(device);
+  for (const Object& o : objects_) {
+    if (o.image) vkDestroyImage(device, o.image, nullptr);
+    if (o.buffer) vkDestroyBuffer(device, o.buffer, nullptr);
+  }
+  for (VkDeviceMemory m : memory_) vkFreeMemory(device, m, nullptr);
+}
+
+}  // namespace volgraph::vulkan

@@ -1,0 +1,58 @@
+// The graph's resources as Vulkan objects. Every resource gets its VkImage or
+// VkBuffer first (with the usage of every pass that touches it), so the compiler
+// places transients by the driver's real memory requirements; then each heap of the
+// plan becomes one VkDeviceMemory and each transient is bound at its planned offset —
+// resources with disjoint lifetimes really share bytes. Persistent resources get
+// memory of their own.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "graph/plan.h"
+#include "graph/rhi/vulkan/context.h"
+
+namespace volgraph::vulkan {
+
+class GraphResources {
+ public:
+  GraphResources(Context& context, const Graph& graph);
+  ~GraphResources();
+  GraphResources(const GraphResources&) = delete;
+  GraphResources& operator=(const GraphResources&) = delete;
+
+  // For compile(): the driver's size and alignment; heap class = memory type and
+  // image-or-buffer (kept apart: buffer-image granularity).
+  RequirementsFn requirements() const;
+  // Allocates the plan's heaps and persistent memory; binds every used resource.
+  void bind(const Plan& plan);
+
+  VkImage image(uint32_t resource) const { return objects_[resource].image; }
+  VkBuffer buffer(uint32_t resource) const { return objects_[resource].buffer; }
+  // Bytes allocated for the plan's heaps (transients) and for persistent resources.
+  uint64_t transient_bytes() const { return transient_bytes_; }
+  uint64_t persistent_bytes() const { return persistent_bytes_; }
+
+ private:
+  struct Object {
+    VkImage image = VK_NULL_HANDLE;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkMemoryRequirements requirements{};
+    uint32_t memory_type = 0;
+  };
+  void create(uint32_t resource, VkImageUsageFlags image_usage, VkBufferUsageFlags buffer_usage);
+  VkDeviceMemory allocate(uint64_t size, uint32_t memory_type, const std::string& name);
+  void name(VkObjectType type, uint64_t handle, const std::string& text) const;
+
+  Context& context_;
+  const Graph& graph_;
+  std::vector<Object> objects_;
+  std::vector<VkDeviceMemory> memory_;
+  uint64_t transient_bytes_ = 0;
+  uint64_t persistent_bytes_ = 0;
+  PFN_vkSetDebugUtilsObjectNameEXT set_name_ = nullptr;
+};
+
+}  // namespace volgraph::vulkan
