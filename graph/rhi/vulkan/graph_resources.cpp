@@ -1,5 +1,6 @@
 #include "graph/rhi/vulkan/graph_resources.h"
 
+#include "graph/rhi/vulkan/barriers.h"
 #include "graph/rhi/vulkan/formats.h"
 
 namespace volgraph::vulkan {
@@ -62,6 +63,7 @@ void GraphResources::create(uint32_t r, VkImageUsageFlags image_usage, VkBufferU
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = image_usage ? image_usage : VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    o.usage = info.usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     check(vkCreateImage(device, &info, nullptr, &o.image), "vkCreateImage");
     vkGetImageMemoryRequirements(device, o.image, &o.requirements);
@@ -110,8 +112,25 @@ void GraphResources::bind(const Plan& plan) {
       offset = p.offset;
     }
     if (o.buffer) check(vkBindBufferMemory(device, o.buffer, memory, offset), "vkBindBufferMemory");
-    if (o.image) check(vkBindImageMemory(device, o.image, memory, offset), "vkBindImageMemory");
+    if (!o.image) continue;
+    check(vkBindImageMemory(device, o.image, memory, offset), "vkBindImageMemory");
+    create_view(r);
   }
+}
+
+void GraphResources::create_view(uint32_t r) {
+  const ResourceDesc& d = graph_.resources[r].desc;
+  Object& o = objects_[r];
+  const VkImageUsageFlags viewable = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                                     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  if (!(o.usage & viewable)) return;
+  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  info.image = o.image;
+  info.viewType = d.kind == ResourceKind::texture3d ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
+  info.format = to_vk(d.format);
+  info.subresourceRange = {aspect_of(d.format), 0, 1, 0, 1};
+  check(vkCreateImageView(context_.device(), &info, nullptr, &o.view), "vkCreateImageView");
+  name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(o.view), d.name);
 }
 
 void GraphResources::name(VkObjectType type, uint64_t handle, const std::string& text) const {
@@ -127,6 +146,7 @@ GraphResources::~GraphResources() {
   const VkDevice device = context_.device();
   vkDeviceWaitIdle(device);
   for (const Object& o : objects_) {
+    if (o.view) vkDestroyImageView(device, o.view, nullptr);
     if (o.image) vkDestroyImage(device, o.image, nullptr);
     if (o.buffer) vkDestroyBuffer(device, o.buffer, nullptr);
   }

@@ -30,6 +30,8 @@ class GraphResources {
   void bind(const Plan& plan);
 
   VkImage image(uint32_t resource) const { return objects_[resource].image; }
+  // VK_NULL_HANDLE for images only ever copied (views need a shader or attachment usage).
+  VkImageView view(uint32_t resource) const { return objects_[resource].view; }
   VkBuffer buffer(uint32_t resource) const { return objects_[resource].buffer; }
   // Bytes allocated for the plan's heaps (transients) and for persistent resources.
   uint64_t transient_bytes() const { return transient_bytes_; }
@@ -38,11 +40,14 @@ class GraphResources {
  private:
   struct Object {
     VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;  // made once the image is bound
     VkBuffer buffer = VK_NULL_HANDLE;
+    VkImageUsageFlags usage = 0;
     VkMemoryRequirements requirements{};
     uint32_t memory_type = 0;
   };
   void create(uint32_t resource, VkImageUsageFlags image_usage, VkBufferUsageFlags buffer_usage);
+  void create_view(uint32_t resource);
   VkDeviceMemory allocate(uint64_t size, uint32_t memory_type, const std::string& name);
   void name(VkObjectType type, uint64_t handle, const std::string& text) const;
 

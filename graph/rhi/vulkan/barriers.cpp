@@ -1,0 +1,106 @@
+#include "graph/rhi/vulkan/barriers.h"
+
+#include <vector>
+
+namespace volgraph::vulkan {
+
+VkPipelineStageFlags2 to_vk_stages(uint32_t stages) {
+  VkPipelineStageFlags2 out = VK_PIPELINE_STAGE_2_NONE;
+  if (stages & stage::vertex_shader) out |= VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT;
+  if (stages & stage::fragment_shader) out |= VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+  if (stages & stage::early_fragment_tests) out |= VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT;
+  if (stages & stage::late_fragment_tests) out |= VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+  if (stages & stage::color_attachment_output) out |= VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+  if (stages & stage::compute_shader) out |= VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  if (stages & stage::copy) out |= VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;  // copies, clears, fills
+  if (stages & stage::all_commands) out |= VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  return out;
+}
+
+VkAccessFlags2 to_vk_access(uint32_t a) {
+  VkAccessFlags2 out = VK_ACCESS_2_NONE;
+  if (a & access::shader_sampled_read) out |= VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+  if (a & access::shader_storage_read) out |= VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+  if (a & access::shader_storage_write) out |= VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+  if (a & access::uniform_read) out |= VK_ACCESS_2_UNIFORM_READ_BIT;
+  if (a & access::color_attachment_read) out |= VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT;
+  if (a & access::color_attachment_write) out |= VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+  if (a & access::depth_stencil_read) out |= VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+  if (a & access::depth_stencil_write) out |= VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  if (a & access::transfer_read) out |= VK_ACCESS_2_TRANSFER_READ_BIT;
+  if (a & access::transfer_write) out |= VK_ACCESS_2_TRANSFER_WRITE_BIT;
+  if (a & access::memory_read) out |= VK_ACCESS_2_MEMORY_READ_BIT;
+  if (a & access::memory_write) out |= VK_ACCESS_2_MEMORY_WRITE_BIT;
+  return out;
+}
+
+VkImageLayout to_vk(Layout layout) {
+  switch (layout) {
+    case Layout::undefined: return VK_IMAGE_LAYOUT_UNDEFINED;
+    case Layout::general: return VK_IMAGE_LAYOUT_GENERAL;
+    case Layout::shader_read_only: return VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    case Layout::color_attachment: return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    case Layout::depth_attachment: return VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    case Layout::depth_read_only: return VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+    case Layout::transfer_src: return VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    case Layout::transfer_dst: return VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    case Layout::none: return VK_IMAGE_LAYOUT_UNDEFINED;
+  }
+  return VK_IMAGE_LAYOUT_UNDEFINED;
+}
+
+VkImageAspectFlags aspect_of(Format format) {
+  return format_info(format).is_depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+}
+
+void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, uint32_t position,
+                     const GraphResources& resources) {
+  const PlannedPass& pass = plan.order[position];
+  if (pass.barrier_count == 0) return;
+  std::vector<VkMemoryBarrier2> globals;
+  std::vector<VkBufferMemoryBarrier2> buffers;
+  std::vector<VkImageMemoryBarrier2> images;
+  for (uint32_t i = pass.barrier_begin; i < pass.barrier_begin + pass.barrier_count; ++i) {
+    const Barrier& b = plan.barriers[i];
+    const VkPipelineStageFlags2 src_stages = to_vk_stages(b.from.stages), dst_stages = to_vk_stages(b.to.stages);
+    const VkAccessFlags2 src_access = to_vk_access(b.from.access), dst_access = to_vk_access(b.to.access);
+    if (b.resource == kNone) {
+      globals.push_back({VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, src_stages, src_access, dst_stages, dst_access});
+      continue;
+    }
+    const ResourceDesc& d = graph.resources[b.resource].desc;
+    if (d.kind == ResourceKind::buffer) {
+      VkBufferMemoryBarrier2 v{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+      v.srcStageMask = src_stages;
+      v.srcAccessMask = src_access;
+      v.dstStageMask = dst_stages;
+      v.dstAccessMask = dst_access;
+      v.srcQueueFamilyIndex = v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      v.buffer = resources.buffer(b.resource);
+      v.size = VK_WHOLE_SIZE;
+      buffers.push_back(v);
+      continue;
+    }
+    VkImageMemoryBarrier2 v{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    v.srcStageMask = src_stages;
+    v.srcAccessMask = src_access;
+    v.dstStageMask = dst_stages;
+    v.dstAccessMask = dst_access;
+    v.oldLayout = to_vk(b.from.layout);
+    v.newLayout = to_vk(b.to.layout);
+    v.srcQueueFamilyIndex = v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    v.image = resources.image(b.resource);
+    v.subresourceRange = {aspect_of(d.format), 0, 1, 0, 1};
+    images.push_back(v);
+  }
+  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dep.memoryBarrierCount = uint32_t(globals.size());
+  dep.pMemoryBarriers = globals.data();
+  dep.bufferMemoryBarrierCount = uint32_t(buffers.size());
+  dep.pBufferMemoryBarriers = buffers.data();
+  dep.imageMemoryBarrierCount = uint32_t(images.size());
+  dep.pImageMemoryBarriers = images.data();
+  vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+}  // namespace volgraph::vulkan
