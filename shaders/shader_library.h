@@ -1,0 +1,13 @@
+// The SPIR-V of the shaders in shaders/, compiled at build time.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace volgraph {
+
+// Empty when there is no shader of that name.
+std::span<const uint32_t> shader_spirv(std::string_view name);
+
+}  // namespace volgraph
