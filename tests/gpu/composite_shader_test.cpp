@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/gpu/validation_messages.h"
+
 #include "graph/rhi/vulkan/context.h"
 #include "passes/shading/tonemap.h"
 #include "shaders/shader_library.h"
@@ -246,7 +248,7 @@ TEST(CompositeShader, MatchesTheCpuTwinForEveryToneMap) {
     }
   }
   const auto messages = c->take_validation_messages();
-  EXPECT_TRUE(messages.empty()) << (messages.empty() ? "" : messages.front());
+  EXPECT_TRUE(messages.empty()) << joined(messages);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // resource at its planned offset, and the validation layer stays silent.
 #include <gtest/gtest.h>
 
+#include "tests/gpu/validation_messages.h"
+
 #include "graph/config/config.h"
 #include "graph/rhi/vulkan/graph_resources.h"
 #include "passes/passes.h"
@@ -10,12 +12,6 @@
 
 namespace volgraph::vulkan {
 namespace {
-
-std::string joined(const std::vector<std::string>& messages) {
-  std::string out;
-  for (const auto& m : messages) out += m + "\n";
-  return out;
-}
 
 class GraphResourcesTest : public ::testing::TestWithParam<const char*> {
  protected:

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/gpu/validation_messages.h"
+
 #include "graph/rhi/vulkan/context.h"
 
 namespace volgraph::vulkan {
@@ -56,12 +58,6 @@ void transfer_barrier(VkCommandBuffer cmd, VkBuffer buffer) {
   dep.bufferMemoryBarrierCount = 1;
   dep.pBufferMemoryBarriers = &b;
   vkCmdPipelineBarrier2(cmd, &dep);
-}
-
-std::string joined(const std::vector<std::string>& messages) {
-  std::string out;
-  for (const auto& m : messages) out += m + "\n";
-  return out;
 }
 
 TEST(VulkanContext, DefaultDeviceIsLavapipeWithVulkan13) {
