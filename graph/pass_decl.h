@@ -14,6 +14,8 @@
 
 namespace volgraph {
 
+struct Scene;
+
 enum class ParamType : uint8_t { boolean, integer, number, vec3, choice };
 
 using ParamValue = std::variant<bool, int64_t, double, std::array<double, 3>, std::string>;
@@ -55,6 +57,18 @@ struct SlotDecl {
   std::string doc;
 };
 
+// What is wrong with a pass's parameters given the scene; `param` names the parameter
+// the message is about ("" for the pass as a whole).
+struct ParamProblem {
+  std::string param;
+  std::string message;
+};
+
+struct PassDecl;
+// Checks a pass whose scene needs hold, with its parameter values (as decl.params).
+using SceneCheck = std::vector<ParamProblem> (*)(const PassDecl& decl, const Scene& scene,
+                                                 const std::vector<ParamValue>& params);
+
 struct PassDecl {
   std::string name;
   PassKind kind = PassKind::compute;
@@ -63,6 +77,7 @@ struct PassDecl {
   std::vector<ParamDecl> params;
   std::vector<SlotDecl> slots;
   SceneFeatures needs = 0;
+  SceneCheck check_scene = nullptr;  // optional
 
   int variant_index(std::string_view variant) const;  // -1 when unknown
   int param_index(std::string_view param) const;

@@ -1,9 +1,28 @@
 // Shadow map: depth from one light's view. Directional lights use an orthographic
 // projection fitted to the camera frustum's bounds; spot lights a perspective one
 // spanning the outer cone.
+#include "graph/scene/scene.h"
 #include "passes/passes.h"
 
 namespace volgraph {
+namespace {
+
+// The light must exist, be directional or spot, and cast shadows.
+std::vector<ParamProblem> check_light(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params) {
+  const int64_t index = std::get<int64_t>(params[size_t(decl.param_index("light"))]);
+  if (index >= int64_t(scene.lights.size())) {
+    return {{"light", "light " + std::to_string(index) + " does not exist: scene.lights has " +
+                          std::to_string(scene.lights.size())}};
+  }
+  const Light& light = scene.lights[size_t(index)];
+  if (light.type == LightType::point) {
+    return {{"light", "light " + std::to_string(index) + " is a point light; shadow_map takes a directional or spot light"}};
+  }
+  if (!light.cast_shadows) return {{"light", "light " + std::to_string(index) + " has cast_shadows: false"}};
+  return {};
+}
+
+}  // namespace
 
 PassDecl shadow_map_pass() {
   PassDecl d;
@@ -28,6 +47,7 @@ PassDecl shadow_map_pass() {
                "the light's view-projection matrix and bias, for passes that sample `depth`"),
   };
   d.needs = feature_bit(SceneFeature::shadow_casting_light);
+  d.check_scene = check_light;
   return d;
 }
 

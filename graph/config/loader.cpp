@@ -393,6 +393,7 @@ class Wiring {
     diags_.throw_if_any();
     for (uint32_t p = 0; p < n; ++p) check_params_and_outputs(p);
     for (uint32_t p = 0; p < n; ++p) check_inputs(p);
+    for (uint32_t p = 0; p < n; ++p) check_against_scene(p);
     check_outputs_named();
     diags_.throw_if_any();
     const std::vector<uint32_t> order = wiring_order();
@@ -447,6 +448,21 @@ class Wiring {
       overrides_[p][size_t(i)] = &o;
       check_format_override(decl, slot, o);
       check_size_override(node, slot);
+    }
+  }
+
+  // A pass's own checks of its parameters against the scene, when the pass will run
+  // (its scene needs hold); a problem points at the parameter when it names one.
+  void check_against_scene(uint32_t p) {
+    const PassDecl& decl = *decls_[p];
+    if (!decl.check_scene || (decl.needs & ~config_.scene.features())) return;
+    const PassNode& node = config_.passes[p];
+    for (const ParamProblem& problem : decl.check_scene(decl, config_.scene, params_[p])) {
+      Where where = node.where;
+      for (const ParamSetting& s : node.params) {
+        if (s.name == problem.param) where = s.where;
+      }
+      diags_.error(where, "pass \"" + node.name + "\": " + problem.message);
     }
   }
 

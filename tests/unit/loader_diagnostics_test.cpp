@@ -239,6 +239,18 @@ TEST_F(Loader, SizeOverrideOutOfRange) {
             "/graph/passes/1/outputs/color/size/0", "expected an integer in [1, 16384]");
 }
 
+TEST_F(Loader, ShadowMapLightMustExist) {
+  one_error(replace(kValid, "\"resolution\": 256", "\"resolution\": 256, \"light\": 3"),
+            "/graph/passes/0/params/light", "light 3 does not exist: scene.lights has 1");
+}
+
+TEST_F(Loader, ShadowMapLightMustBeDirectionalOrSpot) {
+  std::string text = replace(kValid, "\"irradiance\": [1, 1, 1] }",
+                             "\"irradiance\": [1, 1, 1] }, { \"type\": \"point\", \"intensity\": [1, 1, 1] }");
+  one_error(replace(text, "\"resolution\": 256", "\"resolution\": 256, \"light\": 1"), "/graph/passes/0/params/light",
+            "light 1 is a point light; shadow_map takes a directional or spot light");
+}
+
 TEST_F(Loader, ManyErrorsReportedTogether) {
   std::string text = replace(kValid, "\"graph\"", "\"grpah\"");
   text = replace(text, "\"camera\"", "\"camrea\"");
