@@ -53,6 +53,32 @@ VkImageAspectFlags aspect_of(Format format) {
   return format_info(format).is_depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
 }
 
+VkImageMemoryBarrier2 image_barrier(VkImage image, Format format, const AccessState& from, const AccessState& to) {
+  VkImageMemoryBarrier2 v{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+  v.srcStageMask = to_vk_stages(from.stages);
+  v.srcAccessMask = to_vk_access(from.access);
+  v.dstStageMask = to_vk_stages(to.stages);
+  v.dstAccessMask = to_vk_access(to.access);
+  v.oldLayout = to_vk(from.layout);
+  v.newLayout = to_vk(to.layout);
+  v.srcQueueFamilyIndex = v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  v.image = image;
+  v.subresourceRange = {aspect_of(format), 0, 1, 0, 1};
+  return v;
+}
+
+VkBufferMemoryBarrier2 buffer_barrier(VkBuffer buffer, const AccessState& from, const AccessState& to) {
+  VkBufferMemoryBarrier2 v{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  v.srcStageMask = to_vk_stages(from.stages);
+  v.srcAccessMask = to_vk_access(from.access);
+  v.dstStageMask = to_vk_stages(to.stages);
+  v.dstAccessMask = to_vk_access(to.access);
+  v.srcQueueFamilyIndex = v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  v.buffer = buffer;
+  v.size = VK_WHOLE_SIZE;
+  return v;
+}
+
 void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, uint32_t position,
                      const GraphResources& resources) {
   const PlannedPass& pass = plan.order[position];
@@ -62,36 +88,17 @@ void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, 
   std::vector<VkImageMemoryBarrier2> images;
   for (uint32_t i = pass.barrier_begin; i < pass.barrier_begin + pass.barrier_count; ++i) {
     const Barrier& b = plan.barriers[i];
-    const VkPipelineStageFlags2 src_stages = to_vk_stages(b.from.stages), dst_stages = to_vk_stages(b.to.stages);
-    const VkAccessFlags2 src_access = to_vk_access(b.from.access), dst_access = to_vk_access(b.to.access);
     if (b.resource == kNone) {
-      globals.push_back({VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, src_stages, src_access, dst_stages, dst_access});
+      globals.push_back({VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, to_vk_stages(b.from.stages), to_vk_access(b.from.access),
+                         to_vk_stages(b.to.stages), to_vk_access(b.to.access)});
       continue;
     }
     const ResourceDesc& d = graph.resources[b.resource].desc;
     if (d.kind == ResourceKind::buffer) {
-      VkBufferMemoryBarrier2 v{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-      v.srcStageMask = src_stages;
-      v.srcAccessMask = src_access;
-      v.dstStageMask = dst_stages;
-      v.dstAccessMask = dst_access;
-      v.srcQueueFamilyIndex = v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      v.buffer = resources.buffer(b.resource);
-      v.size = VK_WHOLE_SIZE;
-      buffers.push_back(v);
-      continue;
+      buffers.push_back(buffer_barrier(resources.buffer(b.resource), b.from, b.to));
+    } else {
+      images.push_back(image_barrier(resources.image(b.resource), d.format, b.from, b.to));
     }
-    VkImageMemoryBarrier2 v{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    v.srcStageMask = src_stages;
-    v.srcAccessMask = src_access;
-    v.dstStageMask = dst_stages;
-    v.dstAccessMask = dst_access;
-    v.oldLayout = to_vk(b.from.layout);
-    v.newLayout = to_vk(b.to.layout);
-    v.srcQueueFamilyIndex = v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    v.image = resources.image(b.resource);
-    v.subresourceRange = {aspect_of(d.format), 0, 1, 0, 1};
-    images.push_back(v);
   }
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.memoryBarrierCount = uint32_t(globals.size());

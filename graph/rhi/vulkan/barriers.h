@@ -14,6 +14,10 @@ VkAccessFlags2 to_vk_access(uint32_t accesses);
 VkImageLayout to_vk(Layout layout);
 VkImageAspectFlags aspect_of(Format format);
 
+// One transition as a synchronization2 barrier.
+VkImageMemoryBarrier2 image_barrier(VkImage image, Format format, const AccessState& from, const AccessState& to);
+VkBufferMemoryBarrier2 buffer_barrier(VkBuffer buffer, const AccessState& from, const AccessState& to);
+
 // Records the barriers planned before order[position].
 void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, uint32_t position,
                      const GraphResources& resources);

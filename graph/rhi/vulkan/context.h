@@ -48,6 +48,9 @@ class Context {
   float timestamp_period_ns() const { return limits_.timestampPeriod; }
   bool validation() const { return messenger_ != VK_NULL_HANDLE; }
 
+  // Labels an object for validation messages and frame debuggers (VK_EXT_debug_utils).
+  void set_name(VkObjectType type, uint64_t handle, const std::string& name) const;
+
   // Validation messages (warnings and errors) since the last take.
   std::vector<std::string> take_validation_messages();
 
@@ -72,6 +75,7 @@ class Context {
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queue_family_ = 0;
   VkCommandPool pool_ = VK_NULL_HANDLE;
+  PFN_vkSetDebugUtilsObjectNameEXT set_name_ = nullptr;
   DeviceInfo info_;
   VkPhysicalDeviceLimits limits_{};
   VkPhysicalDeviceMemoryProperties memory_{};

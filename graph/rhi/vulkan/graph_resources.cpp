@@ -12,8 +12,6 @@ constexpr uint32_t heap_class(uint32_t memory_type, bool buffer) { return memory
 
 GraphResources::GraphResources(Context& context, const Graph& graph)
     : context_(context), graph_(graph), objects_(graph.resources.size()) {
-  set_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-      vkGetDeviceProcAddr(context.device(), "vkSetDebugUtilsObjectNameEXT"));
   std::vector<VkImageUsageFlags> image_usage(graph.resources.size(), 0);
   std::vector<VkBufferUsageFlags> buffer_usage(graph.resources.size(), 0);
   std::vector<VkFormatFeatureFlags> features(graph.resources.size(), 0);
@@ -134,12 +132,7 @@ void GraphResources::create_view(uint32_t r) {
 }
 
 void GraphResources::name(VkObjectType type, uint64_t handle, const std::string& text) const {
-  if (!set_name_) return;
-  VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
-  info.objectType = type;
-  info.objectHandle = handle;
-  info.pObjectName = text.c_str();
-  set_name_(context_.device(), &info);
+  context_.set_name(type, handle, text);
 }
 
 GraphResources::~GraphResources() {

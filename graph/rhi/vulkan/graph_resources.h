@@ -57,7 +57,6 @@ class GraphResources {
   std::vector<VkDeviceMemory> memory_;
   uint64_t transient_bytes_ = 0;
   uint64_t persistent_bytes_ = 0;
-  PFN_vkSetDebugUtilsObjectNameEXT set_name_ = nullptr;
 };
 
 }  // namespace volgraph::vulkan

@@ -1,0 +1,182 @@
+// The backend interface passes talk to. Shaped like WebGPU (the stricter of the two
+// APIs), in volgraph's own terms, so that the WebGPU backend maps it one to one and the
+// Vulkan backend fills in what WebGPU does implicitly. Barriers are explicit and in the
+// plan's vocabulary (AccessState): the executor hands over the plan's transitions as they
+// are; WebGPU, which tracks usage itself, ignores them.
+// This first slice covers compute and copies; render pipelines and passes come next.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "graph/access.h"
+#include "graph/resource.h"
+
+namespace volgraph::rhi {
+
+// Typed handles owned by the Device; 0 is "none".
+template <typename Tag>
+struct Handle {
+  uint32_t id = 0;
+  explicit operator bool() const { return id != 0; }
+  friend bool operator==(Handle, Handle) = default;
+};
+using BufferId = Handle<struct BufferTag>;
+using TextureId = Handle<struct TextureTag>;
+using TextureViewId = Handle<struct TextureViewTag>;
+using SamplerId = Handle<struct SamplerTag>;
+using ShaderModuleId = Handle<struct ShaderModuleTag>;
+using BindGroupLayoutId = Handle<struct BindGroupLayoutTag>;
+using BindGroupId = Handle<struct BindGroupTag>;
+using ComputePipelineId = Handle<struct ComputePipelineTag>;
+
+namespace buffer_usage {  // as WGPUBufferUsage
+constexpr uint32_t copy_src = 1u << 0;
+constexpr uint32_t copy_dst = 1u << 1;
+constexpr uint32_t uniform = 1u << 2;
+constexpr uint32_t storage = 1u << 3;
+}  // namespace buffer_usage
+
+namespace texture_usage {  // as WGPUTextureUsage
+constexpr uint32_t copy_src = 1u << 0;
+constexpr uint32_t copy_dst = 1u << 1;
+constexpr uint32_t sampled = 1u << 2;
+constexpr uint32_t storage = 1u << 3;
+constexpr uint32_t attachment = 1u << 4;
+}  // namespace texture_usage
+
+namespace shader_stage {
+constexpr uint32_t vertex = 1u << 0;
+constexpr uint32_t fragment = 1u << 1;
+constexpr uint32_t compute = 1u << 2;
+}  // namespace shader_stage
+
+struct BufferDesc {
+  std::string label;
+  uint64_t size = 0;
+  uint32_t usage = 0;
+};
+
+struct TextureDesc {
+  std::string label;
+  ResourceKind kind = ResourceKind::texture2d;
+  Format format = Format::rgba16_float;
+  Extent size{};
+  uint32_t usage = 0;
+};
+
+enum class Filter : uint8_t { nearest, linear };
+enum class AddressMode : uint8_t { clamp_to_edge, repeat };
+
+struct SamplerDesc {
+  std::string label;
+  Filter filter = Filter::nearest;
+  AddressMode address = AddressMode::clamp_to_edge;
+};
+
+enum class BindingType : uint8_t { uniform_buffer, storage_buffer, read_only_storage_buffer, sampled_texture, sampler, storage_texture };
+
+struct LayoutEntry {
+  uint32_t binding = 0;
+  uint32_t visibility = shader_stage::compute;
+  BindingType type = BindingType::uniform_buffer;
+  ResourceKind texture_kind = ResourceKind::texture2d;  // sampled and storage textures
+  Format storage_format = Format::undefined;            // storage textures
+};
+
+struct BindGroupLayoutDesc {
+  std::string label;
+  std::vector<LayoutEntry> entries;
+};
+
+// One resource per binding: a buffer range, a texture view, or a sampler.
+struct BindGroupEntry {
+  uint32_t binding = 0;
+  BufferId buffer;
+  uint64_t offset = 0;
+  uint64_t size = 0;  // 0: to the end
+  TextureViewId view;
+  SamplerId sampler;
+};
+
+struct BindGroupDesc {
+  std::string label;
+  BindGroupLayoutId layout;
+  std::vector<BindGroupEntry> entries;
+};
+
+struct ComputePipelineDesc {
+  std::string label;
+  ShaderModuleId module;
+  std::string entry_point = "main";
+  std::vector<BindGroupLayoutId> layouts;  // set i = layouts[i]
+};
+
+// A transition of one texture or buffer (not both), in the plan's terms.
+struct ResourceBarrier {
+  TextureId texture;
+  BufferId buffer;
+  AccessState from{};  // layout undefined: contents discarded
+  AccessState to{};
+};
+
+struct AdapterInfo {
+  std::string backend;  // "vulkan", "webgpu"
+  std::string device;
+  std::string driver;
+};
+
+class CommandEncoder {
+ public:
+  virtual ~CommandEncoder() = default;
+
+  // Transitions before the next command; all given together are batched.
+  virtual void barrier(std::span<const ResourceBarrier> barriers) = 0;
+
+  virtual void begin_compute_pass(std::string_view label) = 0;
+  virtual void set_pipeline(ComputePipelineId pipeline) = 0;
+  virtual void set_bind_group(uint32_t index, BindGroupId group) = 0;
+  virtual void dispatch(uint32_t x, uint32_t y = 1, uint32_t z = 1) = 0;
+  virtual void end_compute_pass() = 0;
+
+  // Whole-texture copies, rows tightly packed in the buffer.
+  virtual void copy_buffer_to_texture(BufferId source, uint64_t offset, TextureId destination) = 0;
+  virtual void copy_texture_to_buffer(TextureId source, BufferId destination, uint64_t offset) = 0;
+};
+
+class Device {
+ public:
+  virtual ~Device() = default;
+  virtual AdapterInfo info() const = 0;
+
+  virtual BufferId create_buffer(const BufferDesc& desc) = 0;
+  virtual TextureId create_texture(const TextureDesc& desc) = 0;
+  virtual TextureViewId create_view(TextureId texture) = 0;  // the whole texture, its own format
+  virtual SamplerId create_sampler(const SamplerDesc& desc) = 0;
+  virtual ShaderModuleId create_shader_module(std::string_view label, std::span<const uint32_t> spirv) = 0;
+  virtual BindGroupLayoutId create_bind_group_layout(const BindGroupLayoutDesc& desc) = 0;
+  virtual BindGroupId create_bind_group(const BindGroupDesc& desc) = 0;
+  virtual ComputePipelineId create_compute_pipeline(const ComputePipelineDesc& desc) = 0;
+  // Frees the memory now (as WebGPU's destroy()); the handle must not be used again.
+  virtual void destroy(BufferId buffer) = 0;
+  virtual void destroy(TextureId texture) = 0;
+
+  // Queue writes, done before anything submitted later reads: a buffer written this way
+  // is ready for any use; a texture is left in the state `written_texture_state()`.
+  virtual void write_buffer(BufferId buffer, uint64_t offset, std::span<const std::byte> data) = 0;
+  virtual void write_texture(TextureId texture, std::span<const std::byte> texels) = 0;
+  static AccessState written_texture_state() { return {stage::copy, access::transfer_write, Layout::transfer_dst}; }
+
+  virtual std::unique_ptr<CommandEncoder> create_command_encoder(std::string_view label) = 0;
+  // Runs the commands and waits for them.
+  virtual void submit(std::unique_ptr<CommandEncoder> commands) = 0;
+  // The contents of a buffer created with copy_dst (waits for everything submitted).
+  virtual std::vector<std::byte> read_buffer(BufferId buffer) = 0;
+};
+
+}  // namespace volgraph::rhi

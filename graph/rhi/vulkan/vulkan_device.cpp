@@ -1,0 +1,418 @@
+#include "graph/rhi/vulkan/vulkan_device.h"
+
+#include <cstring>
+
+#include "graph/rhi/vulkan/barriers.h"
+#include "graph/rhi/vulkan/formats.h"
+
+namespace volgraph::vulkan {
+namespace {
+
+VkDescriptorType descriptor_type(rhi::BindingType type) {
+  switch (type) {
+    case rhi::BindingType::uniform_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case rhi::BindingType::storage_buffer:
+    case rhi::BindingType::read_only_storage_buffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    case rhi::BindingType::sampled_texture: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    case rhi::BindingType::sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
+    case rhi::BindingType::storage_texture: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  }
+  return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+}
+
+VkShaderStageFlags stages(uint32_t visibility) {
+  VkShaderStageFlags out = 0;
+  if (visibility & rhi::shader_stage::vertex) out |= VK_SHADER_STAGE_VERTEX_BIT;
+  if (visibility & rhi::shader_stage::fragment) out |= VK_SHADER_STAGE_FRAGMENT_BIT;
+  if (visibility & rhi::shader_stage::compute) out |= VK_SHADER_STAGE_COMPUTE_BIT;
+  return out;
+}
+
+VkBufferUsageFlags buffer_usage_flags(uint32_t usage) {
+  VkBufferUsageFlags out = 0;
+  if (usage & rhi::buffer_usage::copy_src) out |= VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+  if (usage & rhi::buffer_usage::copy_dst) out |= VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  if (usage & rhi::buffer_usage::uniform) out |= VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+  if (usage & rhi::buffer_usage::storage) out |= VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  return out;
+}
+
+VkImageUsageFlags texture_usage_flags(uint32_t usage, Format format) {
+  VkImageUsageFlags out = 0;
+  if (usage & rhi::texture_usage::copy_src) out |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  if (usage & rhi::texture_usage::copy_dst) out |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (usage & rhi::texture_usage::sampled) out |= VK_IMAGE_USAGE_SAMPLED_BIT;
+  if (usage & rhi::texture_usage::storage) out |= VK_IMAGE_USAGE_STORAGE_BIT;
+  if (usage & rhi::texture_usage::attachment) {
+    out |= format_info(format).is_depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  }
+  return out;
+}
+
+VkBufferImageCopy whole_texture(const rhi::TextureDesc& d, uint64_t offset) {
+  VkBufferImageCopy region{};
+  region.bufferOffset = offset;
+  region.imageSubresource = {aspect_of(d.format), 0, 0, 1};
+  region.imageExtent = {d.size.width, d.size.height, d.kind == ResourceKind::texture3d ? d.size.depth : 1};
+  return region;
+}
+
+class VulkanEncoder final : public rhi::CommandEncoder {
+ public:
+  VulkanEncoder(VulkanDevice& device, VkCommandBuffer cmd) : device_(device), cmd_(cmd) {}
+  VkCommandBuffer command_buffer() const { return cmd_; }
+
+  void barrier(std::span<const rhi::ResourceBarrier> barriers) override {
+    std::vector<VkImageMemoryBarrier2> images;
+    std::vector<VkBufferMemoryBarrier2> buffers;
+    for (const rhi::ResourceBarrier& b : barriers) {
+      if (b.texture) {
+        const auto& t = device_.texture(b.texture);
+        images.push_back(image_barrier(t.image, t.desc.format, b.from, b.to));
+      } else if (b.buffer) {
+        buffers.push_back(buffer_barrier(device_.buffer(b.buffer).buffer, b.from, b.to));
+      }
+    }
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = uint32_t(images.size());
+    dep.pImageMemoryBarriers = images.data();
+    dep.bufferMemoryBarrierCount = uint32_t(buffers.size());
+    dep.pBufferMemoryBarriers = buffers.data();
+    vkCmdPipelineBarrier2(cmd_, &dep);
+  }
+
+  void begin_compute_pass(std::string_view label) override { label_ = std::string(label); }
+  void set_pipeline(rhi::ComputePipelineId id) override {
+    pipeline_ = device_.pipeline(id);
+    vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.pipeline);
+  }
+  void set_bind_group(uint32_t index, rhi::BindGroupId group) override {
+    const VkDescriptorSet set = device_.bind_group(group);
+    vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.layout, index, 1, &set, 0, nullptr);
+  }
+  void dispatch(uint32_t x, uint32_t y, uint32_t z) override { vkCmdDispatch(cmd_, x, y, z); }
+  void end_compute_pass() override { label_.clear(); }
+
+  void copy_buffer_to_texture(rhi::BufferId source, uint64_t offset, rhi::TextureId destination) override {
+    const auto& t = device_.texture(destination);
+    const VkBufferImageCopy region = whole_texture(t.desc, offset);
+    vkCmdCopyBufferToImage(cmd_, device_.buffer(source).buffer, t.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  }
+  void copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset) override {
+    const auto& t = device_.texture(source);
+    const VkBufferImageCopy region = whole_texture(t.desc, offset);
+    vkCmdCopyImageToBuffer(cmd_, t.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, device_.buffer(destination).buffer, 1, &region);
+  }
+
+ private:
+  VulkanDevice& device_;
+  VkCommandBuffer cmd_;
+  VulkanDevice::Pipeline pipeline_;
+  std::string label_;
+};
+
+}  // namespace
+
+VulkanDevice::VulkanDevice(Context& context) : context_(context) {
+  VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  pool.queueFamilyIndex = context.queue_family();
+  check(vkCreateCommandPool(context.device(), &pool, nullptr, &pool_), "vkCreateCommandPool");
+}
+
+VulkanDevice::~VulkanDevice() {
+  const VkDevice d = context_.device();
+  vkDeviceWaitIdle(d);
+  for (const Pipeline& p : pipelines_) {
+    if (p.pipeline) vkDestroyPipeline(d, p.pipeline, nullptr);
+    if (p.layout) vkDestroyPipelineLayout(d, p.layout, nullptr);
+  }
+  for (const BindGroup& g : groups_) {
+    if (g.pool) vkDestroyDescriptorPool(d, g.pool, nullptr);
+  }
+  for (const Layout& l : layouts_) {
+    if (l.layout) vkDestroyDescriptorSetLayout(d, l.layout, nullptr);
+  }
+  for (VkShaderModule m : modules_) {
+    if (m) vkDestroyShaderModule(d, m, nullptr);
+  }
+  for (VkSampler s : samplers_) {
+    if (s) vkDestroySampler(d, s, nullptr);
+  }
+  for (VkImageView v : views_) {
+    if (v) vkDestroyImageView(d, v, nullptr);
+  }
+  for (const Texture& t : textures_) {
+    if (t.image) vkDestroyImage(d, t.image, nullptr);
+    if (t.memory) vkFreeMemory(d, t.memory, nullptr);
+  }
+  for (const Buffer& b : buffers_) {
+    if (b.buffer) vkDestroyBuffer(d, b.buffer, nullptr);
+    if (b.memory) vkFreeMemory(d, b.memory, nullptr);
+  }
+  vkDestroyCommandPool(d, pool_, nullptr);
+}
+
+rhi::AdapterInfo VulkanDevice::info() const { return {"vulkan", context_.info().name, context_.info().driver}; }
+
+void VulkanDevice::name(VkObjectType type, uint64_t handle, const std::string& label) const {
+  context_.set_name(type, handle, label);
+}
+
+VkDeviceMemory VulkanDevice::allocate(const VkMemoryRequirements& req, bool host_visible, const std::string& label) {
+  const VkMemoryPropertyFlags wanted = host_visible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                                                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  info.allocationSize = req.size;
+  info.memoryTypeIndex = context_.memory_type(req.memoryTypeBits, wanted);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  check(vkAllocateMemory(context_.device(), &info, nullptr, &memory), ("vkAllocateMemory for " + label).c_str());
+  return memory;
+}
+
+rhi::BufferId VulkanDevice::create_buffer(const rhi::BufferDesc& desc) {
+  Buffer b;
+  b.size = desc.size;
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = std::max<uint64_t>(4, desc.size);
+  info.usage = buffer_usage_flags(desc.usage);
+  check(vkCreateBuffer(context_.device(), &info, nullptr, &b.buffer), "vkCreateBuffer");
+  VkMemoryRequirements req;
+  vkGetBufferMemoryRequirements(context_.device(), b.buffer, &req);
+  b.memory = allocate(req, true, desc.label);
+  check(vkBindBufferMemory(context_.device(), b.buffer, b.memory, 0), "vkBindBufferMemory");
+  check(vkMapMemory(context_.device(), b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
+  name(VK_OBJECT_TYPE_BUFFER, uint64_t(b.buffer), desc.label);
+  buffers_.push_back(b);
+  return {uint32_t(buffers_.size() - 1)};
+}
+
+rhi::TextureId VulkanDevice::create_texture(const rhi::TextureDesc& desc) {
+  Texture t;
+  t.desc = desc;
+  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  info.imageType = desc.kind == ResourceKind::texture3d ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
+  info.format = to_vk(desc.format);
+  info.extent = {desc.size.width, desc.size.height, desc.kind == ResourceKind::texture3d ? desc.size.depth : 1};
+  info.mipLevels = info.arrayLayers = 1;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = texture_usage_flags(desc.usage, desc.format);
+  check(vkCreateImage(context_.device(), &info, nullptr, &t.image), "vkCreateImage");
+  VkMemoryRequirements req;
+  vkGetImageMemoryRequirements(context_.device(), t.image, &req);
+  t.memory = allocate(req, false, desc.label);
+  check(vkBindImageMemory(context_.device(), t.image, t.memory, 0), "vkBindImageMemory");
+  name(VK_OBJECT_TYPE_IMAGE, uint64_t(t.image), desc.label);
+  textures_.push_back(t);
+  return {uint32_t(textures_.size() - 1)};
+}
+
+rhi::TextureViewId VulkanDevice::create_view(rhi::TextureId id) {
+  const Texture& t = textures_.at(id.id);
+  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  info.image = t.image;
+  info.viewType = t.desc.kind == ResourceKind::texture3d ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
+  info.format = to_vk(t.desc.format);
+  info.subresourceRange = {aspect_of(t.desc.format), 0, 1, 0, 1};
+  VkImageView view = VK_NULL_HANDLE;
+  check(vkCreateImageView(context_.device(), &info, nullptr, &view), "vkCreateImageView");
+  name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view), t.desc.label);
+  views_.push_back(view);
+  return {uint32_t(views_.size() - 1)};
+}
+
+rhi::SamplerId VulkanDevice::create_sampler(const rhi::SamplerDesc& desc) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = desc.filter == rhi::Filter::linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  const VkSamplerAddressMode mode =
+      desc.address == rhi::AddressMode::repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeU = info.addressModeV = info.addressModeW = mode;
+  VkSampler sampler = VK_NULL_HANDLE;
+  check(vkCreateSampler(context_.device(), &info, nullptr, &sampler), "vkCreateSampler");
+  name(VK_OBJECT_TYPE_SAMPLER, uint64_t(sampler), desc.label);
+  samplers_.push_back(sampler);
+  return {uint32_t(samplers_.size() - 1)};
+}
+
+rhi::ShaderModuleId VulkanDevice::create_shader_module(std::string_view label, std::span<const uint32_t> spirv) {
+  if (spirv.empty()) throw DeviceError(DeviceError::Kind::other, "shader module " + std::string(label) + " has no SPIR-V");
+  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  info.codeSize = spirv.size_bytes();
+  info.pCode = spirv.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  check(vkCreateShaderModule(context_.device(), &info, nullptr, &module), "vkCreateShaderModule");
+  name(VK_OBJECT_TYPE_SHADER_MODULE, uint64_t(module), std::string(label));
+  modules_.push_back(module);
+  return {uint32_t(modules_.size() - 1)};
+}
+
+rhi::BindGroupLayoutId VulkanDevice::create_bind_group_layout(const rhi::BindGroupLayoutDesc& desc) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  for (const rhi::LayoutEntry& e : desc.entries) {
+    bindings.push_back({e.binding, descriptor_type(e.type), 1, stages(e.visibility), nullptr});
+  }
+  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  info.bindingCount = uint32_t(bindings.size());
+  info.pBindings = bindings.data();
+  Layout l;
+  l.entries = desc.entries;
+  check(vkCreateDescriptorSetLayout(context_.device(), &info, nullptr, &l.layout), "vkCreateDescriptorSetLayout");
+  name(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, uint64_t(l.layout), desc.label);
+  layouts_.push_back(l);
+  return {uint32_t(layouts_.size() - 1)};
+}
+
+rhi::BindGroupId VulkanDevice::create_bind_group(const rhi::BindGroupDesc& desc) {
+  const Layout& layout = layouts_.at(desc.layout.id);
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (const rhi::LayoutEntry& e : layout.entries) sizes.push_back({descriptor_type(e.type), 1});
+  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool_info.maxSets = 1;
+  pool_info.poolSizeCount = uint32_t(sizes.size());
+  pool_info.pPoolSizes = sizes.data();
+  BindGroup g;
+  check(vkCreateDescriptorPool(context_.device(), &pool_info, nullptr, &g.pool), "vkCreateDescriptorPool");
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = g.pool;
+  alloc.descriptorSetCount = 1;
+  alloc.pSetLayouts = &layout.layout;
+  check(vkAllocateDescriptorSets(context_.device(), &alloc, &g.set), "vkAllocateDescriptorSets");
+  name(VK_OBJECT_TYPE_DESCRIPTOR_SET, uint64_t(g.set), desc.label);
+
+  std::vector<VkDescriptorImageInfo> images(desc.entries.size());
+  std::vector<VkDescriptorBufferInfo> buffers(desc.entries.size());
+  std::vector<VkWriteDescriptorSet> writes;
+  for (size_t i = 0; i < desc.entries.size(); ++i) {
+    const rhi::BindGroupEntry& e = desc.entries[i];
+    rhi::BindingType type = rhi::BindingType::uniform_buffer;
+    for (const rhi::LayoutEntry& le : layout.entries) {
+      if (le.binding == e.binding) type = le.type;
+    }
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = g.set;
+    w.dstBinding = e.binding;
+    w.descriptorCount = 1;
+    w.descriptorType = descriptor_type(type);
+    if (type == rhi::BindingType::sampler) {
+      images[i] = {samplers_.at(e.sampler.id), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
+      w.pImageInfo = &images[i];
+    } else if (type == rhi::BindingType::sampled_texture || type == rhi::BindingType::storage_texture) {
+      // The layouts the plan puts them in for these uses (graph/access.cpp).
+      const VkImageLayout layout_in_use = type == rhi::BindingType::sampled_texture
+                                              ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
+                                              : VK_IMAGE_LAYOUT_GENERAL;
+      images[i] = {VK_NULL_HANDLE, views_.at(e.view.id), layout_in_use};
+      w.pImageInfo = &images[i];
+    } else {
+      buffers[i] = {buffers_.at(e.buffer.id).buffer, e.offset, e.size ? e.size : VK_WHOLE_SIZE};
+      w.pBufferInfo = &buffers[i];
+    }
+    writes.push_back(w);
+  }
+  vkUpdateDescriptorSets(context_.device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+  groups_.push_back(g);
+  return {uint32_t(groups_.size() - 1)};
+}
+
+rhi::ComputePipelineId VulkanDevice::create_compute_pipeline(const rhi::ComputePipelineDesc& desc) {
+  std::vector<VkDescriptorSetLayout> sets;
+  for (rhi::BindGroupLayoutId l : desc.layouts) sets.push_back(layouts_.at(l.id).layout);
+  VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layout.setLayoutCount = uint32_t(sets.size());
+  layout.pSetLayouts = sets.data();
+  Pipeline p;
+  check(vkCreatePipelineLayout(context_.device(), &layout, nullptr, &p.layout), "vkCreatePipelineLayout");
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = modules_.at(desc.module.id);
+  info.stage.pName = desc.entry_point.c_str();
+  info.layout = p.layout;
+  check(vkCreateComputePipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline), "vkCreateComputePipelines");
+  name(VK_OBJECT_TYPE_PIPELINE, uint64_t(p.pipeline), desc.label);
+  pipelines_.push_back(p);
+  return {uint32_t(pipelines_.size() - 1)};
+}
+
+void VulkanDevice::destroy(rhi::BufferId id) {
+  Buffer& b = buffers_.at(id.id);
+  vkDeviceWaitIdle(context_.device());
+  vkDestroyBuffer(context_.device(), b.buffer, nullptr);
+  vkFreeMemory(context_.device(), b.memory, nullptr);
+  b = Buffer{};
+}
+
+void VulkanDevice::destroy(rhi::TextureId id) {
+  Texture& t = textures_.at(id.id);
+  vkDeviceWaitIdle(context_.device());
+  vkDestroyImage(context_.device(), t.image, nullptr);
+  vkFreeMemory(context_.device(), t.memory, nullptr);
+  t = Texture{};
+}
+
+void VulkanDevice::write_buffer(rhi::BufferId id, uint64_t offset, std::span<const std::byte> data) {
+  const Buffer& b = buffers_.at(id.id);
+  if (offset + data.size() > b.size) throw DeviceError(DeviceError::Kind::other, "write_buffer past the end of the buffer");
+  std::memcpy(static_cast<char*>(b.mapped) + offset, data.data(), data.size());  // host-coherent; the next submit sees it
+}
+
+void VulkanDevice::write_texture(rhi::TextureId id, std::span<const std::byte> texels) {
+  const Texture& t = textures_.at(id.id);
+  const rhi::BufferId staging = create_buffer({t.desc.label + " upload", texels.size(), rhi::buffer_usage::copy_src});
+  write_buffer(staging, 0, texels);
+  auto encoder = create_command_encoder("write_texture");
+  const rhi::ResourceBarrier to_copy{id, {}, {}, written_texture_state()};
+  encoder->barrier({&to_copy, 1});
+  encoder->copy_buffer_to_texture(staging, 0, id);
+  submit(std::move(encoder));
+  destroy(staging);
+}
+
+std::unique_ptr<rhi::CommandEncoder> VulkanDevice::create_command_encoder(std::string_view) {
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  alloc.commandPool = pool_;
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  check(vkAllocateCommandBuffers(context_.device(), &alloc, &cmd), "vkAllocateCommandBuffers");
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+  return std::make_unique<VulkanEncoder>(*this, cmd);
+}
+
+void VulkanDevice::submit(std::unique_ptr<rhi::CommandEncoder> commands) {
+  const VkCommandBuffer cmd = static_cast<VulkanEncoder&>(*commands).command_buffer();
+  // Device writes become visible to the host (buffers are mapped) once this completes.
+  VkMemoryBarrier2 to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                           VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT};
+  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dep.memoryBarrierCount = 1;
+  dep.pMemoryBarriers = &to_host;
+  vkCmdPipelineBarrier2(cmd, &dep);
+  check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+  VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence = VK_NULL_HANDLE;
+  check(vkCreateFence(context_.device(), &fence_info, nullptr, &fence), "vkCreateFence");
+  VkCommandBufferSubmitInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+  cmd_info.commandBuffer = cmd;
+  VkSubmitInfo2 submit_info{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit_info.commandBufferInfoCount = 1;
+  submit_info.pCommandBufferInfos = &cmd_info;
+  VkResult result = vkQueueSubmit2(context_.queue(), 1, &submit_info, fence);
+  if (result == VK_SUCCESS) result = vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX);
+  vkDestroyFence(context_.device(), fence, nullptr);
+  vkFreeCommandBuffers(context_.device(), pool_, 1, &cmd);
+  check(result, "vkQueueSubmit2");
+}
+
+std::vector<std::byte> VulkanDevice::read_buffer(rhi::BufferId id) {
+  const Buffer& b = buffers_.at(id.id);
+  check(vkQueueWaitIdle(context_.queue()), "vkQueueWaitIdle");
+  const auto* begin = static_cast<const std::byte*>(b.mapped);
+  return {begin, begin + b.size};
+}
+
+}  // namespace volgraph::vulkan
