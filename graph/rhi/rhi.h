@@ -3,7 +3,8 @@
 // Vulkan backend fills in what WebGPU does implicitly. Barriers are explicit and in the
 // plan's vocabulary (AccessState): the executor hands over the plan's transitions as they
 // are; WebGPU, which tracks usage itself, ignores them.
-// This first slice covers compute and copies; render pipelines and passes come next.
+// Coordinates follow WebGPU: in normalised device coordinates +y is up, depth is in
+// [0, 1], and framebuffer row 0 is the top row (DESIGN.md's pixel convention).
 #pragma once
 
 #include <cstddef>
@@ -34,12 +35,15 @@ using ShaderModuleId = Handle<struct ShaderModuleTag>;
 using BindGroupLayoutId = Handle<struct BindGroupLayoutTag>;
 using BindGroupId = Handle<struct BindGroupTag>;
 using ComputePipelineId = Handle<struct ComputePipelineTag>;
+using RenderPipelineId = Handle<struct RenderPipelineTag>;
 
 namespace buffer_usage {  // as WGPUBufferUsage
 constexpr uint32_t copy_src = 1u << 0;
 constexpr uint32_t copy_dst = 1u << 1;
 constexpr uint32_t uniform = 1u << 2;
 constexpr uint32_t storage = 1u << 3;
+constexpr uint32_t vertex = 1u << 4;
+constexpr uint32_t index = 1u << 5;
 }  // namespace buffer_usage
 
 namespace texture_usage {  // as WGPUTextureUsage
@@ -117,6 +121,71 @@ struct ComputePipelineDesc {
   std::vector<BindGroupLayoutId> layouts;  // set i = layouts[i]
 };
 
+enum class VertexFormat : uint8_t { float32x2, float32x3, float32x4 };
+
+struct VertexAttribute {
+  uint32_t location = 0;
+  VertexFormat format = VertexFormat::float32x3;
+  uint32_t offset = 0;
+};
+
+struct VertexBufferLayout {
+  uint32_t stride = 0;
+  std::vector<VertexAttribute> attributes;
+};
+
+enum class CompareFunction : uint8_t { never, less, less_equal, greater, greater_equal, equal, not_equal, always };
+enum class CullMode : uint8_t { none, front, back };
+enum class BlendMode : uint8_t { replace, additive };  // additive: src + dst (light volumes, accumulation)
+enum class IndexFormat : uint8_t { uint16, uint32 };
+enum class LoadOp : uint8_t { clear, load };
+
+struct ColorTargetState {
+  Format format = Format::rgba16_float;
+  BlendMode blend = BlendMode::replace;
+};
+
+struct DepthStencilState {
+  Format format = Format::undefined;  // undefined: no depth attachment
+  bool write = true;
+  CompareFunction compare = CompareFunction::less;
+  float bias_constant = 0;  // in units of the format's minimum resolvable difference
+  float bias_slope = 0;
+};
+
+struct RenderPipelineDesc {
+  std::string label;
+  ShaderModuleId vertex_module;
+  std::string vertex_entry = "main";
+  ShaderModuleId fragment_module;  // none: depth only
+  std::string fragment_entry = "main";
+  std::vector<VertexBufferLayout> vertex_buffers;
+  std::vector<ColorTargetState> colors;
+  DepthStencilState depth;
+  CullMode cull = CullMode::none;
+  bool front_counter_clockwise = true;
+  std::vector<BindGroupLayoutId> layouts;
+};
+
+struct ColorAttachment {
+  TextureViewId view;
+  LoadOp load = LoadOp::clear;
+  float clear[4] = {0, 0, 0, 0};
+};
+
+struct DepthAttachment {
+  TextureViewId view;
+  LoadOp load = LoadOp::clear;
+  float clear = 1.0f;
+  bool read_only = false;  // depth test only (the depth_read usage)
+};
+
+struct RenderPassDesc {
+  std::string label;
+  std::vector<ColorAttachment> colors;
+  DepthAttachment depth;  // view none: no depth
+};
+
 // A transition of one texture or buffer (not both), in the plan's terms.
 struct ResourceBarrier {
   TextureId texture;
@@ -140,9 +209,21 @@ class CommandEncoder {
 
   virtual void begin_compute_pass(std::string_view label) = 0;
   virtual void set_pipeline(ComputePipelineId pipeline) = 0;
-  virtual void set_bind_group(uint32_t index, BindGroupId group) = 0;
   virtual void dispatch(uint32_t x, uint32_t y = 1, uint32_t z = 1) = 0;
   virtual void end_compute_pass() = 0;
+
+  // The viewport and scissor cover the attachments (all of one size).
+  virtual void begin_render_pass(const RenderPassDesc& desc) = 0;
+  virtual void set_pipeline(RenderPipelineId pipeline) = 0;
+  virtual void set_vertex_buffer(uint32_t slot, BufferId buffer, uint64_t offset = 0) = 0;
+  virtual void set_index_buffer(BufferId buffer, IndexFormat format, uint64_t offset = 0) = 0;
+  virtual void draw(uint32_t vertex_count, uint32_t instance_count = 1, uint32_t first_vertex = 0) = 0;
+  virtual void draw_indexed(uint32_t index_count, uint32_t instance_count = 1, uint32_t first_index = 0,
+                            int32_t base_vertex = 0) = 0;
+  virtual void end_render_pass() = 0;
+
+  // For the pipeline set last (compute or render).
+  virtual void set_bind_group(uint32_t index, BindGroupId group) = 0;
 
   // Whole-texture copies, rows tightly packed in the buffer.
   virtual void copy_buffer_to_texture(BufferId source, uint64_t offset, TextureId destination) = 0;
@@ -162,6 +243,7 @@ class Device {
   virtual BindGroupLayoutId create_bind_group_layout(const BindGroupLayoutDesc& desc) = 0;
   virtual BindGroupId create_bind_group(const BindGroupDesc& desc) = 0;
   virtual ComputePipelineId create_compute_pipeline(const ComputePipelineDesc& desc) = 0;
+  virtual RenderPipelineId create_render_pipeline(const RenderPipelineDesc& desc) = 0;
   // Frees the memory now (as WebGPU's destroy()); the handle must not be used again.
   virtual void destroy(BufferId buffer) = 0;
   virtual void destroy(TextureId texture) = 0;

@@ -1,5 +1,6 @@
 #include "graph/rhi/vulkan/vulkan_device.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "graph/rhi/vulkan/barriers.h"
@@ -30,6 +31,8 @@ VkShaderStageFlags stages(uint32_t visibility) {
 
 VkBufferUsageFlags buffer_usage_flags(uint32_t usage) {
   VkBufferUsageFlags out = 0;
+  if (usage & rhi::buffer_usage::vertex) out |= VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+  if (usage & rhi::buffer_usage::index) out |= VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
   if (usage & rhi::buffer_usage::copy_src) out |= VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
   if (usage & rhi::buffer_usage::copy_dst) out |= VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   if (usage & rhi::buffer_usage::uniform) out |= VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
@@ -47,6 +50,40 @@ VkImageUsageFlags texture_usage_flags(uint32_t usage, Format format) {
     out |= format_info(format).is_depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
   }
   return out;
+}
+
+VkFormat vertex_format(rhi::VertexFormat f) {
+  switch (f) {
+    case rhi::VertexFormat::float32x2: return VK_FORMAT_R32G32_SFLOAT;
+    case rhi::VertexFormat::float32x3: return VK_FORMAT_R32G32B32_SFLOAT;
+    case rhi::VertexFormat::float32x4: return VK_FORMAT_R32G32B32A32_SFLOAT;
+  }
+  return VK_FORMAT_UNDEFINED;
+}
+
+VkCompareOp compare_op(rhi::CompareFunction f) {
+  switch (f) {
+    case rhi::CompareFunction::never: return VK_COMPARE_OP_NEVER;
+    case rhi::CompareFunction::less: return VK_COMPARE_OP_LESS;
+    case rhi::CompareFunction::less_equal: return VK_COMPARE_OP_LESS_OR_EQUAL;
+    case rhi::CompareFunction::greater: return VK_COMPARE_OP_GREATER;
+    case rhi::CompareFunction::greater_equal: return VK_COMPARE_OP_GREATER_OR_EQUAL;
+    case rhi::CompareFunction::equal: return VK_COMPARE_OP_EQUAL;
+    case rhi::CompareFunction::not_equal: return VK_COMPARE_OP_NOT_EQUAL;
+    case rhi::CompareFunction::always: return VK_COMPARE_OP_ALWAYS;
+  }
+  return VK_COMPARE_OP_ALWAYS;
+}
+
+VkRenderingAttachmentInfo attachment_info(VkImageView view, VkImageLayout layout, rhi::LoadOp load,
+                                          VkAttachmentStoreOp store, VkClearValue clear) {
+  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  a.imageView = view;
+  a.imageLayout = layout;
+  a.loadOp = load == rhi::LoadOp::clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  a.storeOp = store;
+  a.clearValue = clear;
+  return a;
 }
 
 VkBufferImageCopy whole_texture(const rhi::TextureDesc& d, uint64_t offset) {
@@ -84,11 +121,74 @@ class VulkanEncoder final : public rhi::CommandEncoder {
   void begin_compute_pass(std::string_view label) override { label_ = std::string(label); }
   void set_pipeline(rhi::ComputePipelineId id) override {
     pipeline_ = device_.pipeline(id);
-    vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.pipeline);
+    bind_point_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+    vkCmdBindPipeline(cmd_, bind_point_, pipeline_.pipeline);
   }
   void set_bind_group(uint32_t index, rhi::BindGroupId group) override {
     const VkDescriptorSet set = device_.bind_group(group);
-    vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.layout, index, 1, &set, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd_, bind_point_, pipeline_.layout, index, 1, &set, 0, nullptr);
+  }
+
+  void begin_render_pass(const rhi::RenderPassDesc& desc) override {
+    label_ = desc.label;
+    std::vector<VkRenderingAttachmentInfo> colors;
+    Extent size{};
+    for (const rhi::ColorAttachment& c : desc.colors) {
+      const auto& view = device_.view(c.view);
+      size = device_.texture(view.texture).desc.size;
+      VkClearValue clear{};
+      std::copy(c.clear, c.clear + 4, clear.color.float32);
+      colors.push_back(attachment_info(view.view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, c.load,
+                                       VK_ATTACHMENT_STORE_OP_STORE, clear));
+    }
+    VkRenderingAttachmentInfo depth{};
+    if (desc.depth.view) {
+      const auto& view = device_.view(desc.depth.view);
+      size = device_.texture(view.texture).desc.size;
+      VkClearValue clear{};
+      clear.depthStencil = {desc.depth.clear, 0};
+      // A read-only depth attachment is tested, never stored (the depth_read usage).
+      depth = desc.depth.read_only
+                  ? attachment_info(view.view, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, rhi::LoadOp::load,
+                                    VK_ATTACHMENT_STORE_OP_NONE, clear)
+                  : attachment_info(view.view, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, desc.depth.load,
+                                    VK_ATTACHMENT_STORE_OP_STORE, clear);
+    }
+    VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    info.renderArea = {{0, 0}, {size.width, size.height}};
+    info.layerCount = 1;
+    info.colorAttachmentCount = uint32_t(colors.size());
+    info.pColorAttachments = colors.data();
+    info.pDepthAttachment = desc.depth.view ? &depth : nullptr;
+    vkCmdBeginRendering(cmd_, &info);
+    // NDC +y up and row 0 at the top, as WebGPU: a viewport of negative height.
+    const VkViewport viewport{0, float(size.height), float(size.width), -float(size.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {size.width, size.height}};
+    vkCmdSetViewport(cmd_, 0, 1, &viewport);
+    vkCmdSetScissor(cmd_, 0, 1, &scissor);
+  }
+  void set_pipeline(rhi::RenderPipelineId id) override {
+    pipeline_ = device_.pipeline(id);
+    bind_point_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    vkCmdBindPipeline(cmd_, bind_point_, pipeline_.pipeline);
+  }
+  void set_vertex_buffer(uint32_t slot, rhi::BufferId buffer, uint64_t offset) override {
+    const VkBuffer b = device_.buffer(buffer).buffer;
+    vkCmdBindVertexBuffers(cmd_, slot, 1, &b, &offset);
+  }
+  void set_index_buffer(rhi::BufferId buffer, rhi::IndexFormat format, uint64_t offset) override {
+    vkCmdBindIndexBuffer(cmd_, device_.buffer(buffer).buffer, offset,
+                         format == rhi::IndexFormat::uint16 ? VK_INDEX_TYPE_UINT16 : VK_INDEX_TYPE_UINT32);
+  }
+  void draw(uint32_t vertex_count, uint32_t instance_count, uint32_t first_vertex) override {
+    vkCmdDraw(cmd_, vertex_count, instance_count, first_vertex, 0);
+  }
+  void draw_indexed(uint32_t index_count, uint32_t instance_count, uint32_t first_index, int32_t base_vertex) override {
+    vkCmdDrawIndexed(cmd_, index_count, instance_count, first_index, base_vertex, 0);
+  }
+  void end_render_pass() override {
+    vkCmdEndRendering(cmd_);
+    label_.clear();
   }
   void dispatch(uint32_t x, uint32_t y, uint32_t z) override { vkCmdDispatch(cmd_, x, y, z); }
   void end_compute_pass() override { label_.clear(); }
@@ -108,6 +208,7 @@ class VulkanEncoder final : public rhi::CommandEncoder {
   VulkanDevice& device_;
   VkCommandBuffer cmd_;
   VulkanDevice::Pipeline pipeline_;
+  VkPipelineBindPoint bind_point_ = VK_PIPELINE_BIND_POINT_COMPUTE;
   std::string label_;
 };
 
@@ -123,9 +224,11 @@ VulkanDevice::VulkanDevice(Context& context) : context_(context) {
 VulkanDevice::~VulkanDevice() {
   const VkDevice d = context_.device();
   vkDeviceWaitIdle(d);
-  for (const Pipeline& p : pipelines_) {
-    if (p.pipeline) vkDestroyPipeline(d, p.pipeline, nullptr);
-    if (p.layout) vkDestroyPipelineLayout(d, p.layout, nullptr);
+  for (const auto* table : {&pipelines_, &render_pipelines_}) {
+    for (const Pipeline& p : *table) {
+      if (p.pipeline) vkDestroyPipeline(d, p.pipeline, nullptr);
+      if (p.layout) vkDestroyPipelineLayout(d, p.layout, nullptr);
+    }
   }
   for (const BindGroup& g : groups_) {
     if (g.pool) vkDestroyDescriptorPool(d, g.pool, nullptr);
@@ -139,8 +242,8 @@ VulkanDevice::~VulkanDevice() {
   for (VkSampler s : samplers_) {
     if (s) vkDestroySampler(d, s, nullptr);
   }
-  for (VkImageView v : views_) {
-    if (v) vkDestroyImageView(d, v, nullptr);
+  for (const View& v : views_) {
+    if (v.view) vkDestroyImageView(d, v.view, nullptr);
   }
   for (const Texture& t : textures_) {
     if (t.image) vkDestroyImage(d, t.image, nullptr);
@@ -218,7 +321,7 @@ rhi::TextureViewId VulkanDevice::create_view(rhi::TextureId id) {
   VkImageView view = VK_NULL_HANDLE;
   check(vkCreateImageView(context_.device(), &info, nullptr, &view), "vkCreateImageView");
   name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view), t.desc.label);
-  views_.push_back(view);
+  views_.push_back({view, id});
   return {uint32_t(views_.size() - 1)};
 }
 
@@ -303,7 +406,7 @@ rhi::BindGroupId VulkanDevice::create_bind_group(const rhi::BindGroupDesc& desc)
       const VkImageLayout layout_in_use = type == rhi::BindingType::sampled_texture
                                               ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
                                               : VK_IMAGE_LAYOUT_GENERAL;
-      images[i] = {VK_NULL_HANDLE, views_.at(e.view.id), layout_in_use};
+      images[i] = {VK_NULL_HANDLE, views_.at(e.view.id).view, layout_in_use};
       w.pImageInfo = &images[i];
     } else {
       buffers[i] = {buffers_.at(e.buffer.id).buffer, e.offset, e.size ? e.size : VK_WHOLE_SIZE};
@@ -316,14 +419,20 @@ rhi::BindGroupId VulkanDevice::create_bind_group(const rhi::BindGroupDesc& desc)
   return {uint32_t(groups_.size() - 1)};
 }
 
-rhi::ComputePipelineId VulkanDevice::create_compute_pipeline(const rhi::ComputePipelineDesc& desc) {
+VkPipelineLayout VulkanDevice::pipeline_layout(const std::vector<rhi::BindGroupLayoutId>& layouts) {
   std::vector<VkDescriptorSetLayout> sets;
-  for (rhi::BindGroupLayoutId l : desc.layouts) sets.push_back(layouts_.at(l.id).layout);
-  VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layout.setLayoutCount = uint32_t(sets.size());
-  layout.pSetLayouts = sets.data();
+  for (rhi::BindGroupLayoutId l : layouts) sets.push_back(layouts_.at(l.id).layout);
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = uint32_t(sets.size());
+  info.pSetLayouts = sets.data();
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  check(vkCreatePipelineLayout(context_.device(), &info, nullptr, &layout), "vkCreatePipelineLayout");
+  return layout;
+}
+
+rhi::ComputePipelineId VulkanDevice::create_compute_pipeline(const rhi::ComputePipelineDesc& desc) {
   Pipeline p;
-  check(vkCreatePipelineLayout(context_.device(), &layout, nullptr, &p.layout), "vkCreatePipelineLayout");
+  p.layout = pipeline_layout(desc.layouts);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -334,6 +443,97 @@ rhi::ComputePipelineId VulkanDevice::create_compute_pipeline(const rhi::ComputeP
   name(VK_OBJECT_TYPE_PIPELINE, uint64_t(p.pipeline), desc.label);
   pipelines_.push_back(p);
   return {uint32_t(pipelines_.size() - 1)};
+}
+
+rhi::RenderPipelineId VulkanDevice::create_render_pipeline(const rhi::RenderPipelineDesc& desc) {
+  std::vector<VkPipelineShaderStageCreateInfo> stages;
+  VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stage.module = modules_.at(desc.vertex_module.id);
+  stage.pName = desc.vertex_entry.c_str();
+  stages.push_back(stage);
+  if (desc.fragment_module) {
+    stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stage.module = modules_.at(desc.fragment_module.id);
+    stage.pName = desc.fragment_entry.c_str();
+    stages.push_back(stage);
+  }
+  std::vector<VkVertexInputBindingDescription> bindings;
+  std::vector<VkVertexInputAttributeDescription> attributes;
+  for (uint32_t b = 0; b < desc.vertex_buffers.size(); ++b) {
+    bindings.push_back({b, desc.vertex_buffers[b].stride, VK_VERTEX_INPUT_RATE_VERTEX});
+    for (const rhi::VertexAttribute& a : desc.vertex_buffers[b].attributes) {
+      attributes.push_back({a.location, b, vertex_format(a.format), a.offset});
+    }
+  }
+  VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  vertex_input.vertexBindingDescriptionCount = uint32_t(bindings.size());
+  vertex_input.pVertexBindingDescriptions = bindings.data();
+  vertex_input.vertexAttributeDescriptionCount = uint32_t(attributes.size());
+  vertex_input.pVertexAttributeDescriptions = attributes.data();
+  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = viewport.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = desc.cull == rhi::CullMode::back    ? VK_CULL_MODE_BACK_BIT
+                    : desc.cull == rhi::CullMode::front ? VK_CULL_MODE_FRONT_BIT
+                                                        : VK_CULL_MODE_NONE;
+  raster.frontFace = desc.front_counter_clockwise ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE;
+  raster.depthBiasEnable = desc.depth.bias_constant != 0 || desc.depth.bias_slope != 0;
+  raster.depthBiasConstantFactor = desc.depth.bias_constant;
+  raster.depthBiasSlopeFactor = desc.depth.bias_slope;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = desc.depth.format != Format::undefined;
+  depth.depthWriteEnable = depth.depthTestEnable && desc.depth.write;
+  depth.depthCompareOp = compare_op(desc.depth.compare);
+  std::vector<VkPipelineColorBlendAttachmentState> blends;
+  std::vector<VkFormat> color_formats;
+  for (const rhi::ColorTargetState& c : desc.colors) {
+    VkPipelineColorBlendAttachmentState b{};
+    b.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    if (c.blend == rhi::BlendMode::additive) {
+      b.blendEnable = VK_TRUE;
+      b.srcColorBlendFactor = b.dstColorBlendFactor = b.srcAlphaBlendFactor = b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+      b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
+    blends.push_back(b);
+    color_formats.push_back(to_vk(c.format));
+  }
+  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blend.attachmentCount = uint32_t(blends.size());
+  blend.pAttachments = blends.data();
+  const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = 2;
+  dynamic.pDynamicStates = dynamic_states;
+  VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+  rendering.colorAttachmentCount = uint32_t(color_formats.size());
+  rendering.pColorAttachmentFormats = color_formats.data();
+  rendering.depthAttachmentFormat = to_vk(desc.depth.format);
+
+  Pipeline p;
+  p.layout = pipeline_layout(desc.layouts);
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
+  info.stageCount = uint32_t(stages.size());
+  info.pStages = stages.data();
+  info.pVertexInputState = &vertex_input;
+  info.pInputAssemblyState = &assembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = p.layout;
+  check(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline), "vkCreateGraphicsPipelines");
+  name(VK_OBJECT_TYPE_PIPELINE, uint64_t(p.pipeline), desc.label);
+  render_pipelines_.push_back(p);
+  return {uint32_t(render_pipelines_.size() - 1)};
 }
 
 void VulkanDevice::destroy(rhi::BufferId id) {

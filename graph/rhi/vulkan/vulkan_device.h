@@ -28,6 +28,7 @@ class VulkanDevice final : public rhi::Device {
   rhi::BindGroupLayoutId create_bind_group_layout(const rhi::BindGroupLayoutDesc& desc) override;
   rhi::BindGroupId create_bind_group(const rhi::BindGroupDesc& desc) override;
   rhi::ComputePipelineId create_compute_pipeline(const rhi::ComputePipelineDesc& desc) override;
+  rhi::RenderPipelineId create_render_pipeline(const rhi::RenderPipelineDesc& desc) override;
   void destroy(rhi::BufferId buffer) override;
   void destroy(rhi::TextureId texture) override;
   void write_buffer(rhi::BufferId buffer, uint64_t offset, std::span<const std::byte> data) override;
@@ -54,7 +55,13 @@ class VulkanDevice final : public rhi::Device {
   };
   const Buffer& buffer(rhi::BufferId id) const { return buffers_.at(id.id); }
   const Texture& texture(rhi::TextureId id) const { return textures_.at(id.id); }
+  struct View {
+    VkImageView view = VK_NULL_HANDLE;
+    rhi::TextureId texture;
+  };
   const Pipeline& pipeline(rhi::ComputePipelineId id) const { return pipelines_.at(id.id); }
+  const Pipeline& pipeline(rhi::RenderPipelineId id) const { return render_pipelines_.at(id.id); }
+  const View& view(rhi::TextureViewId id) const { return views_.at(id.id); }
   VkDescriptorSet bind_group(rhi::BindGroupId id) const { return groups_.at(id.id).set; }
   Context& context() const { return context_; }
 
@@ -68,6 +75,7 @@ class VulkanDevice final : public rhi::Device {
     std::vector<rhi::LayoutEntry> entries;
   };
   VkDeviceMemory allocate(const VkMemoryRequirements& req, bool host_visible, const std::string& label);
+  VkPipelineLayout pipeline_layout(const std::vector<rhi::BindGroupLayoutId>& layouts);
   void name(VkObjectType type, uint64_t handle, const std::string& label) const;
 
   Context& context_;
@@ -75,12 +83,13 @@ class VulkanDevice final : public rhi::Device {
   // Index 0 of every table is the "none" handle.
   std::vector<Buffer> buffers_{1};
   std::vector<Texture> textures_{1};
-  std::vector<VkImageView> views_{1};
+  std::vector<View> views_{1};
   std::vector<VkSampler> samplers_{1};
   std::vector<VkShaderModule> modules_{1};
   std::vector<Layout> layouts_{1};
   std::vector<BindGroup> groups_{1};
   std::vector<Pipeline> pipelines_{1};
+  std::vector<Pipeline> render_pipelines_{1};
 };
 
 }  // namespace volgraph::vulkan
