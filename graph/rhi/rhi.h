@@ -36,6 +36,7 @@ using BindGroupLayoutId = Handle<struct BindGroupLayoutTag>;
 using BindGroupId = Handle<struct BindGroupTag>;
 using ComputePipelineId = Handle<struct ComputePipelineTag>;
 using RenderPipelineId = Handle<struct RenderPipelineTag>;
+using QuerySetId = Handle<struct QuerySetTag>;
 
 namespace buffer_usage {  // as WGPUBufferUsage
 constexpr uint32_t copy_src = 1u << 0;
@@ -225,6 +226,10 @@ class CommandEncoder {
   // For the pipeline set last (compute or render).
   virtual void set_bind_group(uint32_t index, BindGroupId group) = 0;
 
+  // GPU time stamps (when the device has them: Device::has_timestamps()), written when
+  // all work recorded before has finished; Device::read_timestamps turns them into ns.
+  virtual void write_timestamp(QuerySetId queries, uint32_t index) = 0;
+
   // Whole-texture copies, rows tightly packed in the buffer.
   virtual void copy_buffer_to_texture(BufferId source, uint64_t offset, TextureId destination) = 0;
   virtual void copy_texture_to_buffer(TextureId source, BufferId destination, uint64_t offset) = 0;
@@ -244,6 +249,11 @@ class Device {
   virtual BindGroupId create_bind_group(const BindGroupDesc& desc) = 0;
   virtual ComputePipelineId create_compute_pipeline(const ComputePipelineDesc& desc) = 0;
   virtual RenderPipelineId create_render_pipeline(const RenderPipelineDesc& desc) = 0;
+  virtual bool has_timestamps() const = 0;
+  virtual QuerySetId create_timestamp_queries(std::string_view label, uint32_t count) = 0;
+  // Nanoseconds of each time stamp in [first, first + count), from an arbitrary origin
+  // (waits for everything submitted).
+  virtual std::vector<double> read_timestamps(QuerySetId queries, uint32_t first, uint32_t count) = 0;
   // Frees the memory now (as WebGPU's destroy()); the handle must not be used again.
   virtual void destroy(BufferId buffer) = 0;
   virtual void destroy(TextureId texture) = 0;

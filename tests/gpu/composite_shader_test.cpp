@@ -28,7 +28,9 @@ std::span<const std::byte> bytes_of(const std::vector<T>& v) {
 }
 
 // One run of the shader through the backend interface; returns the frame's texels.
-std::vector<float> composite(rhi::Device& device, const std::vector<float>& radiance, float exposure, shading::ToneMap op) {
+// With `timestamps`, time stamps 0 and 1 bracket the dispatch.
+std::vector<float> composite(rhi::Device& device, const std::vector<float>& radiance, float exposure, shading::ToneMap op,
+                             rhi::QuerySetId timestamps = {}) {
   using namespace rhi;
   const TextureId input = device.create_texture({"radiance", ResourceKind::texture2d, Format::rgba32_float,
                                                  {kWidth, kHeight, 1}, texture_usage::sampled | texture_usage::copy_dst});
@@ -68,11 +70,13 @@ std::vector<float> composite(rhi::Device& device, const std::vector<float>& radi
   const AccessState copied = access_state(Usage::copy_src, PassKind::transfer, ResourceKind::texture2d);
   const ResourceBarrier before[] = {{input, {}, Device::written_texture_state(), sampled}, {frame, {}, {}, written}};
   encoder->barrier(before);
+  if (timestamps) encoder->write_timestamp(timestamps, 0);
   encoder->begin_compute_pass("composite");
   encoder->set_pipeline(pipeline);
   encoder->set_bind_group(0, group);
   encoder->dispatch((kWidth + 7) / 8, (kHeight + 7) / 8);
   encoder->end_compute_pass();
+  if (timestamps) encoder->write_timestamp(timestamps, 1);
   const ResourceBarrier after[] = {{frame, {}, written, copied}};
   encoder->barrier(after);
   encoder->copy_texture_to_buffer(frame, readback, 0);
@@ -116,5 +120,21 @@ TEST(CompositeShader, MatchesTheCpuTwinForEveryToneMap) {
   const auto messages = context->take_validation_messages();
   EXPECT_TRUE(messages.empty()) << joined(messages);
 }
+TEST(CompositeShader, TimestampsBracketTheDispatch) {
+  auto context = Context::create({.validation = true});
+  VulkanDevice device(*context);
+  ASSERT_TRUE(device.has_timestamps());
+  const rhi::QuerySetId queries = device.create_timestamp_queries("composite", 2);
+  const std::vector<float> radiance(size_t(kWidth) * kHeight * 4, 1.0f);
+  for (int frame = 0; frame < 3; ++frame) {  // the query set is reusable frame after frame
+    composite(device, radiance, 0.0f, shading::ToneMap::aces, queries);
+    const std::vector<double> ns = device.read_timestamps(queries, 0, 2);
+    EXPECT_GT(ns[1], ns[0]) << "frame " << frame;
+    EXPECT_LT(ns[1] - ns[0], 1e9) << "a 13x11 dispatch under a second";
+  }
+  const auto messages = context->take_validation_messages();
+  EXPECT_TRUE(messages.empty()) << joined(messages);
+}
+
 }  // namespace
 }  // namespace volgraph::vulkan

@@ -193,6 +193,10 @@ class VulkanEncoder final : public rhi::CommandEncoder {
   void dispatch(uint32_t x, uint32_t y, uint32_t z) override { vkCmdDispatch(cmd_, x, y, z); }
   void end_compute_pass() override { label_.clear(); }
 
+  void write_timestamp(rhi::QuerySetId queries, uint32_t index) override {
+    vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, device_.query_pool(queries), index);
+  }
+
   void copy_buffer_to_texture(rhi::BufferId source, uint64_t offset, rhi::TextureId destination) override {
     const auto& t = device_.texture(destination);
     const VkBufferImageCopy region = whole_texture(t.desc, offset);
@@ -229,6 +233,9 @@ VulkanDevice::~VulkanDevice() {
       if (p.pipeline) vkDestroyPipeline(d, p.pipeline, nullptr);
       if (p.layout) vkDestroyPipelineLayout(d, p.layout, nullptr);
     }
+  }
+  for (VkQueryPool q : query_pools_) {
+    if (q) vkDestroyQueryPool(d, q, nullptr);
   }
   for (const BindGroup& g : groups_) {
     if (g.pool) vkDestroyDescriptorPool(d, g.pool, nullptr);
@@ -534,6 +541,30 @@ rhi::RenderPipelineId VulkanDevice::create_render_pipeline(const rhi::RenderPipe
   name(VK_OBJECT_TYPE_PIPELINE, uint64_t(p.pipeline), desc.label);
   render_pipelines_.push_back(p);
   return {uint32_t(render_pipelines_.size() - 1)};
+}
+
+rhi::QuerySetId VulkanDevice::create_timestamp_queries(std::string_view label, uint32_t count) {
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  info.queryCount = count;
+  VkQueryPool pool = VK_NULL_HANDLE;
+  check(vkCreateQueryPool(context_.device(), &info, nullptr, &pool), "vkCreateQueryPool");
+  vkResetQueryPool(context_.device(), pool, 0, count);  // host reset (Vulkan 1.2 hostQueryReset)
+  name(VK_OBJECT_TYPE_QUERY_POOL, uint64_t(pool), std::string(label));
+  query_pools_.push_back(pool);
+  return {uint32_t(query_pools_.size() - 1)};
+}
+
+std::vector<double> VulkanDevice::read_timestamps(rhi::QuerySetId id, uint32_t first, uint32_t count) {
+  check(vkQueueWaitIdle(context_.queue()), "vkQueueWaitIdle");
+  std::vector<uint64_t> ticks(count);
+  check(vkGetQueryPoolResults(context_.device(), query_pools_.at(id.id), first, count, count * sizeof(uint64_t),
+                              ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+        "vkGetQueryPoolResults");
+  vkResetQueryPool(context_.device(), query_pools_.at(id.id), first, count);  // ready for the next frame
+  std::vector<double> ns(count);
+  for (uint32_t i = 0; i < count; ++i) ns[i] = double(ticks[i]) * double(context_.timestamp_period_ns());
+  return ns;
 }
 
 void VulkanDevice::destroy(rhi::BufferId id) {

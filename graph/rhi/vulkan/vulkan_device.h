@@ -29,6 +29,10 @@ class VulkanDevice final : public rhi::Device {
   rhi::BindGroupId create_bind_group(const rhi::BindGroupDesc& desc) override;
   rhi::ComputePipelineId create_compute_pipeline(const rhi::ComputePipelineDesc& desc) override;
   rhi::RenderPipelineId create_render_pipeline(const rhi::RenderPipelineDesc& desc) override;
+  bool has_timestamps() const override { return context_.timestamp_period_ns() > 0; }
+  rhi::QuerySetId create_timestamp_queries(std::string_view label, uint32_t count) override;
+  std::vector<double> read_timestamps(rhi::QuerySetId queries, uint32_t first, uint32_t count) override;
+  VkQueryPool query_pool(rhi::QuerySetId id) const { return query_pools_.at(id.id); }
   void destroy(rhi::BufferId buffer) override;
   void destroy(rhi::TextureId texture) override;
   void write_buffer(rhi::BufferId buffer, uint64_t offset, std::span<const std::byte> data) override;
@@ -90,6 +94,7 @@ class VulkanDevice final : public rhi::Device {
   std::vector<BindGroup> groups_{1};
   std::vector<Pipeline> pipelines_{1};
   std::vector<Pipeline> render_pipelines_{1};
+  std::vector<VkQueryPool> query_pools_{1};
 };
 
 }  // namespace volgraph::vulkan
