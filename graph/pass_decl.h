@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -15,6 +16,7 @@
 namespace volgraph {
 
 struct Scene;
+class PassExecution;
 
 enum class ParamType : uint8_t { boolean, integer, number, vec3, choice };
 
@@ -69,6 +71,9 @@ struct PassDecl;
 using SceneCheck = std::vector<ParamProblem> (*)(const PassDecl& decl, const Scene& scene,
                                                  const std::vector<ParamValue>& params);
 
+// Makes what a pass of this type does on the GPU (graph/execute/pass_execution.h).
+using MakeExecution = std::unique_ptr<PassExecution> (*)();
+
 struct PassDecl {
   std::string name;
   PassKind kind = PassKind::compute;
@@ -77,7 +82,8 @@ struct PassDecl {
   std::vector<ParamDecl> params;
   std::vector<SlotDecl> slots;
   SceneFeatures needs = 0;
-  SceneCheck check_scene = nullptr;  // optional
+  SceneCheck check_scene = nullptr;      // optional
+  MakeExecution make_execution = nullptr;  // none: the pass cannot run yet
 
   int variant_index(std::string_view variant) const;  // -1 when unknown
   int param_index(std::string_view param) const;

@@ -1,9 +1,69 @@
 // Composite: exposure and tone mapping of linear radiance into the frame's output.
 // Variants: none (linear, for .pfm/.exr and exact tests), ACES (Narkowicz 2015 fit),
-// Reinhard (Reinhard et al. 2002, eq. 3).
+// Reinhard (Reinhard et al. 2002, eq. 3). Shader: shaders/composite.comp.
+#include "graph/execute/pass_execution.h"
 #include "passes/passes.h"
+#include "passes/shading/tonemap.h"
+#include "shaders/shader_library.h"
 
 namespace volgraph {
+namespace {
+
+shading::ToneMap tone_map_of(std::string_view variant) {
+  if (variant == "aces") return shading::ToneMap::aces;
+  if (variant == "reinhard") return shading::ToneMap::reinhard;
+  return shading::ToneMap::none;
+}
+
+class CompositeExecution final : public PassExecution {
+ public:
+  void record(PassContext& c) override {
+    if (!pipeline_) prepare(c);
+    const Extent size = c.desc("output").extent;
+    struct {
+      uint32_t size[2];
+      float exposure_ev;
+      int32_t tone_map_op;
+    } block{{size.width, size.height}, float(std::get<double>(c.param("exposure"))), int32_t(tone_map_of(c.variant()))};
+    c.device.write_buffer(params_, 0, std::as_bytes(std::span(&block, 1)));
+    c.encoder.begin_compute_pass(c.graph_pass().name);
+    c.encoder.set_pipeline(pipeline_);
+    c.encoder.set_bind_group(0, group_);
+    c.encoder.dispatch((size.width + 7) / 8, (size.height + 7) / 8);
+    c.encoder.end_compute_pass();
+  }
+
+ private:
+  // Pipeline and bindings, once: the graph's resources keep their handles for the
+  // executor's lifetime.
+  void prepare(PassContext& c) {
+    using namespace rhi;
+    const BindGroupLayoutId layout = c.device.create_bind_group_layout(
+        {"composite", {{0, shader_stage::compute, BindingType::sampled_texture},
+                       {1, shader_stage::compute, BindingType::sampler},
+                       {2, shader_stage::compute, BindingType::storage_texture, ResourceKind::texture2d, Format::rgba32_float},
+                       {3, shader_stage::compute, BindingType::uniform_buffer}}});
+    params_ = c.device.create_buffer({"composite params", 16, buffer_usage::uniform | buffer_usage::copy_dst});
+    BindGroupEntry color, sampler, frame, params;
+    color.binding = 0;
+    color.view = c.view("color");
+    sampler.binding = 1;
+    sampler.sampler = c.device.create_sampler({"nearest"});
+    frame.binding = 2;
+    frame.view = c.view("output");
+    params.binding = 3;
+    params.buffer = params_;
+    group_ = c.device.create_bind_group({"composite", layout, {color, sampler, frame, params}});
+    pipeline_ = c.device.create_compute_pipeline(
+        {"composite", c.device.create_shader_module("composite.comp", shader_spirv("composite.comp")), "main", {layout}});
+  }
+
+  rhi::ComputePipelineId pipeline_;
+  rhi::BindGroupId group_;
+  rhi::BufferId params_;
+};
+
+}  // namespace
 
 PassDecl composite_pass() {
   PassDecl d;
@@ -18,13 +78,12 @@ PassDecl composite_pass() {
   d.params = {
       param_number("exposure", 0, -20, 20, "EV", "scale by 2^exposure before the tone map"),
   };
-  SlotDecl out = slot_out("output", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float,
-                          SizeSpec::of_output(), "the frame: linear or tone-mapped, before sRGB encoding");
-  out.format_overridable = true;
   d.slots = {
       slot_in("color", ResourceKind::texture2d, Usage::sampled, "linear radiance"),
-      out,
+      slot_out("output", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float, SizeSpec::of_output(),
+               "the frame: linear or tone-mapped, before sRGB encoding"),
   };
+  d.make_execution = [] { return std::unique_ptr<PassExecution>(new CompositeExecution()); };
   return d;
 }
 

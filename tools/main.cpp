@@ -7,7 +7,14 @@
 #include <string>
 #include <vector>
 
+#include <chrono>
+#include <fstream>
+#include <sstream>
+
 #include "graph/config/config.h"
+#include "graph/execute/executor.h"
+#include "graph/rhi/vulkan/vulkan_device.h"
+#include "tools/image_io.h"
 #include "graph/plan_report.h"
 #include "graph/rhi/device_error.h"
 #include "graph/rhi/vulkan/context.h"
@@ -23,7 +30,7 @@ const char* kUsage = R"(usage: volgraph COMMAND [options]
 commands:
   validate CONFIG              check a config without a GPU (exit 0 valid, 2 invalid)
   plan CONFIG [--json|--dot]   the compiled plan: order, culling, lifetimes, memory, barriers
-  render CONFIG -o OUT         render to .png, .exr or .pfm (arrives with the Vulkan backend)
+  render CONFIG -o OUT         render to .png (sRGB 8-bit), .exr or .pfm (linear float)
   passes                       the pass types with their variants, parameters and slots
   devices                      the Vulkan devices (index for --device N; lavapipe is the default)
   test                         run the whole test suite (handled by tools/volgraph)
@@ -35,6 +42,14 @@ options (plan, validate, render):
   --no-cull                    keep every pass (debug)
   --no-alias                   give every transient resource its own memory (debug)
   --serialize                  a full barrier between every two passes (debug)
+
+options (render):
+  --backend vulkan|webgpu      default vulkan (webgpu arrives with issue 4)
+  --device N                   a Vulkan device by index (volgraph devices); default lavapipe
+  --frames N                   render N frames, write the last
+  --timings                    per-pass GPU and CPU times of the last frame, JSON on stdout
+  --timings-out FILE           the same JSON to FILE
+  --validation                 run under the Khronos validation layer (synchronization too)
 )";
 
 struct Args {
@@ -42,6 +57,11 @@ struct Args {
   std::string config;
   std::string output;
   bool json = false, dot = false;
+  std::string backend = "vulkan";
+  int device = -1;
+  int frames = 1;
+  bool timings = false, validation = false;
+  std::string timings_out;
   CompileOptions compile;
   Overrides overrides;
 };
@@ -88,6 +108,23 @@ std::optional<int> parse(int argc, char** argv, Args& args) {
       const auto v = value(w.c_str());
       if (!v) return kBadInput;
       (w == "--set" ? args.overrides.sets : args.overrides.variants).push_back(*v);
+    } else if (w == "--backend" || w == "--timings-out") {
+      const auto v = value(w.c_str());
+      if (!v) return kBadInput;
+      (w == "--backend" ? args.backend : args.timings_out) = *v;
+      if (w == "--backend" && *v != "vulkan" && *v != "webgpu") return bad_usage("--backend expects vulkan or webgpu, got \"" + *v + "\"");
+    } else if (w == "--device" || w == "--frames") {
+      const auto v = value(w.c_str());
+      if (!v) return kBadInput;
+      char* end = nullptr;
+      const long n = std::strtol(v->c_str(), &end, 10);
+      const long low = w == "--device" ? 0 : 1;
+      if (*end || n < low || n > 100000) return bad_usage(w + " expects a whole number ≥ " + std::to_string(low) + ", got \"" + *v + "\"");
+      (w == "--device" ? args.device : args.frames) = int(n);
+    } else if (w == "--timings") {
+      args.timings = true;
+    } else if (w == "--validation") {
+      args.validation = true;
     } else if (w == "-o" || w == "--output") {
       const auto v = value("-o");
       if (!v) return kBadInput;
@@ -179,6 +216,49 @@ int print_devices() {
   return kOk;
 }
 
+std::string timings_json(const std::vector<PassTiming>& timings, const rhi::AdapterInfo& adapter, int frames) {
+  std::ostringstream o;
+  o << "{\n  \"device\": \"" << adapter.device << "\",\n  \"backend\": \"" << adapter.backend
+    << "\",\n  \"frames\": " << frames << ",\n";
+  if (adapter.device.find("llvmpipe") != std::string::npos) {
+    o << "  \"note\": \"lavapipe (CPU): GPU times are the CPU running the GPU's work\",\n";
+  }
+  o << "  \"passes\": [\n";
+  double gpu = 0, cpu = 0;
+  for (size_t i = 0; i < timings.size(); ++i) {
+    const PassTiming& t = timings[i];
+    gpu += t.gpu_ms;
+    cpu += t.cpu_ms;
+    o << "    {\"pass\": \"" << t.pass << "\", \"type\": \"" << t.type << "\", \"gpu_ms\": " << t.gpu_ms
+      << ", \"cpu_ms\": " << t.cpu_ms << "}" << (i + 1 < timings.size() ? "," : "") << "\n";
+  }
+  o << "  ],\n  \"total_gpu_ms\": " << gpu << ",\n  \"total_cpu_ms\": " << cpu << "\n}\n";
+  return o.str();
+}
+
+int render(const Args& args, const LoadedConfig& loaded) {
+  if (args.output.empty()) return bad_usage("render needs -o OUT (.png, .exr or .pfm)");
+  if (!image_format_for(args.output)) {
+    throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
+  }
+  if (args.backend == "webgpu") {
+    std::cerr << "volgraph render: the WebGPU backend arrives with issue 4; use --backend vulkan\n";
+    return kFailure;
+  }
+  auto context = vulkan::Context::create({.validation = args.validation, .device_index = args.device});
+  vulkan::VulkanDevice device(*context);
+  Executor executor(device, loaded.graph, &loaded.config.scene, args.compile);
+  for (int f = 0; f < args.frames; ++f) executor.run_frame();
+  const Texels texels = executor.read_output(0);
+  write_image(args.output, Image{texels.width, texels.height, texels.rgba});
+  const std::string timings = timings_json(executor.timings(), device.info(), args.frames);
+  if (args.timings) std::cout << timings;
+  if (!args.timings_out.empty()) std::ofstream(args.timings_out) << timings;
+  const auto messages = context->take_validation_messages();
+  for (const std::string& m : messages) std::cerr << "validation: " << m << "\n";
+  return messages.empty() ? kOk : kFailure;
+}
+
 int run(const Args& args, const PassRegistry& registry) {
   if (args.command == "passes") return print_passes(registry);
   if (args.command == "devices") return print_devices();
@@ -205,10 +285,7 @@ int run(const Args& args, const PassRegistry& registry) {
                              : plan_text(loaded.graph, plan, context));
     return kOk;
   }
-  std::cerr << "volgraph render: the config is valid, but rendering arrives with the Vulkan backend (issue 3); "
-               "no image was written. 'volgraph plan "
-            << args.config << "' shows what the render will run.\n";
-  return kFailure;
+  return render(args, loaded);
 }
 
 }  // namespace
@@ -226,7 +303,7 @@ int main(int argc, char** argv) {
     std::cerr << e.what() << "\n";
     return kBadInput;
   } catch (const DeviceError& e) {
-    std::cerr << "volgraph: device error: " << e.what() << "\n";
+    std::cerr << "volgraph: " << (e.kind == DeviceError::Kind::unsupported ? "" : "device error: ") << e.what() << "\n";
     return kFailure;
   } catch (const std::exception& e) {
     std::cerr << "volgraph: internal error: " << e.what() << "\n";

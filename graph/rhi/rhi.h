@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "graph/access.h"
+#include "graph/plan.h"
 #include "graph/resource.h"
 
 namespace volgraph::rhi {
@@ -187,7 +188,8 @@ struct RenderPassDesc {
   DepthAttachment depth;  // view none: no depth
 };
 
-// A transition of one texture or buffer (not both), in the plan's terms.
+// A transition of one texture or buffer, in the plan's terms; neither: all memory
+// (the plan's --serialize barriers).
 struct ResourceBarrier {
   TextureId texture;
   BufferId buffer;
@@ -233,6 +235,19 @@ class CommandEncoder {
   // Whole-texture copies, rows tightly packed in the buffer.
   virtual void copy_buffer_to_texture(BufferId source, uint64_t offset, TextureId destination) = 0;
   virtual void copy_texture_to_buffer(TextureId source, BufferId destination, uint64_t offset) = 0;
+  virtual void copy_texture_to_texture(TextureId source, TextureId destination) = 0;  // same size and format
+};
+
+// The graph's resources on a device: first the driver's requirements for compile(),
+// then memory as the plan says (Vulkan: placed in the plan's heaps; WebGPU: pooled).
+class GraphResourceSet {
+ public:
+  virtual ~GraphResourceSet() = default;
+  virtual RequirementsFn requirements() const = 0;
+  virtual void bind(const Plan& plan) = 0;
+  virtual TextureId texture(uint32_t resource) const = 0;
+  virtual TextureViewId view(uint32_t resource) const = 0;  // none for copy-only textures
+  virtual BufferId buffer(uint32_t resource) const = 0;
 };
 
 class Device {
@@ -263,6 +278,8 @@ class Device {
   virtual void write_buffer(BufferId buffer, uint64_t offset, std::span<const std::byte> data) = 0;
   virtual void write_texture(TextureId texture, std::span<const std::byte> texels) = 0;
   static AccessState written_texture_state() { return {stage::copy, access::transfer_write, Layout::transfer_dst}; }
+
+  virtual std::unique_ptr<GraphResourceSet> create_graph_resources(const Graph& graph) = 0;
 
   virtual std::unique_ptr<CommandEncoder> create_command_encoder(std::string_view label) = 0;
   // Runs the commands and waits for them.

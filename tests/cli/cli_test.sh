@@ -2,7 +2,8 @@
 # Command-line behaviour, one case per call:
 #   cli_test.sh VOLGRAPH good CONFIG      validate and plan (text, --json, --dot through graphviz) succeed
 #   cli_test.sh VOLGRAPH bad CONFIG       exit 2, one diagnostic naming file, line and pointer, nothing on stdout
-#   cli_test.sh VOLGRAPH render CONFIG    render says it is not there yet and writes no file
+#   cli_test.sh VOLGRAPH render CONFIG    render writes a PFM, or names the pass with no GPU implementation
+#                                         yet (exit 1) and writes nothing
 #   cli_test.sh VOLGRAPH usage            bad command lines exit 2 with one message
 set -uo pipefail
 volgraph=$1 mode=$2 config=${3:-}
@@ -37,20 +38,28 @@ got: $(cat "$tmp/err")"
     [ $? -eq 2 ] || fail "plan does not exit 2 for $config"
     ;;
   render)
-    "$volgraph" render "$config" -o "$tmp/out.png" >"$tmp/out" 2>"$tmp/err"
+    "$volgraph" render "$config" -o "$tmp/out.pfm" --timings >"$tmp/out" 2>"$tmp/err"
     code=$?
-    [ "$code" -eq 1 ] || fail "render exit $code (expected 1 until the Vulkan backend lands)"
-    grep -q "arrives with the Vulkan backend" "$tmp/err" || fail "render message: $(cat "$tmp/err")"
-    [ ! -e "$tmp/out.png" ] || fail "render wrote a file"
+    if [ "$code" -eq 0 ]; then
+      [ "$(head -c 2 "$tmp/out.pfm")" = "PF" ] || fail "render wrote no PFM"
+      grep -q '"gpu_ms"' "$tmp/out" || fail "--timings printed: $(cat "$tmp/out")"
+    else
+      [ "$code" -eq 1 ] || fail "render exit $code; stderr: $(cat "$tmp/err")"
+      grep -q "has no GPU implementation yet" "$tmp/err" || fail "render message: $(cat "$tmp/err")"
+      [ ! -e "$tmp/out.pfm" ] || fail "render wrote a file though it failed"
+    fi
+    [ -z "$(ls "$tmp" | grep tmp-)" ] || fail "a temporary file was left"
     ;;
   usage)
     for args in "" "frobnicate x.json" "plan" "plan $config --bogus" "plan $config --size 0x10" \
-                "plan $config --size 20000x10" "plan $config --set"; do
+                "plan $config --size 20000x10" "plan $config --set" "render $config" "render $config -o $tmp/x.jpg" \
+                "render $config -o $tmp/x.png --frames 0" "render $config -o $tmp/x.png --backend metal"; do
       # shellcheck disable=SC2086
       "$volgraph" $args >"$tmp/out" 2>"$tmp/err"
       code=$?
       [ "$code" -eq 2 ] || fail "'volgraph $args' exit $code (expected 2)"
     done
+    [ -z "$(ls "$tmp" | grep -v -e '^out$' -e '^err$')" ] || fail "bad command lines left files: $(ls "$tmp")"
     "$volgraph" --help >"$tmp/out" || fail "--help"
     grep -q "usage: volgraph" "$tmp/out" || fail "--help text"
     "$volgraph" plan /no/such.json 2>"$tmp/err"

@@ -222,9 +222,18 @@ TEST_F(Loader, UnknownFormatSuggests) {
 }
 
 TEST_F(Loader, FormatNotStorageCapable) {
-  one_error(replace(kValid, "\"inputs\": { \"color\": \"lit.color\" }",
-                    "\"inputs\": { \"color\": \"lit.color\" }, \"outputs\": { \"output\": { \"format\": \"rgba8_srgb\" } }"),
-            "/graph/passes/2/outputs/output", "not a storage format");
+  // A pass type whose storage output's format may be chosen.
+  PassDecl writer;
+  writer.name = "storage_writer";
+  writer.variants = {{"default", ""}};
+  SlotDecl out = slot_out("out", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(), "");
+  out.format_overridable = true;
+  writer.slots = {out};
+  registry_.add(writer);
+  one_error(replace(kValid, "{ \"name\": \"final\"",
+                    "{ \"name\": \"w\", \"type\": \"storage_writer\", \"outputs\": { \"out\": { \"format\": \"rgba8_srgb\" } } },\n"
+                    "      { \"name\": \"final\""),
+            "/graph/passes/2/outputs/out", "not a storage format");
 }
 
 TEST_F(Loader, FixedFormatCannotBeOverridden) {

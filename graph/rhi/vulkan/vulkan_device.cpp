@@ -5,6 +5,7 @@
 
 #include "graph/rhi/vulkan/barriers.h"
 #include "graph/rhi/vulkan/formats.h"
+#include "graph/rhi/vulkan/graph_resources.h"
 
 namespace volgraph::vulkan {
 namespace {
@@ -102,15 +103,21 @@ class VulkanEncoder final : public rhi::CommandEncoder {
   void barrier(std::span<const rhi::ResourceBarrier> barriers) override {
     std::vector<VkImageMemoryBarrier2> images;
     std::vector<VkBufferMemoryBarrier2> buffers;
+    std::vector<VkMemoryBarrier2> globals;
     for (const rhi::ResourceBarrier& b : barriers) {
       if (b.texture) {
         const auto& t = device_.texture(b.texture);
         images.push_back(image_barrier(t.image, t.desc.format, b.from, b.to));
       } else if (b.buffer) {
         buffers.push_back(buffer_barrier(device_.buffer(b.buffer).buffer, b.from, b.to));
+      } else {
+        globals.push_back({VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, to_vk_stages(b.from.stages),
+                           to_vk_access(b.from.access), to_vk_stages(b.to.stages), to_vk_access(b.to.access)});
       }
     }
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.memoryBarrierCount = uint32_t(globals.size());
+    dep.pMemoryBarriers = globals.data();
     dep.imageMemoryBarrierCount = uint32_t(images.size());
     dep.pImageMemoryBarriers = images.data();
     dep.bufferMemoryBarrierCount = uint32_t(buffers.size());
@@ -202,6 +209,15 @@ class VulkanEncoder final : public rhi::CommandEncoder {
     const VkBufferImageCopy region = whole_texture(t.desc, offset);
     vkCmdCopyBufferToImage(cmd_, device_.buffer(source).buffer, t.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   }
+  void copy_texture_to_texture(rhi::TextureId source, rhi::TextureId destination) override {
+    const auto& s = device_.texture(source);
+    const auto& d = device_.texture(destination);
+    const VkImageAspectFlags aspect = aspect_of(s.desc.format);
+    VkImageCopy region{{aspect, 0, 0, 1}, {}, {aspect, 0, 0, 1}, {},
+                       {s.desc.size.width, s.desc.size.height, s.desc.kind == ResourceKind::texture3d ? s.desc.size.depth : 1}};
+    vkCmdCopyImage(cmd_, s.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                   &region);
+  }
   void copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset) override {
     const auto& t = device_.texture(source);
     const VkBufferImageCopy region = whole_texture(t.desc, offset);
@@ -250,14 +266,14 @@ VulkanDevice::~VulkanDevice() {
     if (s) vkDestroySampler(d, s, nullptr);
   }
   for (const View& v : views_) {
-    if (v.view) vkDestroyImageView(d, v.view, nullptr);
+    if (v.view && v.owned) vkDestroyImageView(d, v.view, nullptr);
   }
   for (const Texture& t : textures_) {
-    if (t.image) vkDestroyImage(d, t.image, nullptr);
+    if (t.image && t.owned) vkDestroyImage(d, t.image, nullptr);
     if (t.memory) vkFreeMemory(d, t.memory, nullptr);
   }
   for (const Buffer& b : buffers_) {
-    if (b.buffer) vkDestroyBuffer(d, b.buffer, nullptr);
+    if (b.buffer && b.owned) vkDestroyBuffer(d, b.buffer, nullptr);
     if (b.memory) vkFreeMemory(d, b.memory, nullptr);
   }
   vkDestroyCommandPool(d, pool_, nullptr);
@@ -599,6 +615,66 @@ void VulkanDevice::write_texture(rhi::TextureId id, std::span<const std::byte> t
   encoder->copy_buffer_to_texture(staging, 0, id);
   submit(std::move(encoder));
   destroy(staging);
+}
+
+rhi::TextureId VulkanDevice::import_texture(VkImage image, const rhi::TextureDesc& desc) {
+  textures_.push_back({image, VK_NULL_HANDLE, desc, false});
+  return {uint32_t(textures_.size() - 1)};
+}
+
+rhi::TextureViewId VulkanDevice::import_view(VkImageView view, rhi::TextureId texture) {
+  views_.push_back({view, texture, false});
+  return {uint32_t(views_.size() - 1)};
+}
+
+rhi::BufferId VulkanDevice::import_buffer(VkBuffer buffer, uint64_t size) {
+  buffers_.push_back({buffer, VK_NULL_HANDLE, size, nullptr, false});
+  return {uint32_t(buffers_.size() - 1)};
+}
+
+namespace {
+
+// GraphResources (placed in the plan's heaps) behind the interface's handles.
+class VulkanGraphResources final : public rhi::GraphResourceSet {
+ public:
+  VulkanGraphResources(VulkanDevice& device, const Graph& graph) : device_(device), graph_(graph), resources_(device.context(), graph) {}
+
+  RequirementsFn requirements() const override { return resources_.requirements(); }
+
+  void bind(const Plan& plan) override {
+    resources_.bind(plan);
+    textures_.assign(graph_.resources.size(), {});
+    views_.assign(graph_.resources.size(), {});
+    buffers_.assign(graph_.resources.size(), {});
+    for (uint32_t r = 0; r < graph_.resources.size(); ++r) {
+      if (plan.lifetimes[r].first == kNone) continue;
+      const ResourceDesc& d = graph_.resources[r].desc;
+      if (d.kind == ResourceKind::buffer) {
+        buffers_[r] = device_.import_buffer(resources_.buffer(r), d.buffer_bytes);
+        continue;
+      }
+      textures_[r] = device_.import_texture(resources_.image(r), {d.name, d.kind, d.format, d.extent, 0});
+      if (resources_.view(r)) views_[r] = device_.import_view(resources_.view(r), textures_[r]);
+    }
+  }
+
+  rhi::TextureId texture(uint32_t r) const override { return textures_.at(r); }
+  rhi::TextureViewId view(uint32_t r) const override { return views_.at(r); }
+  rhi::BufferId buffer(uint32_t r) const override { return buffers_.at(r); }
+
+ private:
+  VulkanDevice& device_;
+  const Graph& graph_;
+  GraphResources resources_;
+  std::vector<rhi::TextureId> textures_;
+  std::vector<rhi::TextureViewId> views_;
+  std::vector<rhi::BufferId> buffers_;
+};
+
+}  // namespace
+
+std::unique_ptr<rhi::GraphResourceSet> VulkanDevice::create_graph_resources(const Graph& graph) {
+  return std::make_unique<VulkanGraphResources>(*this, graph);
 }
 
 std::unique_ptr<rhi::CommandEncoder> VulkanDevice::create_command_encoder(std::string_view) {

@@ -37,7 +37,13 @@ class VulkanDevice final : public rhi::Device {
   void destroy(rhi::TextureId texture) override;
   void write_buffer(rhi::BufferId buffer, uint64_t offset, std::span<const std::byte> data) override;
   void write_texture(rhi::TextureId texture, std::span<const std::byte> texels) override;
+  std::unique_ptr<rhi::GraphResourceSet> create_graph_resources(const Graph& graph) override;
   std::unique_ptr<rhi::CommandEncoder> create_command_encoder(std::string_view label) override;
+
+  // Objects another owner made (graph resources), usable through handles; never freed here.
+  rhi::TextureId import_texture(VkImage image, const rhi::TextureDesc& desc);
+  rhi::TextureViewId import_view(VkImageView view, rhi::TextureId texture);
+  rhi::BufferId import_buffer(VkBuffer buffer, uint64_t size);
   void submit(std::unique_ptr<rhi::CommandEncoder> commands) override;
   std::vector<std::byte> read_buffer(rhi::BufferId buffer) override;
 
@@ -46,12 +52,14 @@ class VulkanDevice final : public rhi::Device {
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     uint64_t size = 0;
-    void* mapped = nullptr;  // every buffer is host-visible in this slice
+    void* mapped = nullptr;  // every buffer it makes is host-visible in this slice
+    bool owned = true;
   };
   struct Texture {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     rhi::TextureDesc desc;
+    bool owned = true;
   };
   struct Pipeline {
     VkPipeline pipeline = VK_NULL_HANDLE;
@@ -62,6 +70,7 @@ class VulkanDevice final : public rhi::Device {
   struct View {
     VkImageView view = VK_NULL_HANDLE;
     rhi::TextureId texture;
+    bool owned = true;
   };
   const Pipeline& pipeline(rhi::ComputePipelineId id) const { return pipelines_.at(id.id); }
   const Pipeline& pipeline(rhi::RenderPipelineId id) const { return render_pipelines_.at(id.id); }

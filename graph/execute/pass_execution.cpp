@@ -1,0 +1,35 @@
+#include "graph/execute/pass_execution.h"
+
+#include <stdexcept>
+
+namespace volgraph {
+
+const ParamValue& PassContext::param(std::string_view name) const {
+  const GraphPass& p = graph_pass();
+  const int i = p.decl->param_index(name);
+  if (i < 0) throw std::logic_error(p.decl->name + " has no parameter " + std::string(name));
+  if (size_t(i) < p.params.size()) return p.params[size_t(i)];
+  return p.decl->params[size_t(i)].default_value;
+}
+
+std::string_view PassContext::variant() const { return graph_pass().decl->variants[graph_pass().variant].name; }
+
+bool PassContext::bound(std::string_view slot) const {
+  const GraphPass& p = graph_pass();
+  const int s = p.decl->slot_index(slot);
+  for (const ResourceUse& u : p.uses) {
+    if (int(u.slot) == s) return true;
+  }
+  return false;
+}
+
+uint32_t PassContext::resource(std::string_view slot) const {
+  const GraphPass& p = graph_pass();
+  const int s = p.decl->slot_index(slot);
+  for (const ResourceUse& u : p.uses) {
+    if (int(u.slot) == s) return u.resource;
+  }
+  throw std::logic_error(p.name + ": slot " + std::string(slot) + " is not bound");
+}
+
+}  // namespace volgraph
