@@ -1,0 +1,128 @@
+// Camera and object transforms in DESIGN.md's conventions: right-handed, Y up, metres;
+// a pinhole camera looking from `position` at `target`; pixel (i, j), row 0 at the top,
+// looks through NDC x = (i + 0.5)/W·2 − 1, y = 1 − (j + 0.5)/H·2; depth 0 at the near
+// plane and 1 at the far one (WebGPU's clip space). The GPU passes upload these
+// matrices; the CPU reference generates the same rays.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "graph/scene/scene.h"
+
+namespace volgraph::shading {
+
+struct Mat4 {
+  std::array<double, 16> m{};  // column-major, m[col * 4 + row], as GLSL
+  double& operator()(int row, int col) { return m[size_t(col * 4 + row)]; }
+  double operator()(int row, int col) const { return m[size_t(col * 4 + row)]; }
+  static Mat4 identity() {
+    Mat4 r;
+    for (int i = 0; i < 4; ++i) r(i, i) = 1;
+    return r;
+  }
+};
+
+inline Mat4 operator*(const Mat4& a, const Mat4& b) {
+  Mat4 r;
+  for (int row = 0; row < 4; ++row)
+    for (int col = 0; col < 4; ++col)
+      for (int k = 0; k < 4; ++k) r(row, col) += a(row, k) * b(k, col);
+  return r;
+}
+
+inline Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline Vec3 normalize(const Vec3& v) {
+  const double l = std::sqrt(dot(v, v));
+  return {v[0] / l, v[1] / l, v[2] / l};
+}
+
+// (x, y, z, w) → the transformed point divided by w.
+inline Vec3 transform_point(const Mat4& t, const Vec3& p) {
+  double out[4];
+  for (int row = 0; row < 4; ++row) out[row] = t(row, 0) * p[0] + t(row, 1) * p[1] + t(row, 2) * p[2] + t(row, 3);
+  return {out[0] / out[3], out[1] / out[3], out[2] / out[3]};
+}
+
+// World to view: the camera at the origin looking down −Z, +Y up.
+inline Mat4 look_at(const Vec3& eye, const Vec3& target, const Vec3& up) {
+  const Vec3 f = normalize(sub(target, eye));
+  const Vec3 s = normalize(cross(f, up));
+  const Vec3 u = cross(s, f);
+  Mat4 r = Mat4::identity();
+  for (int c = 0; c < 3; ++c) {
+    r(0, c) = s[size_t(c)];
+    r(1, c) = u[size_t(c)];
+    r(2, c) = -f[size_t(c)];
+  }
+  r(0, 3) = -dot(s, eye);
+  r(1, 3) = -dot(u, eye);
+  r(2, 3) = dot(f, eye);
+  return r;
+}
+
+// View to clip, right-handed, depth in [0, 1]: z = −near → 0, z = −far → 1.
+inline Mat4 perspective(double fov_y_deg, double aspect, double near, double far) {
+  const double t = 1.0 / std::tan(fov_y_deg * M_PI / 360.0);
+  Mat4 r;
+  r(0, 0) = t / aspect;
+  r(1, 1) = t;
+  r(2, 2) = far / (near - far);
+  r(2, 3) = near * far / (near - far);
+  r(3, 2) = -1;
+  return r;
+}
+
+// View to clip for a box [l, r] × [b, t] × [−near, −far], depth in [0, 1].
+inline Mat4 orthographic(double l, double r, double b, double t, double near, double far) {
+  Mat4 o = Mat4::identity();
+  o(0, 0) = 2 / (r - l);
+  o(1, 1) = 2 / (t - b);
+  o(2, 2) = 1 / (near - far);
+  o(0, 3) = -(r + l) / (r - l);
+  o(1, 3) = -(t + b) / (t - b);
+  o(2, 3) = near / (near - far);
+  return o;
+}
+
+// Object to world: scale, then rotate about X, then Y, then Z, then translate.
+inline Mat4 model_matrix(const Transform& t) {
+  auto rotation = [](int axis, double deg) {
+    const double c = std::cos(deg * M_PI / 180.0), s = std::sin(deg * M_PI / 180.0);
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    Mat4 r = Mat4::identity();
+    r(a, a) = c;
+    r(a, b) = -s;
+    r(b, a) = s;
+    r(b, b) = c;
+    return r;
+  };
+  Mat4 scale = Mat4::identity(), translate = Mat4::identity();
+  for (int i = 0; i < 3; ++i) {
+    scale(i, i) = t.scale[size_t(i)];
+    translate(i, 3) = t.translate[size_t(i)];
+  }
+  return translate * rotation(2, t.rotate_deg[2]) * rotation(1, t.rotate_deg[1]) * rotation(0, t.rotate_deg[0]) * scale;
+}
+
+inline Mat4 view_projection(const Camera& c, double aspect) {
+  return perspective(c.fov_y_deg, aspect, c.near, c.far) * look_at(c.position, c.target, c.up);
+}
+
+// The direction (unit, world space) pixel (i, j) of a W × H frame looks along.
+inline Vec3 pixel_ray(const Camera& c, uint32_t width, uint32_t height, double i, double j) {
+  const double x = (i + 0.5) / width * 2 - 1, y = 1 - (j + 0.5) / height * 2;
+  const double t = std::tan(c.fov_y_deg * M_PI / 360.0), aspect = double(width) / height;
+  const Vec3 f = normalize(sub(c.target, c.position));
+  const Vec3 s = normalize(cross(f, c.up));
+  const Vec3 u = cross(s, f);
+  Vec3 d;
+  for (size_t k = 0; k < 3; ++k) d[k] = f[k] + x * t * aspect * s[k] + y * t * u[k];
+  return normalize(d);
+}
+
+}  // namespace volgraph::shading
