@@ -232,10 +232,15 @@ class CommandEncoder {
   // all work recorded before has finished; Device::read_timestamps turns them into ns.
   virtual void write_timestamp(QuerySetId queries, uint32_t index) = 0;
 
+  // Writes up to 64 KiB into a buffer (made with copy_dst) at this point of the
+  // command stream: per-pass constants in graph buffers. A transfer write.
+  virtual void update_buffer(BufferId buffer, uint64_t offset, std::span<const std::byte> data) = 0;
+
   // Whole-texture copies, rows tightly packed in the buffer.
   virtual void copy_buffer_to_texture(BufferId source, uint64_t offset, TextureId destination) = 0;
   virtual void copy_texture_to_buffer(TextureId source, BufferId destination, uint64_t offset) = 0;
   virtual void copy_texture_to_texture(TextureId source, TextureId destination) = 0;  // same size and format
+  virtual void copy_buffer_to_buffer(BufferId source, BufferId destination, uint64_t size) = 0;  // from offset 0 to 0
 };
 
 // The graph's resources on a device: first the driver's requirements for compile(),

@@ -134,5 +134,24 @@ TEST_F(RenderPass, AdditiveBlendingSums) {
   EXPECT_EQ(red(render({a, b}, CullMode::none, BlendMode::additive, false), 5, 9), 0.75f);
 }
 
+// In-stream buffer updates are ordered like any transfer write: update, barrier, copy.
+TEST_F(RenderPass, UpdateBufferLandsBeforeTheCopyAfterIt) {
+  const BufferId a = device_->create_buffer({"a", 64, buffer_usage::copy_src | buffer_usage::copy_dst});
+  const BufferId b = device_->create_buffer({"b", 64, buffer_usage::copy_dst});
+  std::vector<uint32_t> words(16);
+  for (uint32_t i = 0; i < 16; ++i) words[i] = 0xC0DE0000u + i;
+  auto enc = device_->create_command_encoder("update");
+  enc->update_buffer(a, 0, std::as_bytes(std::span(words)));
+  const AccessState written = access_state(Usage::copy_dst, PassKind::transfer, ResourceKind::buffer);
+  const ResourceBarrier between[] = {{{}, a, written, access_state(Usage::copy_src, PassKind::transfer, ResourceKind::buffer)}};
+  enc->barrier(between);
+  enc->copy_buffer_to_buffer(a, b, 64);
+  device_->submit(std::move(enc));
+  const auto raw = device_->read_buffer(b);
+  std::vector<uint32_t> got(16);
+  std::memcpy(got.data(), raw.data(), 64);
+  EXPECT_EQ(got, words);
+}
+
 }  // namespace
 }  // namespace volgraph::vulkan

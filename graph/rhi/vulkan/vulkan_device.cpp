@@ -209,6 +209,13 @@ class VulkanEncoder final : public rhi::CommandEncoder {
     const VkBufferImageCopy region = whole_texture(t.desc, offset);
     vkCmdCopyBufferToImage(cmd_, device_.buffer(source).buffer, t.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   }
+  void update_buffer(rhi::BufferId buffer, uint64_t offset, std::span<const std::byte> data) override {
+    if (data.size() > 65536 || data.size() % 4 || offset % 4) {
+      throw DeviceError(DeviceError::Kind::other, "update_buffer takes up to 64 KiB, in whole 4-byte words");
+    }
+    vkCmdUpdateBuffer(cmd_, device_.buffer(buffer).buffer, offset, data.size(), data.data());
+  }
+
   void copy_texture_to_texture(rhi::TextureId source, rhi::TextureId destination) override {
     const auto& s = device_.texture(source);
     const auto& d = device_.texture(destination);
@@ -217,6 +224,10 @@ class VulkanEncoder final : public rhi::CommandEncoder {
                        {s.desc.size.width, s.desc.size.height, s.desc.kind == ResourceKind::texture3d ? s.desc.size.depth : 1}};
     vkCmdCopyImage(cmd_, s.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                    &region);
+  }
+  void copy_buffer_to_buffer(rhi::BufferId source, rhi::BufferId destination, uint64_t size) override {
+    const VkBufferCopy region{0, 0, size};
+    vkCmdCopyBuffer(cmd_, device_.buffer(source).buffer, device_.buffer(destination).buffer, 1, &region);
   }
   void copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset) override {
     const auto& t = device_.texture(source);
