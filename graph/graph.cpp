@@ -121,8 +121,7 @@ void GraphBuilder::mark_output(ResourceVersion what) {
 
 Graph GraphBuilder::finish() { return std::move(graph_); }
 
-ResourceDesc resolve_slot(const PassDecl& decl, const SlotDecl& slot, Extent output_size, int64_t size_param) {
-  (void)decl;
+ResourceDesc resolve_slot(const PassDecl&, const SlotDecl& slot, Extent output_size, int64_t size_param) {
   ResourceDesc d;
   d.kind = slot.kind;
   d.format = slot.format;

@@ -132,9 +132,8 @@ Tracker replay(uint32_t resource, std::span<const Use> uses, Tracker t, bool fre
 
 }  // namespace
 
-BarrierPlan plan_barriers(const FlatGraph& g, const Schedule& schedule, const std::vector<Lifetime>& lifetimes,
-                          const std::vector<Handover>& handovers, bool serialize) {
-  (void)lifetimes;
+BarrierPlan plan_barriers(const FlatGraph& g, const Schedule& schedule, const std::vector<Handover>& handovers,
+                          bool serialize) {
   const Graph& graph = *g.graph;
   const UsesByResource uses = uses_by_resource(g, schedule);
   std::vector<uint8_t> handed_over(graph.resources.size(), 0);

@@ -46,7 +46,7 @@ Plan compile(const Graph& graph, const CompileOptions& options, const Requiremen
   Schedule schedule = order_and_cull(flat, options.cull);
   plan.lifetimes = lifetimes(flat, schedule);
   MemoryLayout memory = place_memory(graph, plan.lifetimes, options.alias, requirements);
-  BarrierPlan barriers = plan_barriers(flat, schedule, plan.lifetimes, memory.handovers, options.serialize);
+  BarrierPlan barriers = plan_barriers(flat, schedule, memory.handovers, options.serialize);
 
   plan.order.reserve(schedule.order.size());
   for (uint32_t pos = 0; pos < schedule.order.size(); ++pos) {

@@ -126,7 +126,6 @@ std::vector<uint8_t> cull_for_needs(const FlatGraph& g, const std::vector<uint32
                                     std::vector<CulledPass>& culled) {
   const Graph& graph = *g.graph;
   std::vector<uint8_t> dead(g.pass_count(), 0);
-  (void)graph;
   for (uint32_t p : order) {
     const GraphPass& pass = graph.passes[p];
     if (const SceneFeatures missing = pass.needs & ~graph.scene) {

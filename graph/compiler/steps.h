@@ -55,7 +55,7 @@ struct BarrierPlan {
   std::vector<uint32_t> begin, count;         // per position
 };
 
-BarrierPlan plan_barriers(const FlatGraph& graph, const Schedule& schedule, const std::vector<Lifetime>& lifetimes,
-                          const std::vector<Handover>& handovers, bool serialize);
+BarrierPlan plan_barriers(const FlatGraph& graph, const Schedule& schedule, const std::vector<Handover>& handovers,
+                          bool serialize);
 
 }  // namespace volgraph::compiler
