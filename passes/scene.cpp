@@ -1,8 +1,168 @@
 // Opaque scene: Lambertian surfaces lit by the scene's lights (DESIGN.md units:
 // ρ/π · E · cos θ · V), emissive surfaces and the background radiance.
+#include <cstring>
+
+#include "graph/execute/pass_execution.h"
+#include "graph/rhi/device_error.h"
+#include "graph/scene/scene.h"
 #include "passes/passes.h"
+#include "passes/shading/camera.h"
+#include "passes/shading/meshes.h"
+#include "shaders/shader_library.h"
 
 namespace volgraph {
+namespace {
+
+constexpr int kMaxLights = 16;  // shaders/include/scene_uniforms.glsl
+
+// std140 blocks of shaders/include/scene_uniforms.glsl.
+struct GpuLight {
+  float position_type[4];
+  float direction_cos_outer[4];
+  float power_cos_inner[4];
+};
+struct FrameBlock {
+  float view_projection[16];
+  float ambient_irradiance[4];
+  int32_t counts[4];
+  GpuLight lights[kMaxLights];
+};
+struct ObjectBlock {
+  float model[16];
+  float normal_matrix[16];
+  float albedo[4];
+  float emissive[4];
+};
+
+void copy_matrix(const shading::Mat4& m, float* out) {
+  for (size_t i = 0; i < 16; ++i) out[i] = float(m.m[i]);
+}
+
+GpuLight gpu_light(const Light& l) {
+  GpuLight g{};
+  const bool directional = l.type == LightType::directional;
+  const Vec3 dir = shading::normalize(l.direction);
+  const Vec3& power = directional ? l.irradiance : l.intensity;
+  const float type = directional ? 0.0f : l.type == LightType::point ? 1.0f : 2.0f;
+  const float cos_outer = float(std::cos(l.outer_cone_deg * M_PI / 180)), cos_inner = float(std::cos(l.inner_cone_deg * M_PI / 180));
+  for (size_t i = 0; i < 3; ++i) {
+    g.position_type[i] = float(l.position[i]);
+    g.direction_cos_outer[i] = float(dir[i]);
+    g.power_cos_inner[i] = float(power[i]);
+  }
+  g.position_type[3] = type;
+  g.direction_cos_outer[3] = cos_outer;
+  g.power_cos_inner[3] = cos_inner;
+  return g;
+}
+
+struct GpuObject {
+  rhi::BufferId vertices, indices, uniforms;
+  rhi::BindGroupId group;
+  uint32_t index_count = 0;
+};
+
+// Rasterises the scene's objects, lit (shaders/scene.vert, scene.frag).
+class SceneExecution final : public PassExecution {
+ public:
+  void record(PassContext& c) override {
+    if (!pipeline_) prepare(c);
+    write_frame(c);
+    const Vec3& bg = c.scene->background;
+    rhi::RenderPassDesc pass;
+    pass.label = c.graph_pass().name;
+    pass.colors = {{c.view("color"), rhi::LoadOp::clear, {float(bg[0]), float(bg[1]), float(bg[2]), 1.0f}}};
+    pass.depth = {c.view("depth"), rhi::LoadOp::clear, 1.0f, false};
+    c.encoder.begin_render_pass(pass);
+    c.encoder.set_pipeline(pipeline_);
+    c.encoder.set_bind_group(0, frame_group_);
+    for (const GpuObject& o : objects_) {
+      c.encoder.set_bind_group(1, o.group);
+      c.encoder.set_vertex_buffer(0, o.vertices);
+      c.encoder.set_index_buffer(o.indices, rhi::IndexFormat::uint32);
+      c.encoder.draw_indexed(o.index_count);
+    }
+    c.encoder.end_render_pass();
+  }
+
+ private:
+  void write_frame(PassContext& c) {
+    const Scene& scene = *c.scene;
+    const Extent size = c.desc("color").extent;
+    FrameBlock f{};
+    copy_matrix(shading::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
+    const auto ambient = std::get<std::array<double, 3>>(c.param("ambient"));
+    for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i]);
+    f.counts[0] = int32_t(std::min<size_t>(scene.lights.size(), kMaxLights));
+    for (int i = 0; i < f.counts[0]; ++i) f.lights[i] = gpu_light(scene.lights[size_t(i)]);
+    c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&f, 1)));
+  }
+
+  void prepare(PassContext& c) {
+    using namespace rhi;
+    const Scene& scene = *c.scene;
+    if (scene.lights.size() > kMaxLights) {
+      throw DeviceError(DeviceError::Kind::unsupported, "scene pass: at most " + std::to_string(kMaxLights) + " lights");
+    }
+    const BindGroupLayoutId frame_layout = c.device.create_bind_group_layout(
+        {"scene frame", {{0, shader_stage::vertex | shader_stage::fragment, BindingType::uniform_buffer}}});
+    const BindGroupLayoutId object_layout = c.device.create_bind_group_layout(
+        {"scene object", {{0, shader_stage::vertex | shader_stage::fragment, BindingType::uniform_buffer}}});
+    frame_ = c.device.create_buffer({"scene frame", sizeof(FrameBlock), buffer_usage::uniform | buffer_usage::copy_dst});
+    BindGroupEntry fe;
+    fe.buffer = frame_;
+    frame_group_ = c.device.create_bind_group({"scene frame", frame_layout, {fe}});
+    for (size_t i = 0; i < scene.objects.size(); ++i) objects_.push_back(upload(c, scene, scene.objects[i], object_layout, i));
+
+    RenderPipelineDesc pd;
+    pd.label = "scene";
+    pd.vertex_module = c.device.create_shader_module("scene.vert", shader_spirv("scene.vert"));
+    pd.fragment_module = c.device.create_shader_module("scene.frag", shader_spirv("scene.frag"));
+    pd.vertex_buffers = {{24, {{0, VertexFormat::float32x3, 0}, {1, VertexFormat::float32x3, 12}}}};
+    pd.colors = {{c.desc("color").format, BlendMode::replace}};
+    pd.depth = {Format::d32_float, true, CompareFunction::less};
+    pd.cull = CullMode::none;  // planes are seen from both sides
+    pd.layouts = {frame_layout, object_layout};
+    pipeline_ = c.device.create_render_pipeline(pd);
+  }
+
+  static GpuObject upload(PassContext& c, const Scene& scene, const Object& object, rhi::BindGroupLayoutId layout, size_t index) {
+    using namespace rhi;
+    if (object.shape == Shape::gltf) {
+      throw DeviceError(DeviceError::Kind::unsupported, "scene pass: glTF objects (object " + std::to_string(index) +
+                                                            ") have no GPU implementation yet");
+    }
+    const shading::Mesh mesh = shading::primitive_mesh(object.shape, object.size);
+    GpuObject g;
+    g.index_count = uint32_t(mesh.indices.size());
+    g.vertices = c.device.create_buffer({"object vertices", mesh.vertices.size() * 4, buffer_usage::vertex});
+    c.device.write_buffer(g.vertices, 0, std::as_bytes(std::span(mesh.vertices)));
+    g.indices = c.device.create_buffer({"object indices", mesh.indices.size() * 4, buffer_usage::index});
+    c.device.write_buffer(g.indices, 0, std::as_bytes(std::span(mesh.indices)));
+    ObjectBlock block{};
+    const shading::Mat4 model = shading::model_matrix(object.transform);
+    copy_matrix(model, block.model);
+    copy_matrix(shading::normal_matrix(model), block.normal_matrix);
+    const Material* m = scene.find_material(object.material);
+    for (size_t i = 0; i < 3; ++i) {
+      block.albedo[i] = m ? float(m->albedo[i]) : 0.8f;
+      block.emissive[i] = m ? float(m->emissive[i]) : 0.0f;
+    }
+    g.uniforms = c.device.create_buffer({"object", sizeof(ObjectBlock), buffer_usage::uniform});
+    c.device.write_buffer(g.uniforms, 0, std::as_bytes(std::span(&block, 1)));
+    BindGroupEntry e;
+    e.buffer = g.uniforms;
+    g.group = c.device.create_bind_group({"object", layout, {e}});
+    return g;
+  }
+
+  rhi::RenderPipelineId pipeline_;
+  rhi::BufferId frame_;
+  rhi::BindGroupId frame_group_;
+  std::vector<GpuObject> objects_;
+};
+
+}  // namespace
 
 PassDecl scene_pass() {
   PassDecl d;
@@ -26,6 +186,7 @@ PassDecl scene_pass() {
                "scene depth, for later passes (fog, translucency)"),
   };
   d.slots[0].format = Format::d32_float;
+  d.make_execution = [] { return std::unique_ptr<PassExecution>(new SceneExecution()); };
   return d;
 }
 

@@ -109,6 +109,22 @@ inline Mat4 model_matrix(const Transform& t) {
   return translate * rotation(2, t.rotate_deg[2]) * rotation(1, t.rotate_deg[1]) * rotation(0, t.rotate_deg[0]) * scale;
 }
 
+// The inverse transpose of a transform's 3×3 part (in a Mat4): it carries normals.
+inline Mat4 normal_matrix(const Mat4& t) {
+  auto a = [&](int r, int c) { return t(r, c); };
+  const double det = a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
+                     a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));
+  Mat4 r = Mat4::identity();
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) {
+      // (A⁻¹)ᵀ[row][col] = cofactor(row, col) / det
+      const int r0 = (row + 1) % 3, r1 = (row + 2) % 3, c0 = (col + 1) % 3, c1 = (col + 2) % 3;
+      r(row, col) = (a(r0, c0) * a(r1, c1) - a(r0, c1) * a(r1, c0)) / det;
+    }
+  }
+  return r;
+}
+
 inline Mat4 view_projection(const Camera& c, double aspect) {
   return perspective(c.fov_y_deg, aspect, c.near, c.far) * look_at(c.position, c.target, c.up);
 }

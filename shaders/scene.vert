@@ -1,0 +1,16 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Opaque scene: object space to world and clip space (passes/scene.cpp).
+#include "include/scene_uniforms.glsl"
+
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 0) out vec3 world_position;
+layout(location = 1) out vec3 world_normal;
+
+void main() {
+  const vec4 world = object.model * vec4(position, 1.0);
+  world_position = world.xyz;
+  world_normal = mat3(object.normal_matrix) * normal;
+  gl_Position = frame.view_projection * world;
+}
