@@ -7,7 +7,7 @@
 #include "graph/scene/scene.h"
 #include "passes/passes.h"
 #include "passes/shading/camera.h"
-#include "passes/shading/meshes.h"
+#include "passes/shading/scene_geometry.h"
 #include "shaders/shader_library.h"
 
 namespace volgraph {
@@ -27,16 +27,6 @@ struct FrameBlock {
   int32_t counts[4];
   GpuLight lights[kMaxLights];
 };
-struct ObjectBlock {
-  float model[16];
-  float normal_matrix[16];
-  float albedo[4];
-  float emissive[4];
-};
-
-void copy_matrix(const shading::Mat4& m, float* out) {
-  for (size_t i = 0; i < 16; ++i) out[i] = float(m.m[i]);
-}
 
 GpuLight gpu_light(const Light& l) {
   GpuLight g{};
@@ -56,12 +46,6 @@ GpuLight gpu_light(const Light& l) {
   return g;
 }
 
-struct GpuObject {
-  rhi::BufferId vertices, indices, uniforms;
-  rhi::BindGroupId group;
-  uint32_t index_count = 0;
-};
-
 // Rasterises the scene's objects, lit (shaders/scene.vert, scene.frag).
 class SceneExecution final : public PassExecution {
  public:
@@ -76,12 +60,7 @@ class SceneExecution final : public PassExecution {
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(pipeline_);
     c.encoder.set_bind_group(0, frame_group_);
-    for (const GpuObject& o : objects_) {
-      c.encoder.set_bind_group(1, o.group);
-      c.encoder.set_vertex_buffer(0, o.vertices);
-      c.encoder.set_index_buffer(o.indices, rhi::IndexFormat::uint32);
-      c.encoder.draw_indexed(o.index_count);
-    }
+    geometry_->draw(c.encoder, 1);
     c.encoder.end_render_pass();
   }
 
@@ -90,7 +69,7 @@ class SceneExecution final : public PassExecution {
     const Scene& scene = *c.scene;
     const Extent size = c.desc("color").extent;
     FrameBlock f{};
-    copy_matrix(shading::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
+    to_floats(shading::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
     const auto ambient = std::get<std::array<double, 3>>(c.param("ambient"));
     for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i]);
     f.counts[0] = int32_t(std::min<size_t>(scene.lights.size(), kMaxLights));
@@ -106,13 +85,11 @@ class SceneExecution final : public PassExecution {
     }
     const BindGroupLayoutId frame_layout = c.device.create_bind_group_layout(
         {"scene frame", {{0, shader_stage::vertex | shader_stage::fragment, BindingType::uniform_buffer}}});
-    const BindGroupLayoutId object_layout = c.device.create_bind_group_layout(
-        {"scene object", {{0, shader_stage::vertex | shader_stage::fragment, BindingType::uniform_buffer}}});
     frame_ = c.device.create_buffer({"scene frame", sizeof(FrameBlock), buffer_usage::uniform | buffer_usage::copy_dst});
     BindGroupEntry fe;
     fe.buffer = frame_;
     frame_group_ = c.device.create_bind_group({"scene frame", frame_layout, {fe}});
-    for (size_t i = 0; i < scene.objects.size(); ++i) objects_.push_back(upload(c, scene, scene.objects[i], object_layout, i));
+    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, scene);
 
     RenderPipelineDesc pd;
     pd.label = "scene";
@@ -122,44 +99,14 @@ class SceneExecution final : public PassExecution {
     pd.colors = {{c.desc("color").format, BlendMode::replace}};
     pd.depth = {Format::d32_float, true, CompareFunction::less};
     pd.cull = CullMode::none;  // planes are seen from both sides
-    pd.layouts = {frame_layout, object_layout};
+    pd.layouts = {frame_layout, geometry_->layout()};
     pipeline_ = c.device.create_render_pipeline(pd);
-  }
-
-  static GpuObject upload(PassContext& c, const Scene& scene, const Object& object, rhi::BindGroupLayoutId layout, size_t index) {
-    using namespace rhi;
-    if (object.shape == Shape::gltf) {
-      throw DeviceError(DeviceError::Kind::unsupported, "scene pass: glTF objects (object " + std::to_string(index) +
-                                                            ") have no GPU implementation yet");
-    }
-    const shading::Mesh mesh = shading::primitive_mesh(object.shape, object.size);
-    GpuObject g;
-    g.index_count = uint32_t(mesh.indices.size());
-    g.vertices = c.device.create_buffer({"object vertices", mesh.vertices.size() * 4, buffer_usage::vertex});
-    c.device.write_buffer(g.vertices, 0, std::as_bytes(std::span(mesh.vertices)));
-    g.indices = c.device.create_buffer({"object indices", mesh.indices.size() * 4, buffer_usage::index});
-    c.device.write_buffer(g.indices, 0, std::as_bytes(std::span(mesh.indices)));
-    ObjectBlock block{};
-    const shading::Mat4 model = shading::model_matrix(object.transform);
-    copy_matrix(model, block.model);
-    copy_matrix(shading::normal_matrix(model), block.normal_matrix);
-    const Material* m = scene.find_material(object.material);
-    for (size_t i = 0; i < 3; ++i) {
-      block.albedo[i] = m ? float(m->albedo[i]) : 0.8f;
-      block.emissive[i] = m ? float(m->emissive[i]) : 0.0f;
-    }
-    g.uniforms = c.device.create_buffer({"object", sizeof(ObjectBlock), buffer_usage::uniform});
-    c.device.write_buffer(g.uniforms, 0, std::as_bytes(std::span(&block, 1)));
-    BindGroupEntry e;
-    e.buffer = g.uniforms;
-    g.group = c.device.create_bind_group({"object", layout, {e}});
-    return g;
   }
 
   rhi::RenderPipelineId pipeline_;
   rhi::BufferId frame_;
   rhi::BindGroupId frame_group_;
-  std::vector<GpuObject> objects_;
+  std::unique_ptr<shading::SceneGeometry> geometry_;
 };
 
 }  // namespace

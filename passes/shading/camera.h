@@ -41,6 +41,11 @@ inline Vec3 normalize(const Vec3& v) {
   return {v[0] / l, v[1] / l, v[2] / l};
 }
 
+// Column-major floats for a uniform block's mat4.
+inline void to_floats(const Mat4& m, float* out) {
+  for (size_t i = 0; i < 16; ++i) out[i] = float(m.m[i]);
+}
+
 // (x, y, z, w) → the transformed point divided by w.
 inline Vec3 transform_point(const Mat4& t, const Vec3& p) {
   double out[4];
