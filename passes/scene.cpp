@@ -60,6 +60,7 @@ class SceneExecution final : public PassExecution {
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(pipeline_);
     c.encoder.set_bind_group(0, frame_group_);
+    if (shadow_group_) c.encoder.set_bind_group(2, shadow_group_);
     geometry_->draw(c.encoder, 1);
     c.encoder.end_render_pass();
   }
@@ -91,21 +92,39 @@ class SceneExecution final : public PassExecution {
     frame_group_ = c.device.create_bind_group({"scene frame", frame_layout, {fe}});
     geometry_ = std::make_unique<shading::SceneGeometry>(c.device, scene);
 
+    // With a shadow map wired (and shadows on), its light is shadowed (set 2).
+    const bool shadowed = c.bound("shadow_map") && c.bound("light_view") && std::get<bool>(c.param("shadows"));
+    std::vector<BindGroupLayoutId> layouts = {frame_layout, geometry_->layout()};
+    if (shadowed) {
+      layouts.push_back(c.device.create_bind_group_layout({"scene shadow", {{0, shader_stage::fragment, BindingType::sampled_texture},
+                                                                             {1, shader_stage::fragment, BindingType::sampler},
+                                                                             {2, shader_stage::fragment, BindingType::uniform_buffer}}}));
+      BindGroupEntry depth, sampler, view;
+      depth.binding = 0;
+      depth.view = c.view("shadow_map");
+      sampler.binding = 1;
+      sampler.sampler = c.device.create_sampler({"shadow nearest"});
+      view.binding = 2;
+      view.buffer = c.buffer("light_view");
+      shadow_group_ = c.device.create_bind_group({"scene shadow", layouts.back(), {depth, sampler, view}});
+    }
+    const char* fragment = shadowed ? "scene_shadowed.frag" : "scene.frag";
     RenderPipelineDesc pd;
     pd.label = "scene";
     pd.vertex_module = c.device.create_shader_module("scene.vert", shader_spirv("scene.vert"));
-    pd.fragment_module = c.device.create_shader_module("scene.frag", shader_spirv("scene.frag"));
+    pd.fragment_module = c.device.create_shader_module(fragment, shader_spirv(fragment));
     pd.vertex_buffers = {{24, {{0, VertexFormat::float32x3, 0}, {1, VertexFormat::float32x3, 12}}}};
     pd.colors = {{c.desc("color").format, BlendMode::replace}};
     pd.depth = {Format::d32_float, true, CompareFunction::less};
     pd.cull = CullMode::none;  // planes are seen from both sides
-    pd.layouts = {frame_layout, geometry_->layout()};
+    pd.layouts = layouts;
     pipeline_ = c.device.create_render_pipeline(pd);
   }
 
   rhi::RenderPipelineId pipeline_;
   rhi::BufferId frame_;
   rhi::BindGroupId frame_group_;
+  rhi::BindGroupId shadow_group_;
   std::unique_ptr<shading::SceneGeometry> geometry_;
 };
 

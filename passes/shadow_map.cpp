@@ -1,11 +1,94 @@
 // Shadow map: depth from one light's view. Directional lights use an orthographic
 // projection fitted to the camera frustum's bounds; spot lights a perspective one
 // spanning the outer cone.
+#include <algorithm>
+#include <cmath>
+
+#include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/passes.h"
+#include "passes/shading/camera.h"
+#include "passes/shading/scene_geometry.h"
+#include "passes/shading/shadow_view.h"
+#include "shaders/shader_library.h"
 
 namespace volgraph {
 namespace {
+
+// The light's view and projection over the scene's bounds. Directional: orthographic
+// around the bounding sphere; spot: perspective over the outer cone.
+shading::Mat4 light_view_projection(const Light& light, const Vec3& lo, const Vec3& hi) {
+  using namespace shading;
+  const Vec3 centre{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+  const Vec3 half = sub(hi, centre);
+  const double radius = std::max(std::sqrt(dot(half, half)), 1e-3);
+  const Vec3 dir = normalize(light.direction);
+  const Vec3 up = std::abs(dir[1]) > 0.99 ? Vec3{0, 0, 1} : Vec3{0, 1, 0};
+  if (light.type == LightType::directional) {
+    const Vec3 eye{centre[0] - 2 * radius * dir[0], centre[1] - 2 * radius * dir[1], centre[2] - 2 * radius * dir[2]};
+    return orthographic(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius) * look_at(eye, centre, up);
+  }
+  double far = 0.1;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p{corner & 1 ? hi[0] : lo[0], corner & 2 ? hi[1] : lo[1], corner & 4 ? hi[2] : lo[2]};
+    const Vec3 d = sub(p, light.position);
+    far = std::max(far, 1.01 * std::sqrt(dot(d, d)));
+  }
+  const Vec3 target{light.position[0] + dir[0], light.position[1] + dir[1], light.position[2] + dir[2]};
+  return perspective(2 * light.outer_cone_deg, 1.0, std::min(0.05, far / 100), far) * look_at(light.position, target, up);
+}
+
+// Depth of the scene from the light (shaders/shadow.vert); its view goes to light_view.
+class ShadowMapExecution final : public PassExecution {
+ public:
+  void record(PassContext& c) override {
+    if (!pipeline_) prepare(c);
+    const int64_t index = std::get<int64_t>(c.param("light"));
+    const Light& light = c.scene->lights[size_t(index)];
+    shading::ShadowViewBlock block{};
+    to_floats(light_view_projection(light, geometry_->bounds_min(), geometry_->bounds_max()), block.light_view_projection);
+    block.params[0] = float(std::get<double>(c.param("depth_bias")));
+    block.params[1] = float(std::get<double>(c.param("pcf_radius")));
+    block.params[3] = float(index);
+    block.mode[0] = c.variant() == "pcf" ? 1 : 0;
+    const auto bytes = std::as_bytes(std::span(&block, 1));
+    c.device.write_buffer(view_, 0, bytes);           // for this pass's vertex shader
+    c.encoder.update_buffer(c.buffer("light_view"), 0, bytes);  // for the passes that sample the map
+    rhi::RenderPassDesc pass;
+    pass.label = c.graph_pass().name;
+    pass.depth = {c.view("depth"), rhi::LoadOp::clear, 1.0f, false};
+    c.encoder.begin_render_pass(pass);
+    c.encoder.set_pipeline(pipeline_);
+    c.encoder.set_bind_group(0, view_group_);
+    geometry_->draw(c.encoder, 1);
+    c.encoder.end_render_pass();
+  }
+
+ private:
+  void prepare(PassContext& c) {
+    using namespace rhi;
+    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, *c.scene);
+    const BindGroupLayoutId layout =
+        c.device.create_bind_group_layout({"shadow view", {{0, shader_stage::vertex, BindingType::uniform_buffer}}});
+    view_ = c.device.create_buffer({"shadow view", sizeof(shading::ShadowViewBlock), buffer_usage::uniform});
+    BindGroupEntry e;
+    e.buffer = view_;
+    view_group_ = c.device.create_bind_group({"shadow view", layout, {e}});
+    RenderPipelineDesc pd;
+    pd.label = "shadow map";
+    pd.vertex_module = c.device.create_shader_module("shadow.vert", shader_spirv("shadow.vert"));
+    pd.vertex_buffers = {{24, {{0, VertexFormat::float32x3, 0}}}};
+    pd.depth = {Format::d32_float, true, CompareFunction::less, 0.0f, float(std::get<double>(c.param("slope_bias")))};
+    pd.cull = CullMode::none;
+    pd.layouts = {layout, geometry_->layout()};
+    pipeline_ = c.device.create_render_pipeline(pd);
+  }
+
+  std::unique_ptr<shading::SceneGeometry> geometry_;
+  rhi::RenderPipelineId pipeline_;
+  rhi::BufferId view_;
+  rhi::BindGroupId view_group_;
+};
 
 // The light must exist, be directional or spot, and cast shadows.
 std::vector<ParamProblem> check_light(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params) {
@@ -48,6 +131,7 @@ PassDecl shadow_map_pass() {
   };
   d.needs = feature_bit(SceneFeature::shadow_casting_light);
   d.check_scene = check_light;
+  d.make_execution = [] { return std::unique_ptr<PassExecution>(new ShadowMapExecution()); };
   return d;
 }
 

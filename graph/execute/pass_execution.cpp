@@ -14,11 +14,15 @@ const ParamValue& PassContext::param(std::string_view name) const {
 
 std::string_view PassContext::variant() const { return graph_pass().decl->variants[graph_pass().variant].name; }
 
+// Wired in the graph and given memory by the plan (an optional input whose producer was
+// culled is wired but unbound).
 bool PassContext::bound(std::string_view slot) const {
   const GraphPass& p = graph_pass();
   const int s = p.decl->slot_index(slot);
   for (const ResourceUse& u : p.uses) {
-    if (int(u.slot) == s) return true;
+    if (int(u.slot) != s) continue;
+    const bool buffer = graph.resources[u.resource].desc.kind == ResourceKind::buffer;
+    return buffer ? bool(resources_.buffer(u.resource)) : bool(resources_.texture(u.resource));
   }
   return false;
 }

@@ -28,7 +28,7 @@ class PassContext {
   // The pass's parameter values (as its decl lists them), variant and slots' resources.
   const ParamValue& param(std::string_view name) const;
   std::string_view variant() const;
-  bool bound(std::string_view slot) const;  // optional inputs may be unbound
+  bool bound(std::string_view slot) const;  // optional inputs may be unbound (their producer culled)
   uint32_t resource(std::string_view slot) const;
   const ResourceDesc& desc(std::string_view slot) const { return graph.resources[resource(slot)].desc; }
   rhi::TextureId texture(std::string_view slot) const { return resources_.texture(resource(slot)); }

@@ -12,11 +12,6 @@ layout(set = 0, binding = 0) uniform Frame {
   Light lights[MAX_LIGHTS];
 } frame;
 
-layout(set = 1, binding = 0) uniform Object {
-  mat4 model;
-  mat4 normal_matrix;  // inverse transpose of the model's 3×3, in a mat4
-  vec4 albedo;
-  vec4 emissive;       // radiance
-} object;
+#include "object_uniforms.glsl"
 
 #endif

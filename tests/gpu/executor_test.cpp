@@ -121,14 +121,49 @@ TEST_F(ExecutorTest, PointLightRadianceMatchesTheCpuTwin) {
   }
 }
 
-TEST_F(ExecutorTest, APassWithoutAnImplementationIsNamed) {
-  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_primitives.json", registry_);
+// The same plane with its shadow map wired: nothing occludes it, so still exactly ρE/π
+// (the depth bias keeps the plane from shadowing itself).
+TEST_F(ExecutorTest, ShadowMappedPlaneDoesNotShadowItself) {
+  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/lambert_plane.json", registry_);
+  const Texels t = render(c, {});
+  for (size_t i = 0; i < t.rgba.size(); i += 4) ASSERT_EQ(t.rgba[i], 0.5f) << "texel " << i / 4;
+}
+
+// DESIGN.md: a surface in full shadow renders only what other terms give it — here the
+// ambient irradiance A: ρA/π under the slab, ρ(E + A)/π in the open (fp16: 2e-3 relative).
+TEST_F(ExecutorTest, FullShadowLeavesOnlyTheOtherTerms) {
+  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/full_shadow.json", registry_);
+  const Texels t = render(c, {});
+  const Scene& scene = c.config.scene;
+  const double shadowed = 0.5 * 0.4 / M_PI, open = 0.5 * (M_PI + 0.4) / M_PI;
+  int in_shadow = 0, in_light = 0;
+  for (uint32_t j = 0; j < t.height; ++j) {
+    for (uint32_t i = 0; i < t.width; ++i) {
+      const Vec3 d = shading::pixel_ray(scene.camera, t.width, t.height, i, j);
+      if (d[1] >= 0) continue;
+      const double s = -scene.camera.position[1] / d[1];
+      const double x = scene.camera.position[0] + s * d[0], z = scene.camera.position[2] + s * d[2];
+      const bool under = std::abs(x) < 0.8 && std::abs(z) < 0.8;        // well inside the slab's shadow
+      const bool clear = std::abs(x) > 1.2 || std::abs(z) > 1.2;        // well outside it
+      if ((!under && !clear) || std::abs(x) > 14 || std::abs(z) > 14) continue;  // on the 30 m plane
+      const float got = t.rgba[4 * (j * t.width + i)];
+      EXPECT_NEAR(got, under ? shadowed : open, 2e-3 * (under ? shadowed : open)) << i << ", " << j;
+      (under ? in_shadow : in_light) += 1;
+    }
+  }
+  EXPECT_GT(in_shadow, 20);
+  EXPECT_GT(in_light, 20);
+}
+
+TEST_F(ExecutorTest, WhatCannotRunYetIsNamed) {
+  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_helmet.json", registry_);
   try {
     Executor executor(*device_, c.graph, &c.config.scene, {});
+    executor.run_frame();  // passes prepare their GPU objects on their first frame
     FAIL() << "expected a DeviceError";
   } catch (const DeviceError& e) {
     EXPECT_EQ(e.kind, DeviceError::Kind::unsupported);
-    EXPECT_NE(std::string(e.what()).find("pass \"sun_shadow\" (shadow_map) has no GPU implementation yet"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("glTF objects (scene object 0) have no GPU implementation yet"), std::string::npos)
         << e.what();
   }
 }

@@ -1,0 +1,21 @@
+// The scene pass's fragment body. The including shader defines
+// `float light_visibility(int light, vec3 p)` first (1 when unshadowed).
+#ifndef VOLGRAPH_SCENE_SHADING_GLSL
+#define VOLGRAPH_SCENE_SHADING_GLSL
+#include "scene_uniforms.glsl"
+
+layout(location = 0) in vec3 world_position;
+layout(location = 1) in vec3 world_normal;
+layout(location = 0) out vec4 radiance;
+
+void main() {
+  vec3 n = normalize(world_normal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 e = frame.ambient_irradiance.rgb;
+  for (int i = 0; i < frame.counts.x; ++i) {
+    e += irradiance(frame.lights[i], world_position, n) * light_visibility(i, world_position);
+  }
+  radiance = vec4(lambert(object.albedo.rgb, e) + object.emissive.rgb, 1.0);
+}
+
+#endif

@@ -1,0 +1,11 @@
+// What shadow_map tells the passes that sample it (its light_view buffer, std140).
+#ifndef VOLGRAPH_SHADOW_VIEW_GLSL
+#define VOLGRAPH_SHADOW_VIEW_GLSL
+
+struct ShadowView {
+  mat4 light_view_projection;  // world → the shadow map's clip space
+  vec4 params;                 // x depth bias (normalised depth), y PCF radius (texels), w shadowed light index
+  ivec4 mode;                  // x: 1 PCF, 0 one tap
+};
+
+#endif
