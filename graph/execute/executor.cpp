@@ -87,7 +87,9 @@ void Executor::run_frame() {
     cpu_ms[pos] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (queries_) encoder->write_timestamp(queries_, 2 * pos + 1);
   }
+  const auto submitted = std::chrono::steady_clock::now();
   device_.submit(std::move(encoder));
+  frame_wall_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - submitted).count();
   timings_.clear();
   const std::vector<double> ns =
       queries_ ? device_.read_timestamps(queries_, 0, uint32_t(2 * plan_.order.size())) : std::vector<double>{};

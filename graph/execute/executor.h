@@ -36,6 +36,7 @@ class Executor {
   const Plan& plan() const { return plan_; }
   void run_frame();
   const std::vector<PassTiming>& timings() const { return timings_; }
+  double frame_wall_ms() const { return frame_wall_ms_; }  // submit to completion, last frame
   // Graph output `index` (a 2D float texture) after the last frame.
   Texels read_output(size_t index);
 
@@ -51,6 +52,7 @@ class Executor {
   rhi::QuerySetId queries_;
   std::vector<PassTiming> timings_;
   uint64_t frame_ = 0;
+  double frame_wall_ms_ = 0;
 };
 
 }  // namespace volgraph
