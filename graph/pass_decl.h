@@ -5,11 +5,13 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "graph/access.h"
+#include "graph/config/diagnostics.h"
 #include "graph/resource.h"
 #include "graph/scene_features.h"
 
@@ -64,6 +66,7 @@ struct SlotDecl {
 struct ParamProblem {
   std::string param;
   std::string message;
+  std::optional<Where> where = std::nullopt;  // set when the problem is elsewhere in the config (a scene object)
 };
 
 struct PassDecl;

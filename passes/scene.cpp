@@ -7,6 +7,7 @@
 #include "graph/scene/scene.h"
 #include "passes/passes.h"
 #include "passes/shading/camera.h"
+#include "passes/shading/gltf.h"
 #include "passes/shading/scene_geometry.h"
 #include "shaders/shader_library.h"
 
@@ -44,6 +45,22 @@ GpuLight gpu_light(const Light& l) {
   g.direction_cos_outer[3] = cos_outer;
   g.power_cos_inner[3] = cos_inner;
   return g;
+}
+
+// glTF files must load: a malformed one is bad input, reported at the object's "file".
+std::vector<ParamProblem> check_models(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
+  std::vector<ParamProblem> problems;
+  for (const Object& o : scene.objects) {
+    if (o.shape != Shape::gltf) continue;
+    try {
+      shading::load_gltf(o.file);
+    } catch (const std::exception& e) {
+      Where where = o.where;
+      where.pointer += "/file";
+      problems.push_back({"", o.file + ": " + e.what(), where});
+    }
+  }
+  return problems;
 }
 
 // Rasterises the scene's objects, lit (shaders/scene.vert, scene.frag).
@@ -152,6 +169,7 @@ PassDecl scene_pass() {
                "scene depth, for later passes (fog, translucency)"),
   };
   d.slots[0].format = Format::d32_float;
+  d.check_scene = check_models;
   d.make_execution = [] { return std::unique_ptr<PassExecution>(new SceneExecution()); };
   return d;
 }

@@ -8,7 +8,7 @@ packages=(
   nlohmann-json3-dev googletest libgtest-dev libbenchmark-dev
   graphviz
   libvulkan-dev vulkan-validationlayers glslang-tools spirv-tools
-  libstb-dev libopenexr-dev
+  libstb-dev libopenexr-dev libtinygltf-dev
 )
 # Dawn refuses bookworm's lavapipe (Mesa 22); Mesa 25 comes from bookworm-backports.
 backports=(mesa-vulkan-drivers)

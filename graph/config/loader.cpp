@@ -458,6 +458,10 @@ class Wiring {
     if (!decl.check_scene || (decl.needs & ~config_.scene.features())) return;
     const PassNode& node = config_.passes[p];
     for (const ParamProblem& problem : decl.check_scene(decl, config_.scene, params_[p])) {
+      if (problem.where) {
+        diags_.error(*problem.where, problem.message);
+        continue;
+      }
       Where where = node.where;
       for (const ParamSetting& s : node.params) {
         if (s.name == problem.param) where = s.where;

@@ -7,6 +7,7 @@
 
 #include "graph/rhi/rhi.h"
 #include "graph/scene/scene.h"
+#include "passes/shading/camera.h"
 
 namespace volgraph::shading {
 
@@ -18,7 +19,7 @@ struct GpuObject {
 
 class SceneGeometry {
  public:
-  // Throws DeviceError for objects that cannot be drawn yet (glTF).
+  // glTF objects are loaded here (throws std::runtime_error for a broken file).
   SceneGeometry(rhi::Device& device, const Scene& scene);
   const std::vector<GpuObject>& objects() const { return objects_; }
   rhi::BindGroupLayoutId layout() const { return layout_; }
@@ -29,6 +30,9 @@ class SceneGeometry {
   void draw(rhi::CommandEncoder& encoder, uint32_t set) const;
 
  private:
+  void add(rhi::Device& device, const std::vector<float>& vertices, const std::vector<uint32_t>& indices, const Mat4& model,
+           const Vec3& albedo, const Vec3& emissive);
+
   rhi::BindGroupLayoutId layout_;
   std::vector<GpuObject> objects_;
   Vec3 min_{1e30, 1e30, 1e30}, max_{-1e30, -1e30, -1e30};

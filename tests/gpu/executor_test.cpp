@@ -155,15 +155,26 @@ TEST_F(ExecutorTest, FullShadowLeavesOnlyTheOtherTerms) {
   EXPECT_GT(in_light, 20);
 }
 
-TEST_F(ExecutorTest, WhatCannotRunYetIsNamed) {
-  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_helmet.json", registry_);
+TEST_F(ExecutorTest, APassTypeWithoutAnImplementationIsNamed) {
+  PassDecl future;
+  future.name = "future_technique";
+  future.kind = PassKind::compute;
+  future.variants = {{"default", ""}};
+  future.slots = {slot_inout("color", ResourceKind::texture2d, Usage::storage_read_write, "")};
+  registry_.add(future);
+  const std::string text = R"({
+    "output": { "size": [8, 8] },
+    "graph": { "passes": [
+      { "name": "c", "type": "clear" },
+      { "name": "f", "type": "future_technique", "inputs": { "color": "c.target" } }
+    ], "outputs": ["f.color"] } })";
+  const LoadedConfig c = load_config_text("test.json", text, registry_);
   try {
     Executor executor(*device_, c.graph, &c.config.scene, {});
-    executor.run_frame();  // passes prepare their GPU objects on their first frame
     FAIL() << "expected a DeviceError";
   } catch (const DeviceError& e) {
     EXPECT_EQ(e.kind, DeviceError::Kind::unsupported);
-    EXPECT_NE(std::string(e.what()).find("glTF objects (scene object 0) have no GPU implementation yet"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("pass \"f\" (future_technique) has no GPU implementation yet"), std::string::npos)
         << e.what();
   }
 }
