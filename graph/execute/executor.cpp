@@ -78,6 +78,8 @@ void Executor::run_frame() {
   auto encoder = device_.create_command_encoder("frame " + std::to_string(frame_));
   std::vector<double> cpu_ms(plan_.order.size());
   for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
+    const GraphPass& pass = graph_.passes[plan_.order[pos].pass];
+    encoder->push_debug_group(pass.name + " (" + pass.decl->name + ")");
     const std::vector<rhi::ResourceBarrier> barriers = barriers_before(pos);
     if (!barriers.empty()) encoder->barrier(barriers);
     if (queries_) encoder->write_timestamp(queries_, 2 * pos);
@@ -86,6 +88,7 @@ void Executor::run_frame() {
     executions_[pos]->record(context);
     cpu_ms[pos] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (queries_) encoder->write_timestamp(queries_, 2 * pos + 1);
+    encoder->pop_debug_group();
   }
   const auto submitted = std::chrono::steady_clock::now();
   device_.submit(std::move(encoder));

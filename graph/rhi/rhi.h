@@ -207,6 +207,10 @@ class CommandEncoder {
  public:
   virtual ~CommandEncoder() = default;
 
+  // Labels a stretch of commands (a pass) for validation messages and frame debuggers.
+  virtual void push_debug_group(std::string_view label) = 0;
+  virtual void pop_debug_group() = 0;
+
   // Transitions before the next command; all given together are batched.
   virtual void barrier(std::span<const ResourceBarrier> barriers) = 0;
 

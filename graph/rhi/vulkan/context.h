@@ -51,6 +51,11 @@ class Context {
   // Labels an object for validation messages and frame debuggers (VK_EXT_debug_utils).
   void set_name(VkObjectType type, uint64_t handle, const std::string& name) const;
 
+  // Command-buffer labels (VK_EXT_debug_utils), when the loader has the extension.
+  bool has_debug_labels() const { return begin_label_ != nullptr; }
+  void begin_label(VkCommandBuffer cmd, const VkDebugUtilsLabelEXT& label) const { begin_label_(cmd, &label); }
+  void end_label(VkCommandBuffer cmd) const { end_label_(cmd); }
+
   // Validation messages (warnings and errors) since the last take.
   std::vector<std::string> take_validation_messages();
 
@@ -76,6 +81,8 @@ class Context {
   uint32_t queue_family_ = 0;
   VkCommandPool pool_ = VK_NULL_HANDLE;
   PFN_vkSetDebugUtilsObjectNameEXT set_name_ = nullptr;
+  PFN_vkCmdBeginDebugUtilsLabelEXT begin_label_ = nullptr;
+  PFN_vkCmdEndDebugUtilsLabelEXT end_label_ = nullptr;
   DeviceInfo info_;
   VkPhysicalDeviceLimits limits_{};
   VkPhysicalDeviceMemoryProperties memory_{};

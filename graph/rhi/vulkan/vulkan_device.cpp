@@ -125,6 +125,18 @@ class VulkanEncoder final : public rhi::CommandEncoder {
     vkCmdPipelineBarrier2(cmd_, &dep);
   }
 
+  void push_debug_group(std::string_view label) override {
+    const Context& c = device_.context();
+    if (!c.has_debug_labels()) return;
+    const std::string text(label);
+    VkDebugUtilsLabelEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+    info.pLabelName = text.c_str();
+    c.begin_label(cmd_, info);
+  }
+  void pop_debug_group() override {
+    if (device_.context().has_debug_labels()) device_.context().end_label(cmd_);
+  }
+
   void begin_compute_pass(std::string_view label) override { label_ = std::string(label); }
   void set_pipeline(rhi::ComputePipelineId id) override {
     pipeline_ = device_.pipeline(id);
