@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -50,6 +51,7 @@ options (render):
   --timings                    per-pass GPU and CPU times of the last frame, JSON on stdout
   --timings-out FILE           the same JSON to FILE
   --validation                 run under the Khronos validation layer (synchronization too)
+  --dump PASS.SLOT=FILE        also write that resource: 2D textures as images, buffers raw (.bin)
 )";
 
 struct Args {
@@ -62,6 +64,7 @@ struct Args {
   int frames = 1;
   bool timings = false, validation = false;
   std::string timings_out;
+  std::vector<std::string> dumps;
   CompileOptions compile;
   Overrides overrides;
 };
@@ -121,6 +124,10 @@ std::optional<int> parse(int argc, char** argv, Args& args) {
       const long low = w == "--device" ? 0 : 1;
       if (*end || n < low || n > 100000) return bad_usage(w + " expects a whole number ≥ " + std::to_string(low) + ", got \"" + *v + "\"");
       (w == "--device" ? args.device : args.frames) = int(n);
+    } else if (w == "--dump") {
+      const auto v = value("--dump");
+      if (!v) return kBadInput;
+      args.dumps.push_back(*v);
     } else if (w == "--timings") {
       args.timings = true;
     } else if (w == "--validation") {
@@ -239,7 +246,55 @@ std::string timings_json(const std::vector<PassTiming>& timings, const rhi::Adap
   return o.str();
 }
 
-int render(const Args& args, const LoadedConfig& loaded) {
+struct Dump {
+  uint32_t resource;
+  std::string file;
+};
+
+// --dump PASS.SLOT=FILE: the resource that slot holds at the end of the pass, kept alive
+// to the end of the frame (a graph output) so that no aliasing overwrites it first.
+std::vector<Dump> add_dumps(const std::vector<std::string>& requests, Graph& graph) {
+  std::vector<Dump> dumps;
+  for (const std::string& request : requests) {
+    const Where where{"<command line>", "--dump " + request, 0};
+    auto fail = [&](const std::string& message) { throw ConfigError({{where, message}}); };
+    const size_t dot = request.find('.'), eq = request.find('=');
+    if (dot == std::string::npos || eq == std::string::npos || eq < dot) fail("expected --dump PASS.SLOT=FILE");
+    const std::string pass = request.substr(0, dot), slot = request.substr(dot + 1, eq - dot - 1), file = request.substr(eq + 1);
+    const auto p = std::find_if(graph.passes.begin(), graph.passes.end(), [&](const GraphPass& g) { return g.name == pass; });
+    if (p == graph.passes.end()) fail("no pass named \"" + pass + "\"");
+    const int s = p->decl->slot_index(slot);
+    const auto use = std::find_if(p->uses.begin(), p->uses.end(), [&](const ResourceUse& u) { return int(u.slot) == s; });
+    if (s < 0 || use == p->uses.end()) fail("pass \"" + pass + "\" has no bound slot \"" + slot + "\"");
+    const uint32_t version = use->direction == SlotDirection::inout ? use->version + 1 : use->version;
+    const GraphResource& r = graph.resources[use->resource];
+    if (version + 1 != r.version_writers.size()) {
+      fail(pass + "." + slot + " is modified later by pass \"" + graph.passes[r.version_writers[version + 1]].name +
+           "\"; dump that pass's slot");
+    }
+    const bool buffer = r.desc.kind == ResourceKind::buffer;
+    if (buffer ? file.size() < 4 || file.compare(file.size() - 4, 4, ".bin") != 0 : !image_format_for(file)) {
+      fail(buffer ? "a buffer dumps to a .bin file" : "a texture dumps to a .png, .exr or .pfm file");
+    }
+    if (std::find(graph.outputs.begin(), graph.outputs.end(), ResourceVersion{use->resource, version}) == graph.outputs.end()) {
+      graph.outputs.push_back({use->resource, version});
+    }
+    dumps.push_back({use->resource, file});
+  }
+  return dumps;
+}
+
+void write_bytes(const std::string& file, const std::vector<std::byte>& bytes) {
+  const std::string temporary = file + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    if (!out) throw ConfigError({{{"<command line>", "--dump " + file, 0}, "cannot write it"}});
+  }
+  std::rename(temporary.c_str(), file.c_str());
+}
+
+int render(const Args& args, LoadedConfig loaded) {
   if (args.output.empty()) return bad_usage("render needs -o OUT (.png, .exr or .pfm)");
   if (!image_format_for(args.output)) {
     throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
@@ -250,10 +305,19 @@ int render(const Args& args, const LoadedConfig& loaded) {
   }
   auto context = vulkan::Context::create({.validation = args.validation, .device_index = args.device});
   vulkan::VulkanDevice device(*context);
+  const std::vector<Dump> dumps = add_dumps(args.dumps, loaded.graph);
   Executor executor(device, loaded.graph, &loaded.config.scene, args.compile);
   for (int f = 0; f < args.frames; ++f) executor.run_frame();
   const Texels texels = executor.read_output(0);
   write_image(args.output, Image{texels.width, texels.height, texels.rgba});
+  for (const Dump& d : dumps) {
+    if (loaded.graph.resources[d.resource].desc.kind == ResourceKind::buffer) {
+      write_bytes(d.file, executor.read_buffer(d.resource));
+    } else {
+      const Texels t = executor.read_texture(d.resource);
+      write_image(d.file, Image{t.width, t.height, t.rgba}, "--dump");
+    }
+  }
   const std::string timings = timings_json(executor.timings(), device.info(), args.frames, executor.frame_wall_ms());
   if (args.timings) std::cout << timings;
   if (!args.timings_out.empty()) std::ofstream(args.timings_out) << timings;
@@ -274,7 +338,7 @@ int run(const Args& args, const PassRegistry& registry) {
     return bad_usage("unknown command \"" + args.command + "\"");
   }
   if (args.config.empty()) return bad_usage(args.command + " needs a CONFIG file");
-  const LoadedConfig loaded = load_config(args.config, registry, args.overrides);
+  LoadedConfig loaded = load_config(args.config, registry, args.overrides);
   const Plan plan = compile_loaded(loaded, args.compile);
   const PlanReportContext context{args.config};
   if (args.command == "validate") {
@@ -288,7 +352,7 @@ int run(const Args& args, const PassRegistry& registry) {
                              : plan_text(loaded.graph, plan, context));
     return kOk;
   }
-  return render(args, loaded);
+  return render(args, std::move(loaded));
 }
 
 }  // namespace

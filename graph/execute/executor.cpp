@@ -104,42 +104,74 @@ void Executor::run_frame() {
   ++frame_;
 }
 
-Texels Executor::read_output(size_t index) {
-  const uint32_t r = graph_.outputs.at(index).resource;
-  const ResourceDesc& d = graph_.resources[r].desc;
-  if (d.kind != ResourceKind::texture2d || (d.format != Format::rgba32_float && d.format != Format::rgba16_float)) {
-    throw DeviceError(DeviceError::Kind::unsupported, "output " + d.name + " is not an rgba32_float or rgba16_float texture");
-  }
-  // The state its last use left it in.
+// The state the resource's last use in the frame left it in.
+AccessState Executor::last_state(uint32_t r) const {
   AccessState last{};
   for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
     const GraphPass& p = graph_.passes[plan_.order[pos].pass];
     for (const ResourceUse& u : p.uses) {
-      if (u.resource == r) last = access_state(u.usage, p.kind, d.kind);
+      if (u.resource == r) last = access_state(u.usage, p.kind, graph_.resources[r].desc.kind);
     }
   }
+  return last;
+}
+
+Texels Executor::read_texture(uint32_t r) {
+  const ResourceDesc& d = graph_.resources[r].desc;
+  const bool mono = d.format == Format::r32_float || d.format == Format::d32_float;
+  if (d.kind != ResourceKind::texture2d ||
+      (d.format != Format::rgba32_float && d.format != Format::rgba16_float && !mono)) {
+    throw DeviceError(DeviceError::Kind::unsupported,
+                      d.name + " is a " + std::string(kind_name(d.kind)) + " of " + std::string(format_info(d.format).name) +
+                          "; reading back takes 2D rgba32_float, rgba16_float, r32_float or d32_float textures");
+  }
+  if (!resources_->texture(r)) throw DeviceError(DeviceError::Kind::other, d.name + " was not used in the last frame");
   const uint32_t texel_bytes = format_info(d.format).bytes_per_texel;
   const rhi::BufferId readback = device_.create_buffer(
       {d.name + " read-back", uint64_t(d.extent.width) * d.extent.height * texel_bytes, rhi::buffer_usage::copy_dst});
-  auto encoder = device_.create_command_encoder("read output");
-  const rhi::ResourceBarrier to_copy{resources_->texture(r), {}, last,
+  auto encoder = device_.create_command_encoder("read " + d.name);
+  const rhi::ResourceBarrier to_copy{resources_->texture(r), {}, last_state(r),
                                      access_state(Usage::copy_src, PassKind::transfer, d.kind)};
   encoder->barrier({&to_copy, 1});
   encoder->copy_texture_to_buffer(resources_->texture(r), readback, 0);
   device_.submit(std::move(encoder));
   const std::vector<std::byte> raw = device_.read_buffer(readback);
   device_.destroy(readback);
-  Texels out{d.extent.width, d.extent.height, std::vector<float>(size_t(d.extent.width) * d.extent.height * 4)};
-  if (d.format == Format::rgba32_float) {
-    std::memcpy(out.rgba.data(), raw.data(), out.rgba.size() * 4);
-  } else {
-    for (size_t i = 0; i < out.rgba.size(); ++i) {
-      uint16_t h;
-      std::memcpy(&h, raw.data() + 2 * i, 2);
-      out.rgba[i] = half_to_float(h);
+  const size_t texels = size_t(d.extent.width) * d.extent.height;
+  Texels out{d.extent.width, d.extent.height, std::vector<float>(texels * 4, 1.0f)};
+  for (size_t t = 0; t < texels; ++t) {
+    if (mono) {
+      float v;
+      std::memcpy(&v, raw.data() + 4 * t, 4);
+      out.rgba[4 * t] = out.rgba[4 * t + 1] = out.rgba[4 * t + 2] = v;
+    } else if (d.format == Format::rgba32_float) {
+      std::memcpy(&out.rgba[4 * t], raw.data() + 16 * t, 16);
+    } else {
+      for (size_t c = 0; c < 4; ++c) {
+        uint16_t h;
+        std::memcpy(&h, raw.data() + 8 * t + 2 * c, 2);
+        out.rgba[4 * t + c] = half_to_float(h);
+      }
     }
   }
   return out;
+}
+
+std::vector<std::byte> Executor::read_buffer(uint32_t r) {
+  const ResourceDesc& d = graph_.resources[r].desc;
+  if (d.kind != ResourceKind::buffer || !resources_->buffer(r)) {
+    throw DeviceError(DeviceError::Kind::other, d.name + " is not a buffer used in the last frame");
+  }
+  const rhi::BufferId readback = device_.create_buffer({d.name + " read-back", d.buffer_bytes, rhi::buffer_usage::copy_dst});
+  auto encoder = device_.create_command_encoder("read " + d.name);
+  const rhi::ResourceBarrier to_copy{{}, resources_->buffer(r), last_state(r),
+                                     access_state(Usage::copy_src, PassKind::transfer, d.kind)};
+  encoder->barrier({&to_copy, 1});
+  encoder->copy_buffer_to_buffer(resources_->buffer(r), readback, d.buffer_bytes);
+  device_.submit(std::move(encoder));
+  std::vector<std::byte> bytes = device_.read_buffer(readback);
+  device_.destroy(readback);
+  return bytes;
 }
 
 }  // namespace volgraph

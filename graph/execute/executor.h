@@ -37,11 +37,15 @@ class Executor {
   void run_frame();
   const std::vector<PassTiming>& timings() const { return timings_; }
   double frame_wall_ms() const { return frame_wall_ms_; }  // submit to completion, last frame
-  // Graph output `index` (a 2D float texture) after the last frame.
-  Texels read_output(size_t index);
+  // Graph output `index` (a 2D texture: rgba32/16 float, r32 float or d32 float; one
+  // channel is copied to RGB) after the last frame.
+  Texels read_output(size_t index) { return read_texture(graph_.outputs.at(index).resource); }
+  Texels read_texture(uint32_t resource);
+  std::vector<std::byte> read_buffer(uint32_t resource);
 
  private:
   std::vector<rhi::ResourceBarrier> barriers_before(uint32_t position) const;
+  AccessState last_state(uint32_t resource) const;
 
   rhi::Device& device_;
   const Graph& graph_;

@@ -5,6 +5,7 @@
 #   cli_test.sh VOLGRAPH render CONFIG    render writes a PFM, or names the pass with no GPU implementation
 #                                         yet (exit 1) and writes nothing
 #   cli_test.sh VOLGRAPH usage            bad command lines exit 2 with one message
+#   cli_test.sh VOLGRAPH dump CONFIG      --dump writes intermediates; a bad --dump exits 2 and writes nothing
 set -uo pipefail
 volgraph=$1 mode=$2 config=${3:-}
 tmp=$(mktemp -d)
@@ -65,6 +66,20 @@ got: $(cat "$tmp/err")"
     "$volgraph" plan /no/such.json 2>"$tmp/err"
     [ $? -eq 2 ] || fail "missing config must exit 2"
     grep -q "/no/such.json: error: cannot read" "$tmp/err" || fail "missing config message: $(cat "$tmp/err")"
+    ;;
+  dump)
+    "$volgraph" render "$config" -o "$tmp/frame.pfm" --size 64x36 --dump lit.color="$tmp/lit.pfm" \
+      --dump sun_shadow.depth="$tmp/depth.pfm" --dump sun_shadow.light_view="$tmp/view.bin" 2>"$tmp/err" ||
+      fail "render with --dump: $(cat "$tmp/err")"
+    [ "$(head -c 2 "$tmp/lit.pfm")" = "PF" ] && [ "$(head -c 2 "$tmp/depth.pfm")" = "PF" ] || fail "dumped images missing"
+    [ "$(wc -c <"$tmp/view.bin")" -eq 256 ] || fail "light_view dump is not 256 bytes"
+    rm -f "$tmp"/*.pfm "$tmp"/*.bin
+    for bad in "lit.colour=$tmp/x.pfm" "nobody.color=$tmp/x.pfm" "lit.color=$tmp/x.bin" "sun_shadow.light_view=$tmp/x.png" "lit.color"; do
+      "$volgraph" render "$config" -o "$tmp/frame.pfm" --size 64x36 --dump "$bad" >/dev/null 2>"$tmp/err"
+      code=$?
+      [ "$code" -eq 2 ] || fail "--dump $bad: exit $code (expected 2)"
+    done
+    [ -z "$(ls "$tmp" | grep -v '^err$')" ] || fail "a bad --dump left files: $(ls "$tmp")"
     ;;
   *) fail "unknown mode $mode" ;;
 esac
