@@ -79,6 +79,11 @@ VkBufferMemoryBarrier2 buffer_barrier(VkBuffer buffer, const AccessState& from, 
   return v;
 }
 
+VkMemoryBarrier2 memory_barrier(const AccessState& from, const AccessState& to) {
+  return {VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, to_vk_stages(from.stages), to_vk_access(from.access),
+          to_vk_stages(to.stages), to_vk_access(to.access)};
+}
+
 void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, uint32_t position,
                      const GraphResources& resources) {
   const PlannedPass& pass = plan.order[position];
@@ -89,8 +94,7 @@ void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, 
   for (uint32_t i = pass.barrier_begin; i < pass.barrier_begin + pass.barrier_count; ++i) {
     const Barrier& b = plan.barriers[i];
     if (b.resource == kNone) {
-      globals.push_back({VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, to_vk_stages(b.from.stages), to_vk_access(b.from.access),
-                         to_vk_stages(b.to.stages), to_vk_access(b.to.access)});
+      globals.push_back(memory_barrier(b.from, b.to));
       continue;
     }
     const ResourceDesc& d = graph.resources[b.resource].desc;

@@ -17,6 +17,7 @@ VkImageAspectFlags aspect_of(Format format);
 // One transition as a synchronization2 barrier.
 VkImageMemoryBarrier2 image_barrier(VkImage image, Format format, const AccessState& from, const AccessState& to);
 VkBufferMemoryBarrier2 buffer_barrier(VkBuffer buffer, const AccessState& from, const AccessState& to);
+VkMemoryBarrier2 memory_barrier(const AccessState& from, const AccessState& to);  // all memory
 
 // Records the barriers planned before order[position].
 void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, uint32_t position,

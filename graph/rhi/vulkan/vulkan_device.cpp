@@ -111,8 +111,7 @@ class VulkanEncoder final : public rhi::CommandEncoder {
       } else if (b.buffer) {
         buffers.push_back(buffer_barrier(device_.buffer(b.buffer).buffer, b.from, b.to));
       } else {
-        globals.push_back({VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, to_vk_stages(b.from.stages),
-                           to_vk_access(b.from.access), to_vk_stages(b.to.stages), to_vk_access(b.to.access)});
+        globals.push_back(memory_barrier(b.from, b.to));
       }
     }
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
