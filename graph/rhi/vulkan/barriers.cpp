@@ -104,6 +104,12 @@ void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, 
       images.push_back(image_barrier(resources.image(b.resource), d.format, b.from, b.to));
     }
   }
+  submit_barriers(cmd, globals, buffers, images);
+}
+
+void submit_barriers(VkCommandBuffer cmd, const std::vector<VkMemoryBarrier2>& globals,
+                     const std::vector<VkBufferMemoryBarrier2>& buffers, const std::vector<VkImageMemoryBarrier2>& images) {
+  if (globals.empty() && buffers.empty() && images.empty()) return;
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.memoryBarrierCount = uint32_t(globals.size());
   dep.pMemoryBarriers = globals.data();

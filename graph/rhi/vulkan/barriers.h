@@ -2,6 +2,8 @@
 // every transition before a pass in one vkCmdPipelineBarrier2.
 #pragma once
 
+#include <vector>
+
 #include <vulkan/vulkan.h>
 
 #include "graph/plan.h"
@@ -18,6 +20,10 @@ VkImageAspectFlags aspect_of(Format format);
 VkImageMemoryBarrier2 image_barrier(VkImage image, Format format, const AccessState& from, const AccessState& to);
 VkBufferMemoryBarrier2 buffer_barrier(VkBuffer buffer, const AccessState& from, const AccessState& to);
 VkMemoryBarrier2 memory_barrier(const AccessState& from, const AccessState& to);  // all memory
+
+// Records the three lists in one vkCmdPipelineBarrier2 (nothing when all are empty).
+void submit_barriers(VkCommandBuffer cmd, const std::vector<VkMemoryBarrier2>& globals,
+                     const std::vector<VkBufferMemoryBarrier2>& buffers, const std::vector<VkImageMemoryBarrier2>& images);
 
 // Records the barriers planned before order[position].
 void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, uint32_t position,

@@ -114,14 +114,7 @@ class VulkanEncoder final : public rhi::CommandEncoder {
         globals.push_back(memory_barrier(b.from, b.to));
       }
     }
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.memoryBarrierCount = uint32_t(globals.size());
-    dep.pMemoryBarriers = globals.data();
-    dep.imageMemoryBarrierCount = uint32_t(images.size());
-    dep.pImageMemoryBarriers = images.data();
-    dep.bufferMemoryBarrierCount = uint32_t(buffers.size());
-    dep.pBufferMemoryBarriers = buffers.data();
-    vkCmdPipelineBarrier2(cmd_, &dep);
+    submit_barriers(cmd_, globals, buffers, images);
   }
 
   void push_debug_group(std::string_view label) override {
