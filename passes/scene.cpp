@@ -9,6 +9,7 @@
 #include "passes/shading/camera.h"
 #include "passes/shading/gltf.h"
 #include "passes/shading/scene_geometry.h"
+#include "passes/shading/textures.h"
 #include "shaders/shader_library.h"
 
 namespace volgraph {
@@ -47,9 +48,18 @@ GpuLight gpu_light(const Light& l) {
   return g;
 }
 
-// glTF files must load: a malformed one is bad input, reported at the object's "file".
+// glTF files must load and textures decode: a malformed one is bad input, reported at
+// the object's "file" or the material's "albedo_texture".
 std::vector<ParamProblem> check_models(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
   std::vector<ParamProblem> problems;
+  for (const Material& m : scene.materials) {
+    if (m.albedo_texture.empty()) continue;
+    const std::string problem = shading::image_file_problem(m.albedo_texture);
+    if (problem.empty()) continue;
+    Where where = m.where;
+    where.pointer += "/albedo_texture";
+    problems.push_back({"", m.albedo_texture + ": " + problem, where});
+  }
   for (const Object& o : scene.objects) {
     if (o.shape != Shape::gltf) continue;
     try {
@@ -107,7 +117,7 @@ class SceneExecution final : public PassExecution {
     BindGroupEntry fe;
     fe.buffer = frame_;
     frame_group_ = c.device.create_bind_group({"scene frame", frame_layout, {fe}});
-    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, scene);
+    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, scene, shading::MaterialBinding::textured);
 
     // With a shadow map wired (and shadows on), its light is shadowed (set 2).
     const bool shadowed = c.bound("shadow_map") && c.bound("light_view") && std::get<bool>(c.param("shadows"));
@@ -130,7 +140,7 @@ class SceneExecution final : public PassExecution {
     pd.label = "scene";
     pd.vertex_module = c.device.create_shader_module("scene.vert", shader_spirv("scene.vert"));
     pd.fragment_module = c.device.create_shader_module(fragment, shader_spirv(fragment));
-    pd.vertex_buffers = {{24, {{0, VertexFormat::float32x3, 0}, {1, VertexFormat::float32x3, 12}}}};
+    pd.vertex_buffers = {shading::SceneGeometry::vertex_layout()};
     pd.colors = {{c.desc("color").format, BlendMode::replace}};
     pd.depth = {Format::d32_float, true, CompareFunction::less};
     pd.cull = CullMode::none;  // planes are seen from both sides

@@ -67,7 +67,7 @@ class ShadowMapExecution final : public PassExecution {
  private:
   void prepare(PassContext& c) {
     using namespace rhi;
-    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, *c.scene);
+    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, *c.scene, shading::MaterialBinding::factors);
     const BindGroupLayoutId layout =
         c.device.create_bind_group_layout({"shadow view", {{0, shader_stage::vertex, BindingType::uniform_buffer}}});
     view_ = c.device.create_buffer({"shadow view", sizeof(shading::ShadowViewBlock), buffer_usage::uniform});
@@ -77,7 +77,7 @@ class ShadowMapExecution final : public PassExecution {
     RenderPipelineDesc pd;
     pd.label = "shadow map";
     pd.vertex_module = c.device.create_shader_module("shadow.vert", shader_spirv("shadow.vert"));
-    pd.vertex_buffers = {{24, {{0, VertexFormat::float32x3, 0}}}};
+    pd.vertex_buffers = {shading::SceneGeometry::position_layout()};
     pd.depth = {Format::d32_float, true, CompareFunction::less, 0.0f, float(std::get<double>(c.param("slope_bias")))};
     pd.cull = CullMode::none;
     pd.layouts = {layout, geometry_->layout()};

@@ -17,6 +17,7 @@
 #include <stb/stb_image_write.h>
 
 #include "graph/config/diagnostics.h"
+#include "passes/shading/srgb.h"
 
 namespace volgraph {
 namespace {
@@ -28,7 +29,7 @@ namespace {
 bool write_png(const std::string& file, const Image& image) {
   std::vector<uint8_t> bytes(size_t(image.width) * image.height * 4);
   for (size_t i = 0; i < bytes.size(); ++i) {
-    const float v = (i % 4 == 3) ? std::clamp(image.rgba[i], 0.0f, 1.0f) : srgb_encode(image.rgba[i]);
+    const float v = (i % 4 == 3) ? std::clamp(image.rgba[i], 0.0f, 1.0f) : shading::srgb_encode(image.rgba[i]);
     bytes[i] = uint8_t(std::lround(v * 255.0f));
   }
   return stbi_write_png(file.c_str(), int(image.width), int(image.height), 4, bytes.data(), int(image.width * 4)) != 0;
@@ -65,11 +66,6 @@ bool write_pfm(const std::string& file, const Image& image) {
 }
 
 }  // namespace
-
-float srgb_encode(float linear) {
-  const float c = std::clamp(linear, 0.0f, 1.0f);
-  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
 
 std::optional<ImageFormat> image_format_for(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();

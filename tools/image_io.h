@@ -26,7 +26,4 @@ void write_image(const std::string& path, const Image& image, const std::string&
 // Reads a .pfm written by write_image (or any colour PFM). Throws ConfigError.
 Image read_pfm(const std::string& path);
 
-// IEC 61966-2-1 sRGB encoding of a linear value in [0, 1].
-float srgb_encode(float linear);
-
 }  // namespace volgraph

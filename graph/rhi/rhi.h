@@ -74,15 +74,19 @@ struct TextureDesc {
   Format format = Format::rgba16_float;
   Extent size{};
   uint32_t usage = 0;
+  uint32_t mip_levels = 1;  // level i is max(1, size >> i)
 };
 
 enum class Filter : uint8_t { nearest, linear };
-enum class AddressMode : uint8_t { clamp_to_edge, repeat };
+enum class AddressMode : uint8_t { clamp_to_edge, repeat, mirror_repeat };
 
 struct SamplerDesc {
   std::string label;
-  Filter filter = Filter::nearest;
-  AddressMode address = AddressMode::clamp_to_edge;
+  Filter filter = Filter::nearest;      // magnification and minification
+  Filter mip_filter = Filter::nearest;  // between mip levels
+  AddressMode address_u = AddressMode::clamp_to_edge;
+  AddressMode address_v = AddressMode::clamp_to_edge;
+  AddressMode address_w = AddressMode::clamp_to_edge;
 };
 
 enum class BindingType : uint8_t { uniform_buffer, storage_buffer, read_only_storage_buffer, sampled_texture, sampler, storage_texture };
@@ -266,7 +270,7 @@ class Device {
 
   virtual BufferId create_buffer(const BufferDesc& desc) = 0;
   virtual TextureId create_texture(const TextureDesc& desc) = 0;
-  virtual TextureViewId create_view(TextureId texture) = 0;  // the whole texture, its own format
+  virtual TextureViewId create_view(TextureId texture) = 0;  // the whole texture (every mip level), its own format
   virtual SamplerId create_sampler(const SamplerDesc& desc) = 0;
   virtual ShaderModuleId create_shader_module(std::string_view label, std::span<const uint32_t> spirv) = 0;
   virtual BindGroupLayoutId create_bind_group_layout(const BindGroupLayoutDesc& desc) = 0;
@@ -283,10 +287,14 @@ class Device {
   virtual void destroy(TextureId texture) = 0;
 
   // Queue writes, done before anything submitted later reads: a buffer written this way
-  // is ready for any use; a texture is left in the state `written_texture_state()`.
+  // is ready for any use; a texture is left ready to be sampled by any shader
+  // (`written_texture_state()`), as WebGPU's writeTexture leaves it.
   virtual void write_buffer(BufferId buffer, uint64_t offset, std::span<const std::byte> data) = 0;
-  virtual void write_texture(TextureId texture, std::span<const std::byte> texels) = 0;
-  static AccessState written_texture_state() { return {stage::copy, access::transfer_write, Layout::transfer_dst}; }
+  // One mip level's texels, rows tightly packed.
+  virtual void write_texture(TextureId texture, std::span<const std::byte> texels, uint32_t mip_level = 0) = 0;
+  static AccessState written_texture_state() {
+    return {stage::vertex_shader | stage::fragment_shader | stage::compute_shader, access::shader_sampled_read, Layout::shader_read_only};
+  }
 
   virtual std::unique_ptr<GraphResourceSet> create_graph_resources(const Graph& graph) = 0;
 

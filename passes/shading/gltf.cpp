@@ -13,6 +13,16 @@ namespace {
 
 [[noreturn]] void fail(const std::string& message) { throw std::runtime_error(message); }
 
+// The largest value of an unsigned component type (normalised integers map it to 1).
+double unsigned_max(int component_type) {
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 255.0;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 65535.0;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return 4294967295.0;
+    default: return 1.0;
+  }
+}
+
 // The accessor's elements as doubles (`components` per element), bounds-checked.
 std::vector<double> read_accessor(const tinygltf::Model& m, int index, int components) {
   if (index < 0 || size_t(index) >= m.accessors.size()) fail("accessor " + std::to_string(index) + " does not exist");
@@ -42,7 +52,7 @@ std::vector<double> read_accessor(const tinygltf::Model& m, int index, int compo
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = *p; break;
         default: fail("accessor " + std::to_string(index) + " has an unsupported component type");
       }
-      out[e * size_t(components) + size_t(c)] = v;
+      out[e * size_t(components) + size_t(c)] = a.normalized ? v / unsigned_max(a.componentType) : v;
     }
   }
   return out;
@@ -66,6 +76,47 @@ Mat4 node_matrix(const tinygltf::Node& n) {
   return t * r * s;
 }
 
+const tinygltf::Material* material_of(const tinygltf::Model& m, const tinygltf::Primitive& p) {
+  return p.material >= 0 && size_t(p.material) < m.materials.size() ? &m.materials[size_t(p.material)] : nullptr;
+}
+
+rhi::AddressMode address_mode(int gltf_wrap) {
+  switch (gltf_wrap) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return rhi::AddressMode::clamp_to_edge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return rhi::AddressMode::mirror_repeat;
+    default: return rhi::AddressMode::repeat;
+  }
+}
+
+// glTF texture `index` as an image and wrap modes (none for −1).
+GltfTexture texture(const tinygltf::Model& m, int index) {
+  if (index < 0) return {};
+  if (size_t(index) >= m.textures.size()) fail("texture " + std::to_string(index) + " does not exist");
+  const tinygltf::Texture& t = m.textures[size_t(index)];
+  if (t.source < 0 || size_t(t.source) >= m.images.size()) fail("texture " + std::to_string(index) + " has no image");
+  GltfTexture out;
+  out.image = t.source;
+  if (t.sampler >= 0 && size_t(t.sampler) < m.samplers.size()) {
+    out.wrap = {address_mode(m.samplers[size_t(t.sampler)].wrapS), address_mode(m.samplers[size_t(t.sampler)].wrapT)};
+  }
+  return out;
+}
+
+// The texture coordinates the material's textures use (base colour's set, else
+// emission's, else 0), as u, v pairs; empty when the primitive has none.
+std::vector<double> texture_coordinates(const tinygltf::Model& m, const tinygltf::Primitive& p, size_t vertex_count) {
+  int set = 0;
+  if (const tinygltf::Material* mat = material_of(m, p)) {
+    set = mat->pbrMetallicRoughness.baseColorTexture.index >= 0 ? mat->pbrMetallicRoughness.baseColorTexture.texCoord
+                                                                 : mat->emissiveTexture.texCoord;
+  }
+  const auto found = p.attributes.find("TEXCOORD_" + std::to_string(std::max(set, 0)));
+  if (found == p.attributes.end()) return {};
+  std::vector<double> uv = read_accessor(m, found->second, 2);
+  if (uv.size() != 2 * vertex_count) fail("TEXCOORD and POSITION differ in count");
+  return uv;
+}
+
 GltfPrimitive primitive(const tinygltf::Model& m, const tinygltf::Primitive& p, const Mat4& to_model) {
   GltfPrimitive out;
   const auto position = p.attributes.find("POSITION");
@@ -85,6 +136,7 @@ GltfPrimitive primitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
   const auto normal = p.attributes.find("NORMAL");
   const std::vector<double> nrm = normal != p.attributes.end() ? read_accessor(m, normal->second, 3) : std::vector<double>{};
   if (!nrm.empty() && nrm.size() != pos.size()) fail("NORMAL and POSITION differ in count");
+  const std::vector<double> uv = texture_coordinates(m, p, n);
   const Mat4 carry = normal_matrix(to_model);
   auto vertex = [&](size_t v, const Vec3& fallback_normal) {
     const Vec3 p3 = transform_point(to_model, {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]});
@@ -95,7 +147,8 @@ GltfPrimitive primitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
       const double l = std::sqrt(dot(nn, nn));
       nn = l > 0 ? Vec3{nn[0] / l, nn[1] / l, nn[2] / l} : fallback_normal;
     }
-    out.vertices.insert(out.vertices.end(), {float(p3[0]), float(p3[1]), float(p3[2]), float(nn[0]), float(nn[1]), float(nn[2])});
+    const float u = uv.empty() ? 0.0f : float(uv[2 * v]), w = uv.empty() ? 0.0f : float(uv[2 * v + 1]);
+    out.vertices.insert(out.vertices.end(), {float(p3[0]), float(p3[1]), float(p3[2]), float(nn[0]), float(nn[1]), float(nn[2]), u, w});
   };
   for (size_t t = 0; t < indices.size(); t += 3) {  // unindexed: flat normals need their own vertices
     const Vec3 a = transform_point(to_model, {pos[3 * indices[t]], pos[3 * indices[t] + 1], pos[3 * indices[t] + 2]});
@@ -109,15 +162,27 @@ GltfPrimitive primitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
       out.indices.push_back(uint32_t(out.indices.size()));
     }
   }
-  if (p.material >= 0 && size_t(p.material) < m.materials.size()) {
-    const tinygltf::Material& mat = m.materials[size_t(p.material)];
-    const auto& f = mat.pbrMetallicRoughness.baseColorFactor;
+  if (const tinygltf::Material* mat = material_of(m, p)) {
+    const auto& f = mat->pbrMetallicRoughness.baseColorFactor;
     if (f.size() >= 3) out.base_color = {f[0], f[1], f[2]};
-    out.base_color_texture = mat.pbrMetallicRoughness.baseColorTexture.index >= 0;
-    if (mat.emissiveFactor.size() == 3) out.emissive = {mat.emissiveFactor[0], mat.emissiveFactor[1], mat.emissiveFactor[2]};
-    out.emissive_texture = mat.emissiveTexture.index >= 0;
+    out.base_color_texture = texture(m, mat->pbrMetallicRoughness.baseColorTexture.index);
+    if (mat->emissiveFactor.size() == 3) out.emissive = {mat->emissiveFactor[0], mat->emissiveFactor[1], mat->emissiveFactor[2]};
+    out.emissive_texture = texture(m, mat->emissiveTexture.index);
   }
   return out;
+}
+
+// The images stay encoded (decoded by the passes that sample them); the loader only
+// checks that each is an image volgraph can decode.
+bool keep_encoded(tinygltf::Image* image, const int index, std::string* error, std::string*, int, int,
+                  const unsigned char* bytes, int size, void*) {
+  const std::string problem = image_problem(bytes, size_t(size));
+  if (!problem.empty()) {
+    *error = "image " + std::to_string(index) + (image->name.empty() ? "" : " (" + image->name + ")") + ": " + problem;
+    return false;
+  }
+  image->image.assign(bytes, bytes + size);
+  return true;
 }
 
 }  // namespace
@@ -132,6 +197,7 @@ GltfModel load_gltf(const std::string& path) {
   tinygltf::TinyGLTF loader;
   tinygltf::Model m;
   std::string error, warning;
+  loader.SetImageLoader(keep_encoded, nullptr);
   const bool binary = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
   const bool ok = binary ? loader.LoadBinaryFromFile(&m, &error, &warning, path)
                          : loader.LoadASCIIFromFile(&m, &error, &warning, path);
@@ -154,6 +220,10 @@ GltfModel load_gltf(const std::string& path) {
   if (size_t(scene) >= m.scenes.size()) fail("the default scene does not exist");
   for (int root : m.scenes[size_t(scene)].nodes) visit(root, Mat4::identity(), 0);
   if (model.primitives.empty()) fail("the default scene has no triangles");
+  for (size_t i = 0; i < m.images.size(); ++i) {
+    const std::string name = m.images[i].name.empty() ? m.images[i].uri : m.images[i].name;
+    model.images.push_back({path + " image " + std::to_string(i) + (name.empty() ? "" : " (" + name + ")"), std::move(m.images[i].image)});
+  }
   return model;
 }
 

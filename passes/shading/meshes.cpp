@@ -5,17 +5,20 @@
 namespace volgraph::shading {
 namespace {
 
-void add_vertex(Mesh& m, double x, double y, double z, double nx, double ny, double nz) {
-  m.vertices.insert(m.vertices.end(), {float(x), float(y), float(z), float(nx), float(ny), float(nz)});
+void add_vertex(Mesh& m, const Vec3& p, const Vec3& n, double u, double v) {
+  m.vertices.insert(m.vertices.end(), {float(p[0]), float(p[1]), float(p[2]), float(n[0]), float(n[1]), float(n[2]), float(u), float(v)});
 }
 
-// A quad with corners origin, origin+u, origin+u+v, origin+v (counter-clockwise about n = u × v).
+Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+
+// A quad with corners origin, origin+u, origin+u+v, origin+v (counter-clockwise about
+// n = u × v); the image spans it with its top row along the v end.
 void add_quad(Mesh& m, const Vec3& o, const Vec3& u, const Vec3& v, const Vec3& n) {
-  const uint32_t base = uint32_t(m.vertices.size() / 6);
-  add_vertex(m, o[0], o[1], o[2], n[0], n[1], n[2]);
-  add_vertex(m, o[0] + u[0], o[1] + u[1], o[2] + u[2], n[0], n[1], n[2]);
-  add_vertex(m, o[0] + u[0] + v[0], o[1] + u[1] + v[1], o[2] + u[2] + v[2], n[0], n[1], n[2]);
-  add_vertex(m, o[0] + v[0], o[1] + v[1], o[2] + v[2], n[0], n[1], n[2]);
+  const uint32_t base = uint32_t(m.vertices.size() / kMeshVertexFloats);
+  add_vertex(m, o, n, 0, 1);
+  add_vertex(m, plus(o, u), n, 1, 1);
+  add_vertex(m, plus(plus(o, u), v), n, 1, 0);
+  add_vertex(m, plus(o, v), n, 0, 0);
   m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
 }
 
@@ -39,7 +42,7 @@ Mesh sphere(double r) {
     for (int j = 0; j <= segments; ++j) {
       const double phi = 2 * M_PI * j / segments;
       const double nx = std::sin(theta) * std::cos(phi), ny = std::cos(theta), nz = -std::sin(theta) * std::sin(phi);
-      add_vertex(m, r * nx, r * ny, r * nz, nx, ny, nz);
+      add_vertex(m, {r * nx, r * ny, r * nz}, {nx, ny, nz}, double(j) / segments, double(i) / rings);  // latitude-longitude
     }
   }
   for (int i = 0; i < rings; ++i) {

@@ -1,6 +1,7 @@
 // Triangle meshes of the scene's primitive shapes, in object space (DESIGN.md: plane of
 // x and z extent `size`, normal +Y; box of edges `size`; sphere of radius size[0]),
-// counter-clockwise seen from outside.
+// counter-clockwise seen from outside, with texture coordinates (each face of a box and
+// the plane span the image once; spheres map it by latitude and longitude).
 #pragma once
 
 #include <cstdint>
@@ -10,8 +11,12 @@
 
 namespace volgraph::shading {
 
+// Vertex layout of every mesh the scene passes draw (glTF ones too): position xyz,
+// normal xyz, texture coordinate uv, as floats.
+constexpr uint32_t kMeshVertexFloats = 8;
+
 struct Mesh {
-  std::vector<float> vertices;  // position xyz, normal xyz
+  std::vector<float> vertices;  // kMeshVertexFloats per vertex
   std::vector<uint32_t> indices;
 };
 

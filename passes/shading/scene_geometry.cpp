@@ -9,64 +9,123 @@
 namespace volgraph::shading {
 namespace {
 
-struct ObjectBlock {  // std140, shaders/include/scene_uniforms.glsl
+struct ObjectBlock {  // std140, shaders/include/object_uniforms.glsl
   float model[16];
   float normal_matrix[16];
   float albedo[4];
   float emissive[4];
 };
 
+rhi::BindGroupLayoutDesc object_layout(MaterialBinding binding) {
+  using namespace rhi;
+  BindGroupLayoutDesc desc{"scene object", {{0, shader_stage::vertex | shader_stage::fragment, BindingType::uniform_buffer}}};
+  if (binding == MaterialBinding::textured) {  // shaders/include/material_textures.glsl
+    desc.entries.push_back({1, shader_stage::fragment, BindingType::sampled_texture});
+    desc.entries.push_back({2, shader_stage::fragment, BindingType::sampled_texture});
+    desc.entries.push_back({3, shader_stage::fragment, BindingType::sampler});
+  }
+  return desc;
+}
+
+// A glTF primitive's textures: images of the model, decoded when first bound.
+MaterialTextures gltf_textures(const GltfModel& model, const GltfPrimitive& p) {
+  MaterialTextures t;
+  auto image = [&model](const GltfTexture& texture) -> std::function<Rgba8Image()> {
+    if (!texture) return nullptr;
+    const GltfImage* source = &model.images[size_t(texture.image)];
+    return [source] { return source->decode(); };
+  };
+  t.base_color = image(p.base_color_texture);
+  t.emissive = image(p.emissive_texture);
+  if (p.base_color_texture) t.base_color_key = model.images[size_t(p.base_color_texture.image)].name;
+  if (p.emissive_texture) t.emissive_key = model.images[size_t(p.emissive_texture.image)].name;
+  t.wrap = p.base_color_texture ? p.base_color_texture.wrap : p.emissive_texture.wrap;
+  return t;
+}
+
+MaterialTextures config_textures(const Material* m) {
+  MaterialTextures t;
+  if (!m || m->albedo_texture.empty()) return t;
+  const std::string path = m->albedo_texture;
+  t.base_color = [path] { return read_image_file(path); };
+  t.base_color_key = path;
+  return t;
+}
 
 }  // namespace
 
-void SceneGeometry::add(rhi::Device& device, const std::vector<float>& vertices, const std::vector<uint32_t>& indices,
-                        const Mat4& model, const Vec3& albedo, const Vec3& emissive) {
+rhi::VertexBufferLayout SceneGeometry::vertex_layout() {
+  using rhi::VertexFormat;
+  return {kMeshVertexFloats * 4, {{0, VertexFormat::float32x3, 0}, {1, VertexFormat::float32x3, 12}, {2, VertexFormat::float32x2, 24}}};
+}
+
+rhi::VertexBufferLayout SceneGeometry::position_layout() {
+  return {kMeshVertexFloats * 4, {{0, rhi::VertexFormat::float32x3, 0}}};
+}
+
+std::vector<rhi::BindGroupEntry> SceneGeometry::texture_entries(const MaterialTextures& t) {
+  std::vector<rhi::BindGroupEntry> entries(3);
+  entries[0].binding = 1;
+  entries[0].view = t.base_color ? textures_->srgb(t.base_color_key, t.base_color) : textures_->white();
+  entries[1].binding = 2;
+  entries[1].view = t.emissive ? textures_->srgb(t.emissive_key, t.emissive) : textures_->white();
+  entries[2].binding = 3;
+  entries[2].sampler = textures_->sampler(t.wrap);
+  return entries;
+}
+
+void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
   using namespace rhi;
-  for (size_t v = 0; v < vertices.size(); v += 6) {
-    const Vec3 p = transform_point(model, {vertices[v], vertices[v + 1], vertices[v + 2]});
+  for (size_t v = 0; v < object.vertices.size(); v += kMeshVertexFloats) {
+    const Vec3 p = transform_point(object.model, {object.vertices[v], object.vertices[v + 1], object.vertices[v + 2]});
     for (size_t k = 0; k < 3; ++k) {
       min_[k] = std::min(min_[k], p[k]);
       max_[k] = std::max(max_[k], p[k]);
     }
   }
   GpuObject g;
-  g.index_count = uint32_t(indices.size());
-  g.vertices = device.create_buffer({"object vertices", vertices.size() * 4, buffer_usage::vertex});
-  device.write_buffer(g.vertices, 0, std::as_bytes(std::span(vertices)));
-  g.indices = device.create_buffer({"object indices", indices.size() * 4, buffer_usage::index});
-  device.write_buffer(g.indices, 0, std::as_bytes(std::span(indices)));
+  g.index_count = uint32_t(object.indices.size());
+  g.vertices = device.create_buffer({"object vertices", object.vertices.size() * 4, buffer_usage::vertex});
+  device.write_buffer(g.vertices, 0, std::as_bytes(std::span(object.vertices)));
+  g.indices = device.create_buffer({"object indices", object.indices.size() * 4, buffer_usage::index});
+  device.write_buffer(g.indices, 0, std::as_bytes(std::span(object.indices)));
   ObjectBlock block{};
-  to_floats(model, block.model);
-  to_floats(normal_matrix(model), block.normal_matrix);
+  to_floats(object.model, block.model);
+  to_floats(normal_matrix(object.model), block.normal_matrix);
   for (size_t i = 0; i < 3; ++i) {
-    block.albedo[i] = float(albedo[i]);
-    block.emissive[i] = float(emissive[i]);
+    block.albedo[i] = float(object.albedo[i]);
+    block.emissive[i] = float(object.emissive[i]);
   }
   g.uniforms = device.create_buffer({"object", sizeof(ObjectBlock), buffer_usage::uniform});
   device.write_buffer(g.uniforms, 0, std::as_bytes(std::span(&block, 1)));
   BindGroupEntry e;
   e.buffer = g.uniforms;
-  g.group = device.create_bind_group({"object", layout_, {e}});
+  std::vector<BindGroupEntry> entries = {e};
+  if (binding_ == MaterialBinding::textured) {
+    for (const BindGroupEntry& t : texture_entries(object.textures)) entries.push_back(t);
+  }
+  g.group = device.create_bind_group({"object", layout_, entries});
   objects_.push_back(g);
 }
 
-SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene) {
-  using namespace rhi;
-  layout_ = device.create_bind_group_layout(
-      {"scene object", {{0, shader_stage::vertex | shader_stage::fragment, BindingType::uniform_buffer}}});
+SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, MaterialBinding binding)
+    : binding_(binding), textures_(std::make_unique<TextureCache>(device)) {
+  layout_ = device.create_bind_group_layout(object_layout(binding));
   for (const Object& object : scene.objects) {
     const Mat4 model = model_matrix(object.transform);
     if (object.shape == Shape::gltf) {
-      // Factors only: base colour and emission textures are not read yet (an emission
-      // factor whose texture would modulate it is left out rather than applied flat).
-      for (const GltfPrimitive& p : load_gltf(object.file).primitives) {
-        add(device, p.vertices, p.indices, model, p.base_color, p.emissive_texture ? Vec3{0, 0, 0} : p.emissive);
+      const GltfModel gltf = load_gltf(object.file);
+      for (const GltfPrimitive& p : gltf.primitives) {
+        // The images must outlive the loads the cache makes while binding (inside add).
+        const MaterialTextures textures = gltf_textures(gltf, p);
+        add(device, {p.vertices, p.indices, model, p.base_color, p.emissive, textures});
       }
       continue;
     }
     const Mesh mesh = primitive_mesh(object.shape, object.size);
     const Material* m = scene.find_material(object.material);
-    add(device, mesh.vertices, mesh.indices, model, m ? m->albedo : Vec3{0.8, 0.8, 0.8}, m ? m->emissive : Vec3{0, 0, 0});
+    const MaterialTextures textures = config_textures(m);
+    add(device, {mesh.vertices, mesh.indices, model, m ? m->albedo : Vec3{0.8, 0.8, 0.8}, m ? m->emissive : Vec3{0, 0, 0}, textures});
   }
 }
 

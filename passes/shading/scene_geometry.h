@@ -1,13 +1,17 @@
 // The scene's objects on the device, shared by every pass that rasterises them (scene,
-// shadow_map): one vertex and index buffer per object and a uniform block with its
-// transforms and material (shaders/include/scene_uniforms.glsl, set 1).
+// shadow_map): one vertex and index buffer per object and its set-1 bind group — a
+// uniform block with its transforms and material factors (shaders/include/
+// object_uniforms.glsl) and, for passes that shade, the material's textures
+// (shaders/include/material_textures.glsl).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "graph/rhi/rhi.h"
 #include "graph/scene/scene.h"
 #include "passes/shading/camera.h"
+#include "passes/shading/textures.h"
 
 namespace volgraph::shading {
 
@@ -17,12 +21,26 @@ struct GpuObject {
   uint32_t index_count = 0;
 };
 
+// What set 1 holds: the uniform block only (depth passes), or with the textures too.
+enum class MaterialBinding { factors, textured };
+
+// A material's texture images (null: a factor alone).
+struct MaterialTextures {
+  std::function<Rgba8Image()> base_color, emissive;
+  std::string base_color_key, emissive_key;
+  SamplerWrap wrap;
+};
+
 class SceneGeometry {
  public:
   // glTF objects are loaded here (throws std::runtime_error for a broken file).
-  SceneGeometry(rhi::Device& device, const Scene& scene);
+  SceneGeometry(rhi::Device& device, const Scene& scene, MaterialBinding binding);
   const std::vector<GpuObject>& objects() const { return objects_; }
   rhi::BindGroupLayoutId layout() const { return layout_; }
+  // Vertex buffer layouts: position, normal and texture coordinate at locations 0, 1, 2;
+  // or the position alone (depth passes).
+  static rhi::VertexBufferLayout vertex_layout();
+  static rhi::VertexBufferLayout position_layout();
   // World-space bounds of every object (for fitting light projections).
   Vec3 bounds_min() const { return min_; }
   Vec3 bounds_max() const { return max_; }
@@ -30,9 +48,18 @@ class SceneGeometry {
   void draw(rhi::CommandEncoder& encoder, uint32_t set) const;
 
  private:
-  void add(rhi::Device& device, const std::vector<float>& vertices, const std::vector<uint32_t>& indices, const Mat4& model,
-           const Vec3& albedo, const Vec3& emissive);
+  struct ObjectData {
+    const std::vector<float>& vertices;
+    const std::vector<uint32_t>& indices;
+    const Mat4& model;
+    Vec3 albedo, emissive;
+    const MaterialTextures& textures;
+  };
+  void add(rhi::Device& device, const ObjectData& object);
+  std::vector<rhi::BindGroupEntry> texture_entries(const MaterialTextures& textures);
 
+  MaterialBinding binding_;
+  std::unique_ptr<TextureCache> textures_;
   rhi::BindGroupLayoutId layout_;
   std::vector<GpuObject> objects_;
   Vec3 min_{1e30, 1e30, 1e30}, max_{-1e30, -1e30, -1e30};

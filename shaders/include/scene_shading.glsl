@@ -2,10 +2,12 @@
 // `float light_visibility(int light, vec3 p)` first (1 when unshadowed).
 #ifndef VOLGRAPH_SCENE_SHADING_GLSL
 #define VOLGRAPH_SCENE_SHADING_GLSL
+#include "material_textures.glsl"
 #include "scene_uniforms.glsl"
 
 layout(location = 0) in vec3 world_position;
 layout(location = 1) in vec3 world_normal;
+layout(location = 2) in vec2 texture_uv;
 layout(location = 0) out vec4 radiance;
 
 void main() {
@@ -15,7 +17,8 @@ void main() {
   for (int i = 0; i < frame.counts.x; ++i) {
     e += irradiance(frame.lights[i], world_position, n) * light_visibility(i, world_position);
   }
-  radiance = vec4(lambert(object.albedo.rgb, e) + object.emissive.rgb, 1.0);
+  const vec3 albedo = material_albedo(object.albedo.rgb, texture_uv);
+  radiance = vec4(lambert(albedo, e) + material_emission(object.emissive.rgb, texture_uv), 1.0);
 }
 
 #endif

@@ -9,6 +9,7 @@
 #include "passes/passes.h"
 #include "passes/shading/camera.h"
 #include "passes/shading/lighting.h"
+#include "passes/shading/srgb.h"
 #include "passes/shading/tonemap.h"
 #include "tests/gpu/validation_messages.h"
 
@@ -119,6 +120,36 @@ TEST_F(ExecutorTest, PointLightRadianceMatchesTheCpuTwin) {
     }
     EXPECT_GT(checked, 20);
   }
+}
+
+// A textured plane: albedo = factor × the texture's sRGB-decoded value, with the image's
+// top row toward −z (shading/meshes.h). Texels away from the halves' border and the
+// plane's edges, within the fp16 target's 2e-3 relative plus a quarter of the sRGB code
+// step (Vulkan lets the sRGB decode approximate; lavapipe's is off by 0.14 steps at 64).
+TEST_F(ExecutorTest, AlbedoTextureMultipliesTheFactorInLinearLight) {
+  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/textured_plane.json", registry_);
+  const Texels t = render(c, {});
+  const Camera& camera = c.config.scene.camera;
+  auto linear = [](int code) { return double(shading::srgb_decode(float(code) / 255)); };
+  auto code_step = [&](int code) { return linear(std::min(code + 1, 255)) - linear(std::max(code - 1, 0)); };
+  const int grey_code[3] = {188, 188, 188}, orange_code[3] = {255, 64, 0};
+  int top = 0, bottom = 0;
+  for (uint32_t j = 0; j < t.height; ++j) {
+    for (uint32_t i = 0; i < t.width; ++i) {
+      const Vec3 d = shading::pixel_ray(camera, t.width, t.height, i, j);
+      const double s = -camera.position[1] / d[1];
+      const double x = camera.position[0] + s * d[0], z = camera.position[2] + s * d[2];
+      if (std::abs(x) > 0.4 || std::abs(z) > 0.4 || std::abs(z) < 0.1) continue;
+      const int* code = z < 0 ? grey_code : orange_code;
+      (z < 0 ? top : bottom)++;
+      for (size_t ch = 0; ch < 3; ++ch) {
+        const double want = 0.5 * linear(code[ch]), tolerance = 2e-3 * want + 0.5 * 0.25 * code_step(code[ch]) / 2;
+        EXPECT_NEAR(t.rgba[4 * (j * t.width + i) + ch], want, tolerance) << i << ", " << j << " ch " << ch;
+      }
+    }
+  }
+  EXPECT_GT(top, 50);
+  EXPECT_GT(bottom, 50);
 }
 
 // The same plane with its shadow map wired: nothing occludes it, so still exactly ρE/π

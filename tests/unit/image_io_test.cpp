@@ -8,10 +8,10 @@
 #include <ImfInputFile.h>
 #include <gtest/gtest.h>
 
-#define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
 #include "graph/config/diagnostics.h"
+#include "passes/shading/srgb.h"
 #include "tools/image_io.h"
 
 namespace volgraph {
@@ -116,11 +116,15 @@ TEST_F(ImageIo, AFailedWriteLeavesNoTemporaryFile) {
 }
 
 TEST(Srgb, MatchesTheStandardAtItsKnots) {
+  using shading::srgb_encode, shading::srgb_decode;
   EXPECT_FLOAT_EQ(srgb_encode(0.0f), 0.0f);
   EXPECT_FLOAT_EQ(srgb_encode(1.0f), 1.0f);
   EXPECT_NEAR(srgb_encode(0.0031308f), 0.040449936f, 1e-6);
   EXPECT_NEAR(srgb_encode(0.5f), 0.735356983f, 1e-6);
   EXPECT_EQ(srgb_encode(-1.0f), 0.0f);
+  EXPECT_NEAR(srgb_decode(0.735356983f), 0.5f, 1e-6);
+  EXPECT_NEAR(srgb_decode(0.04045f), 0.0031308f, 1e-7);
+  for (int i = 0; i <= 255; ++i) EXPECT_NEAR(srgb_encode(srgb_decode(float(i) / 255)), float(i) / 255, 1e-6) << i;
 }
 
 }  // namespace

@@ -87,11 +87,22 @@ VkRenderingAttachmentInfo attachment_info(VkImageView view, VkImageLayout layout
   return a;
 }
 
-VkBufferImageCopy whole_texture(const rhi::TextureDesc& d, uint64_t offset) {
+VkSamplerAddressMode to_vk(rhi::AddressMode mode) {
+  switch (mode) {
+    case rhi::AddressMode::repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    case rhi::AddressMode::mirror_repeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case rhi::AddressMode::clamp_to_edge: break;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+}
+
+// One mip level of a texture (level 0: the whole texture).
+VkBufferImageCopy whole_level(const rhi::TextureDesc& d, uint64_t offset, uint32_t level = 0) {
   VkBufferImageCopy region{};
   region.bufferOffset = offset;
-  region.imageSubresource = {aspect_of(d.format), 0, 0, 1};
-  region.imageExtent = {d.size.width, d.size.height, d.kind == ResourceKind::texture3d ? d.size.depth : 1};
+  region.imageSubresource = {aspect_of(d.format), level, 0, 1};
+  const uint32_t depth = d.kind == ResourceKind::texture3d ? d.size.depth : 1;
+  region.imageExtent = {std::max(1u, d.size.width >> level), std::max(1u, d.size.height >> level), std::max(1u, depth >> level)};
   return region;
 }
 
@@ -210,7 +221,7 @@ class VulkanEncoder final : public rhi::CommandEncoder {
 
   void copy_buffer_to_texture(rhi::BufferId source, uint64_t offset, rhi::TextureId destination) override {
     const auto& t = device_.texture(destination);
-    const VkBufferImageCopy region = whole_texture(t.desc, offset);
+    const VkBufferImageCopy region = whole_level(t.desc, offset);
     vkCmdCopyBufferToImage(cmd_, device_.buffer(source).buffer, t.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   }
   void update_buffer(rhi::BufferId buffer, uint64_t offset, std::span<const std::byte> data) override {
@@ -235,7 +246,7 @@ class VulkanEncoder final : public rhi::CommandEncoder {
   }
   void copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset) override {
     const auto& t = device_.texture(source);
-    const VkBufferImageCopy region = whole_texture(t.desc, offset);
+    const VkBufferImageCopy region = whole_level(t.desc, offset);
     vkCmdCopyImageToBuffer(cmd_, t.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, device_.buffer(destination).buffer, 1, &region);
   }
 
@@ -335,7 +346,8 @@ rhi::TextureId VulkanDevice::create_texture(const rhi::TextureDesc& desc) {
   info.imageType = desc.kind == ResourceKind::texture3d ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
   info.format = to_vk(desc.format);
   info.extent = {desc.size.width, desc.size.height, desc.kind == ResourceKind::texture3d ? desc.size.depth : 1};
-  info.mipLevels = info.arrayLayers = 1;
+  info.mipLevels = std::max(1u, desc.mip_levels);
+  info.arrayLayers = 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = texture_usage_flags(desc.usage, desc.format);
@@ -355,7 +367,7 @@ rhi::TextureViewId VulkanDevice::create_view(rhi::TextureId id) {
   info.image = t.image;
   info.viewType = t.desc.kind == ResourceKind::texture3d ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
   info.format = to_vk(t.desc.format);
-  info.subresourceRange = {aspect_of(t.desc.format), 0, 1, 0, 1};
+  info.subresourceRange = {aspect_of(t.desc.format), 0, std::max(1u, t.desc.mip_levels), 0, 1};
   VkImageView view = VK_NULL_HANDLE;
   check(vkCreateImageView(context_.device(), &info, nullptr, &view), "vkCreateImageView");
   name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view), t.desc.label);
@@ -366,10 +378,11 @@ rhi::TextureViewId VulkanDevice::create_view(rhi::TextureId id) {
 rhi::SamplerId VulkanDevice::create_sampler(const rhi::SamplerDesc& desc) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = info.minFilter = desc.filter == rhi::Filter::linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  const VkSamplerAddressMode mode =
-      desc.address == rhi::AddressMode::repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeU = info.addressModeV = info.addressModeW = mode;
+  info.mipmapMode = desc.mip_filter == rhi::Filter::linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.maxLod = VK_LOD_CLAMP_NONE;
+  info.addressModeU = to_vk(desc.address_u);
+  info.addressModeV = to_vk(desc.address_v);
+  info.addressModeW = to_vk(desc.address_w);
   VkSampler sampler = VK_NULL_HANDLE;
   check(vkCreateSampler(context_.device(), &info, nullptr, &sampler), "vkCreateSampler");
   name(VK_OBJECT_TYPE_SAMPLER, uint64_t(sampler), desc.label);
@@ -620,15 +633,27 @@ void VulkanDevice::write_buffer(rhi::BufferId id, uint64_t offset, std::span<con
   std::memcpy(static_cast<char*>(b.mapped) + offset, data.data(), data.size());  // host-coherent; the next submit sees it
 }
 
-void VulkanDevice::write_texture(rhi::TextureId id, std::span<const std::byte> texels) {
+// Level by level, each a transfer write of its own between two barriers; the first
+// write discards the texture's contents, later ones keep the levels written before.
+void VulkanDevice::write_texture(rhi::TextureId id, std::span<const std::byte> texels, uint32_t mip_level) {
   const Texture& t = textures_.at(id.id);
+  if (mip_level >= std::max(1u, t.desc.mip_levels)) {
+    throw DeviceError(DeviceError::Kind::other, "write_texture: " + t.desc.label + " has no mip level " + std::to_string(mip_level));
+  }
   const rhi::BufferId staging = create_buffer({t.desc.label + " upload", texels.size(), rhi::buffer_usage::copy_src});
   write_buffer(staging, 0, texels);
   auto encoder = create_command_encoder("write_texture");
-  const rhi::ResourceBarrier to_copy{id, {}, {}, written_texture_state()};
+  const AccessState copy_written{stage::copy, access::transfer_write, volgraph::Layout::transfer_dst};
+  const AccessState before = t.written ? written_texture_state() : AccessState{};
+  const rhi::ResourceBarrier to_copy{id, {}, before, copy_written};
   encoder->barrier({&to_copy, 1});
-  encoder->copy_buffer_to_texture(staging, 0, id);
+  const VkBufferImageCopy region = whole_level(t.desc, 0, mip_level);
+  vkCmdCopyBufferToImage(static_cast<VulkanEncoder&>(*encoder).command_buffer(), buffer(staging).buffer, t.image,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  const rhi::ResourceBarrier to_sampled{id, {}, copy_written, written_texture_state()};
+  encoder->barrier({&to_sampled, 1});
   submit(std::move(encoder));
+  textures_.at(id.id).written = true;
   destroy(staging);
 }
 

@@ -36,7 +36,7 @@ class VulkanDevice final : public rhi::Device {
   void destroy(rhi::BufferId buffer) override;
   void destroy(rhi::TextureId texture) override;
   void write_buffer(rhi::BufferId buffer, uint64_t offset, std::span<const std::byte> data) override;
-  void write_texture(rhi::TextureId texture, std::span<const std::byte> texels) override;
+  void write_texture(rhi::TextureId texture, std::span<const std::byte> texels, uint32_t mip_level = 0) override;
   std::unique_ptr<rhi::GraphResourceSet> create_graph_resources(const Graph& graph) override;
   std::unique_ptr<rhi::CommandEncoder> create_command_encoder(std::string_view label) override;
 
@@ -60,6 +60,7 @@ class VulkanDevice final : public rhi::Device {
     VkDeviceMemory memory = VK_NULL_HANDLE;
     rhi::TextureDesc desc;
     bool owned = true;
+    bool written = false;  // by write_texture (now in written_texture_state())
   };
   struct Pipeline {
     VkPipeline pipeline = VK_NULL_HANDLE;
