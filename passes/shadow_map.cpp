@@ -1,41 +1,35 @@
-// Shadow map: depth from one light's view. Directional lights use an orthographic
-// projection fitted to the camera frustum's bounds; spot lights a perspective one
-// spanning the outer cone.
-#include <algorithm>
-#include <cmath>
+// Shadow map: depth of the scene from one light. A directional light gets an orthographic
+// window fitted to the shadow receivers the camera sees (its frustum up to `distance`,
+// clipped to the scene's bounds), snapped to whole texels, with its depth range over the
+// whole scene so that every caster is drawn; a spot light gets a perspective projection
+// over its outer cone, near and far around the scene's bounds (passes/shading/shadow_fit.h).
+#include <memory>
+#include <span>
+#include <string>
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/passes.h"
 #include "passes/shading/camera.h"
 #include "passes/shading/scene_geometry.h"
+#include "passes/shading/shadow_fit.h"
 #include "passes/shading/shadow_view.h"
 #include "shaders/shader_library.h"
 
 namespace volgraph {
 namespace {
 
-// The light's view and projection over the scene's bounds. Directional: orthographic
-// around the bounding sphere; spot: perspective over the outer cone.
-shading::Mat4 light_view_projection(const Light& light, const Vec3& lo, const Vec3& hi) {
-  using namespace shading;
-  const Vec3 centre{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
-  const Vec3 half = sub(hi, centre);
-  const double radius = std::max(std::sqrt(dot(half, half)), 1e-3);
-  const Vec3 dir = normalize(light.direction);
-  const Vec3 up = std::abs(dir[1]) > 0.99 ? Vec3{0, 0, 1} : Vec3{0, 1, 0};
-  if (light.type == LightType::directional) {
-    const Vec3 eye{centre[0] - 2 * radius * dir[0], centre[1] - 2 * radius * dir[1], centre[2] - 2 * radius * dir[2]};
-    return orthographic(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius) * look_at(eye, centre, up);
-  }
-  double far = 0.1;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vec3 p{corner & 1 ? hi[0] : lo[0], corner & 2 ? hi[1] : lo[1], corner & 4 ? hi[2] : lo[2]};
-    const Vec3 d = sub(p, light.position);
-    far = std::max(far, 1.01 * std::sqrt(dot(d, d)));
-  }
-  const Vec3 target{light.position[0] + dir[0], light.position[1] + dir[1], light.position[2] + dir[2]};
-  return perspective(2 * light.outer_cone_deg, 1.0, std::min(0.05, far / 100), far) * look_at(light.position, target, up);
+// The light's view and projection. Directional: fitted to the frame's camera, whose
+// aspect is the graph's output size (what the scene pass renders unless its color size is
+// overridden); with no output size known, fitted to the whole scene.
+shading::Mat4 light_view_projection(const PassContext& c, const Light& light, const shading::Box& scene) {
+  if (light.type == LightType::spot) return shading::fit_spot(light, scene);
+  const Extent frame = c.graph.output_size;
+  if (frame.width == 0 || frame.height == 0) return shading::fit_directional_to_scene(light.direction, scene).view_projection();
+  const Extent map = c.desc("depth").extent;
+  const shading::ReceiverView view{c.scene->camera, double(frame.width) / frame.height,
+                                   std::get<double>(c.param("distance")), map.width, map.height};
+  return shading::fit_directional_to_camera(light.direction, scene, view).view_projection();
 }
 
 // Depth of the scene from the light (shaders/shadow.vert); its view goes to light_view.
@@ -46,7 +40,8 @@ class ShadowMapExecution final : public PassExecution {
     const int64_t index = std::get<int64_t>(c.param("light"));
     const Light& light = c.scene->lights[size_t(index)];
     shading::ShadowViewBlock block{};
-    to_floats(light_view_projection(light, geometry_->bounds_min(), geometry_->bounds_max()), block.light_view_projection);
+    const shading::Box scene_bounds{geometry_->bounds_min(), geometry_->bounds_max()};
+    to_floats(light_view_projection(c, light, scene_bounds), block.light_view_projection);
     block.params[0] = float(std::get<double>(c.param("depth_bias")));
     block.params[1] = float(std::get<double>(c.param("pcf_radius")));
     block.params[3] = float(index);
@@ -122,6 +117,9 @@ PassDecl shadow_map_pass() {
       param_number("depth_bias", 0.002, 0, 0.1, "", "constant bias, in the light's normalised depth"),
       param_number("slope_bias", 1.5, 0, 16, "", "bias scaled by the surface slope seen from the light"),
       param_number("pcf_radius", 1.5, 0, 16, "texels", "filter radius of the pcf variant"),
+      param_number("distance", 0, 0, 1e6, "m",
+                   "directional: view depth up to which the camera's view receives shadows (0: to the far end of "
+                   "the scene's bounds)"),
   };
   d.slots = {
       slot_out("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float,
