@@ -3,8 +3,8 @@
 // Reinhard (Reinhard et al. 2002, eq. 3). Shader: shaders/composite.comp.
 #include "graph/execute/pass_execution.h"
 #include "passes/passes.h"
+#include "passes/shading/programs.h"
 #include "passes/shading/tonemap.h"
-#include "shaders/shader_library.h"
 
 namespace volgraph {
 namespace {
@@ -18,7 +18,7 @@ shading::ToneMap tone_map_of(std::string_view variant) {
 class CompositeExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
-    if (!pipeline_) prepare(c);
+    if (!program_.pipeline) prepare(c);
     const Extent size = c.desc("output").extent;
     struct {
       uint32_t size[2];
@@ -27,9 +27,10 @@ class CompositeExecution final : public PassExecution {
     } block{{size.width, size.height}, float(std::get<double>(c.param("exposure"))), int32_t(tone_map_of(c.variant()))};
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&block, 1)));
     c.encoder.begin_compute_pass(c.graph_pass().name);
-    c.encoder.set_pipeline(pipeline_);
+    c.encoder.set_pipeline(program_.pipeline);
     c.encoder.set_bind_group(0, group_);
-    c.encoder.dispatch((size.width + 7) / 8, (size.height + 7) / 8);
+    const auto groups = program_.groups_for(size);
+    c.encoder.dispatch(groups[0], groups[1]);
     c.encoder.end_compute_pass();
   }
 
@@ -38,27 +39,14 @@ class CompositeExecution final : public PassExecution {
   // executor's lifetime.
   void prepare(PassContext& c) {
     using namespace rhi;
-    const BindGroupLayoutId layout = c.device.create_bind_group_layout(
-        {"composite", {{0, shader_stage::compute, BindingType::sampled_texture},
-                       {1, shader_stage::compute, BindingType::sampler},
-                       {2, shader_stage::compute, BindingType::storage_texture, ResourceKind::texture2d, Format::rgba32_float},
-                       {3, shader_stage::compute, BindingType::uniform_buffer}}});
+    program_ = shading::create_compute_program(c.device, "composite.comp");
     params_ = c.device.create_buffer({"composite params", 16, buffer_usage::uniform | buffer_usage::copy_dst});
-    BindGroupEntry color, sampler, frame, params;
-    color.binding = 0;
-    color.view = c.view("color");
-    sampler.binding = 1;
-    sampler.sampler = c.device.create_sampler({"nearest"});
-    frame.binding = 2;
-    frame.view = c.view("output");
-    params.binding = 3;
-    params.buffer = params_;
-    group_ = c.device.create_bind_group({"composite", layout, {color, sampler, frame, params}});
-    pipeline_ = c.device.create_compute_pipeline(
-        {"composite", c.device.create_shader_module("composite.comp", shader_spirv("composite.comp")), "main", {layout}});
+    group_ = c.device.create_bind_group({"composite", program_.layouts[0],
+                                         {BindGroupEntry::of(0, c.view("color")), BindGroupEntry::of(1, c.device.create_sampler({"nearest"})),
+                                          BindGroupEntry::of(2, c.view("output")), BindGroupEntry::of(3, params_)}});
   }
 
-  rhi::ComputePipelineId pipeline_;
+  shading::ComputeProgram program_;
   rhi::BindGroupId group_;
   rhi::BufferId params_;
 };

@@ -8,9 +8,9 @@
 #include "passes/passes.h"
 #include "passes/shading/camera.h"
 #include "passes/shading/gltf.h"
+#include "passes/shading/programs.h"
 #include "passes/shading/scene_geometry.h"
 #include "passes/shading/textures.h"
-#include "shaders/shader_library.h"
 
 namespace volgraph {
 namespace {
@@ -77,7 +77,7 @@ std::vector<ParamProblem> check_models(const PassDecl&, const Scene& scene, cons
 class SceneExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
-    if (!pipeline_) prepare(c);
+    if (!program_.pipeline) prepare(c);
     write_frame(c);
     const Vec3& bg = c.scene->background;
     rhi::RenderPassDesc pass;
@@ -85,7 +85,7 @@ class SceneExecution final : public PassExecution {
     pass.colors = {{c.view("color"), rhi::LoadOp::clear, {float(bg[0]), float(bg[1]), float(bg[2]), 1.0f}}};
     pass.depth = {c.view("depth"), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
-    c.encoder.set_pipeline(pipeline_);
+    c.encoder.set_pipeline(program_.pipeline);
     c.encoder.set_bind_group(0, frame_group_);
     if (shadow_group_) c.encoder.set_bind_group(2, shadow_group_);
     geometry_->draw(c.encoder, 1);
@@ -111,44 +111,27 @@ class SceneExecution final : public PassExecution {
     if (scene.lights.size() > kMaxLights) {
       throw DeviceError(DeviceError::Kind::unsupported, "scene pass: at most " + std::to_string(kMaxLights) + " lights");
     }
-    const BindGroupLayoutId frame_layout = c.device.create_bind_group_layout(
-        {"scene frame", {{0, shader_stage::vertex | shader_stage::fragment, BindingType::uniform_buffer}}});
-    frame_ = c.device.create_buffer({"scene frame", sizeof(FrameBlock), buffer_usage::uniform | buffer_usage::copy_dst});
-    BindGroupEntry fe;
-    fe.buffer = frame_;
-    frame_group_ = c.device.create_bind_group({"scene frame", frame_layout, {fe}});
-    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, scene, shading::MaterialBinding::textured);
-
     // With a shadow map wired (and shadows on), its light is shadowed (set 2).
     const bool shadowed = c.bound("shadow_map") && c.bound("light_view") && std::get<bool>(c.param("shadows"));
-    std::vector<BindGroupLayoutId> layouts = {frame_layout, geometry_->layout()};
-    if (shadowed) {
-      layouts.push_back(c.device.create_bind_group_layout({"scene shadow", {{0, shader_stage::fragment, BindingType::sampled_texture},
-                                                                             {1, shader_stage::fragment, BindingType::sampler},
-                                                                             {2, shader_stage::fragment, BindingType::uniform_buffer}}}));
-      BindGroupEntry depth, sampler, view;
-      depth.binding = 0;
-      depth.view = c.view("shadow_map");
-      sampler.binding = 1;
-      sampler.sampler = c.device.create_sampler({"shadow nearest"});
-      view.binding = 2;
-      view.buffer = c.buffer("light_view");
-      shadow_group_ = c.device.create_bind_group({"scene shadow", layouts.back(), {depth, sampler, view}});
-    }
-    const char* fragment = shadowed ? "scene_shadowed.frag" : "scene.frag";
     RenderPipelineDesc pd;
     pd.label = "scene";
-    pd.vertex_module = c.device.create_shader_module("scene.vert", shader_spirv("scene.vert"));
-    pd.fragment_module = c.device.create_shader_module(fragment, shader_spirv(fragment));
     pd.vertex_buffers = {shading::SceneGeometry::vertex_layout()};
     pd.colors = {{c.desc("color").format, BlendMode::replace}};
     pd.depth = {Format::d32_float, true, CompareFunction::less};
     pd.cull = CullMode::none;  // planes are seen from both sides
-    pd.layouts = layouts;
-    pipeline_ = c.device.create_render_pipeline(pd);
+    program_ = shading::create_render_program(c.device, pd, "scene.vert", shadowed ? "scene_shadowed.frag" : "scene.frag");
+
+    frame_ = c.device.create_buffer({"scene frame", sizeof(FrameBlock), buffer_usage::uniform | buffer_usage::copy_dst});
+    frame_group_ = c.device.create_bind_group({"scene frame", program_.layouts[0], {BindGroupEntry::of(0, frame_)}});
+    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, scene, program_.layout_descs[1], program_.layouts[1]);
+    if (!shadowed) return;
+    shadow_group_ = c.device.create_bind_group({"scene shadow", program_.layouts[2],
+                                                {BindGroupEntry::of(0, c.view("shadow_map")),
+                                                 BindGroupEntry::of(1, c.device.create_sampler({"shadow nearest"})),
+                                                 BindGroupEntry::of(2, c.buffer("light_view"))}});
   }
 
-  rhi::RenderPipelineId pipeline_;
+  shading::RenderProgram program_;
   rhi::BufferId frame_;
   rhi::BindGroupId frame_group_;
   rhi::BindGroupId shadow_group_;

@@ -11,10 +11,10 @@
 #include "graph/scene/scene.h"
 #include "passes/passes.h"
 #include "passes/shading/camera.h"
+#include "passes/shading/programs.h"
 #include "passes/shading/scene_geometry.h"
 #include "passes/shading/shadow_fit.h"
 #include "passes/shading/shadow_view.h"
-#include "shaders/shader_library.h"
 
 namespace volgraph {
 namespace {
@@ -36,7 +36,7 @@ shading::Mat4 light_view_projection(const PassContext& c, const Light& light, co
 class ShadowMapExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
-    if (!pipeline_) prepare(c);
+    if (!program_.pipeline) prepare(c);
     const int64_t index = std::get<int64_t>(c.param("light"));
     const Light& light = c.scene->lights[size_t(index)];
     shading::ShadowViewBlock block{};
@@ -53,7 +53,7 @@ class ShadowMapExecution final : public PassExecution {
     pass.label = c.graph_pass().name;
     pass.depth = {c.view("depth"), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
-    c.encoder.set_pipeline(pipeline_);
+    c.encoder.set_pipeline(program_.pipeline);
     c.encoder.set_bind_group(0, view_group_);
     geometry_->draw(c.encoder, 1);
     c.encoder.end_render_pass();
@@ -62,25 +62,19 @@ class ShadowMapExecution final : public PassExecution {
  private:
   void prepare(PassContext& c) {
     using namespace rhi;
-    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, *c.scene, shading::MaterialBinding::factors);
-    const BindGroupLayoutId layout =
-        c.device.create_bind_group_layout({"shadow view", {{0, shader_stage::vertex, BindingType::uniform_buffer}}});
-    view_ = c.device.create_buffer({"shadow view", sizeof(shading::ShadowViewBlock), buffer_usage::uniform});
-    BindGroupEntry e;
-    e.buffer = view_;
-    view_group_ = c.device.create_bind_group({"shadow view", layout, {e}});
     RenderPipelineDesc pd;
     pd.label = "shadow map";
-    pd.vertex_module = c.device.create_shader_module("shadow.vert", shader_spirv("shadow.vert"));
     pd.vertex_buffers = {shading::SceneGeometry::position_layout()};
     pd.depth = {Format::d32_float, true, CompareFunction::less, 0.0f, float(std::get<double>(c.param("slope_bias")))};
     pd.cull = CullMode::none;
-    pd.layouts = {layout, geometry_->layout()};
-    pipeline_ = c.device.create_render_pipeline(pd);
+    program_ = shading::create_render_program(c.device, pd, "shadow.vert", "");
+    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, *c.scene, program_.layout_descs[1], program_.layouts[1]);
+    view_ = c.device.create_buffer({"shadow view", sizeof(shading::ShadowViewBlock), buffer_usage::uniform});
+    view_group_ = c.device.create_bind_group({"shadow view", program_.layouts[0], {BindGroupEntry::of(0, view_)}});
   }
 
   std::unique_ptr<shading::SceneGeometry> geometry_;
-  rhi::RenderPipelineId pipeline_;
+  shading::RenderProgram program_;
   rhi::BufferId view_;
   rhi::BindGroupId view_group_;
 };

@@ -112,6 +112,10 @@ struct BindGroupEntry {
   uint64_t size = 0;  // 0: to the end
   TextureViewId view;
   SamplerId sampler;
+
+  static BindGroupEntry of(uint32_t binding, BufferId buffer) { return {binding, buffer, 0, 0, {}, {}}; }
+  static BindGroupEntry of(uint32_t binding, TextureViewId view) { return {binding, {}, 0, 0, view, {}}; }
+  static BindGroupEntry of(uint32_t binding, SamplerId sampler) { return {binding, {}, 0, 0, {}, sampler}; }
 };
 
 struct BindGroupDesc {

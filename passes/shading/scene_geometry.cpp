@@ -16,15 +16,13 @@ struct ObjectBlock {  // std140, shaders/include/object_uniforms.glsl
   float emissive[4];
 };
 
-rhi::BindGroupLayoutDesc object_layout(MaterialBinding binding) {
-  using namespace rhi;
-  BindGroupLayoutDesc desc{"scene object", {{0, shader_stage::vertex | shader_stage::fragment, BindingType::uniform_buffer}}};
-  if (binding == MaterialBinding::textured) {  // shaders/include/material_textures.glsl
-    desc.entries.push_back({1, shader_stage::fragment, BindingType::sampled_texture});
-    desc.entries.push_back({2, shader_stage::fragment, BindingType::sampled_texture});
-    desc.entries.push_back({3, shader_stage::fragment, BindingType::sampler});
+// Binding 0 is the object block (object_uniforms.glsl); 1, 2 and 3 the material's
+// textures and sampler (material_textures.glsl), declared by passes that shade.
+bool declares_textures(const rhi::BindGroupLayoutDesc& object_set) {
+  for (const rhi::LayoutEntry& e : object_set.entries) {
+    if (e.binding == 1) return true;
   }
-  return desc;
+  return false;
 }
 
 // A glTF primitive's textures: images of the model, decoded when first bound.
@@ -64,14 +62,10 @@ rhi::VertexBufferLayout SceneGeometry::position_layout() {
 }
 
 std::vector<rhi::BindGroupEntry> SceneGeometry::texture_entries(const MaterialTextures& t) {
-  std::vector<rhi::BindGroupEntry> entries(3);
-  entries[0].binding = 1;
-  entries[0].view = t.base_color ? textures_->srgb(t.base_color_key, t.base_color) : textures_->white();
-  entries[1].binding = 2;
-  entries[1].view = t.emissive ? textures_->srgb(t.emissive_key, t.emissive) : textures_->white();
-  entries[2].binding = 3;
-  entries[2].sampler = textures_->sampler(t.wrap);
-  return entries;
+  using rhi::BindGroupEntry;
+  return {BindGroupEntry::of(1, t.base_color ? textures_->srgb(t.base_color_key, t.base_color) : textures_->white()),
+          BindGroupEntry::of(2, t.emissive ? textures_->srgb(t.emissive_key, t.emissive) : textures_->white()),
+          BindGroupEntry::of(3, textures_->sampler(t.wrap))};
 }
 
 void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
@@ -98,19 +92,17 @@ void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
   }
   g.uniforms = device.create_buffer({"object", sizeof(ObjectBlock), buffer_usage::uniform});
   device.write_buffer(g.uniforms, 0, std::as_bytes(std::span(&block, 1)));
-  BindGroupEntry e;
-  e.buffer = g.uniforms;
-  std::vector<BindGroupEntry> entries = {e};
-  if (binding_ == MaterialBinding::textured) {
+  std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, g.uniforms)};
+  if (textured_) {
     for (const BindGroupEntry& t : texture_entries(object.textures)) entries.push_back(t);
   }
   g.group = device.create_bind_group({"object", layout_, entries});
   objects_.push_back(g);
 }
 
-SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, MaterialBinding binding)
-    : binding_(binding), textures_(std::make_unique<TextureCache>(device)) {
-  layout_ = device.create_bind_group_layout(object_layout(binding));
+SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, const rhi::BindGroupLayoutDesc& object_set,
+                             rhi::BindGroupLayoutId object_layout)
+    : textured_(declares_textures(object_set)), textures_(std::make_unique<TextureCache>(device)), layout_(object_layout) {
   for (const Object& object : scene.objects) {
     const Mat4 model = model_matrix(object.transform);
     if (object.shape == Shape::gltf) {

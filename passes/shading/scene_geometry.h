@@ -21,9 +21,6 @@ struct GpuObject {
   uint32_t index_count = 0;
 };
 
-// What set 1 holds: the uniform block only (depth passes), or with the textures too.
-enum class MaterialBinding { factors, textured };
-
 // A material's texture images (null: a factor alone).
 struct MaterialTextures {
   std::function<Rgba8Image()> base_color, emissive;
@@ -33,10 +30,12 @@ struct MaterialTextures {
 
 class SceneGeometry {
  public:
-  // glTF objects are loaded here (throws std::runtime_error for a broken file).
-  SceneGeometry(rhi::Device& device, const Scene& scene, MaterialBinding binding);
+  // Set 1 as the pass's shaders declare it (RenderProgram::layout_descs[1]): the object
+  // block alone (depth passes) or with the material's textures. glTF objects are loaded
+  // here (throws std::runtime_error for a broken file).
+  SceneGeometry(rhi::Device& device, const Scene& scene, const rhi::BindGroupLayoutDesc& object_set,
+                rhi::BindGroupLayoutId object_layout);
   const std::vector<GpuObject>& objects() const { return objects_; }
-  rhi::BindGroupLayoutId layout() const { return layout_; }
   // Vertex buffer layouts: position, normal and texture coordinate at locations 0, 1, 2;
   // or the position alone (depth passes).
   static rhi::VertexBufferLayout vertex_layout();
@@ -58,7 +57,7 @@ class SceneGeometry {
   void add(rhi::Device& device, const ObjectData& object);
   std::vector<rhi::BindGroupEntry> texture_entries(const MaterialTextures& textures);
 
-  MaterialBinding binding_;
+  bool textured_ = false;
   std::unique_ptr<TextureCache> textures_;
   rhi::BindGroupLayoutId layout_;
   std::vector<GpuObject> objects_;

@@ -10,6 +10,7 @@
 
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "passes/shading/tonemap.h"
+#include "passes/shading/programs.h"
 #include "shaders/shader_library.h"
 
 namespace volgraph::vulkan {
@@ -46,11 +47,7 @@ std::vector<float> composite(rhi::Device& device, const std::vector<float>& radi
   } block{{kWidth, kHeight}, exposure, int32_t(op)};
   device.write_buffer(params, 0, std::as_bytes(std::span(&block, 1)));
 
-  const BindGroupLayoutId layout = device.create_bind_group_layout(
-      {"composite", {{0, shader_stage::compute, BindingType::sampled_texture},
-                     {1, shader_stage::compute, BindingType::sampler},
-                     {2, shader_stage::compute, BindingType::storage_texture, ResourceKind::texture2d, Format::rgba32_float},
-                     {3, shader_stage::compute, BindingType::uniform_buffer}}});
+  const shading::ComputeProgram program = shading::create_compute_program(device, "composite.comp");
   BindGroupEntry e0, e1, e2, e3;
   e0.binding = 0;
   e0.view = device.create_view(input);
@@ -60,9 +57,7 @@ std::vector<float> composite(rhi::Device& device, const std::vector<float>& radi
   e2.view = device.create_view(frame);
   e3.binding = 3;
   e3.buffer = params;
-  const BindGroupId group = device.create_bind_group({"composite", layout, {e0, e1, e2, e3}});
-  const ComputePipelineId pipeline = device.create_compute_pipeline(
-      {"composite", device.create_shader_module("composite.comp", shader_spirv("composite.comp")), "main", {layout}});
+  const BindGroupId group = device.create_bind_group({"composite", program.layouts[0], {e0, e1, e2, e3}});
 
   auto encoder = device.create_command_encoder("composite test");
   const AccessState sampled = access_state(Usage::sampled, PassKind::compute, ResourceKind::texture2d);
@@ -72,9 +67,10 @@ std::vector<float> composite(rhi::Device& device, const std::vector<float>& radi
   encoder->barrier(before);
   if (timestamps) encoder->write_timestamp(timestamps, 0);
   encoder->begin_compute_pass("composite");
-  encoder->set_pipeline(pipeline);
+  encoder->set_pipeline(program.pipeline);
   encoder->set_bind_group(0, group);
-  encoder->dispatch((kWidth + 7) / 8, (kHeight + 7) / 8);
+  const auto groups = program.groups_for({kWidth, kHeight, 1});
+  encoder->dispatch(groups[0], groups[1]);
   encoder->end_compute_pass();
   if (timestamps) encoder->write_timestamp(timestamps, 1);
   const ResourceBarrier after[] = {{frame, {}, written, copied}};
