@@ -32,30 +32,50 @@ shading::Mat4 light_view_projection(const PassContext& c, const Light& light, co
   return shading::fit_directional_to_camera(light.direction, scene, view).view_projection();
 }
 
+// Why light `index` cannot cast this map's shadows ("" when it can): it must exist, be
+// directional or spot, and cast shadows.
+std::string shadow_light_problem(const Scene& scene, int64_t index) {
+  if (index < 0 || index >= int64_t(scene.lights.size())) {
+    return "light " + std::to_string(index) + " does not exist: scene.lights has " + std::to_string(scene.lights.size());
+  }
+  const Light& light = scene.lights[size_t(index)];
+  if (light.type == LightType::point) {
+    return "light " + std::to_string(index) + " is a point light; shadow_map takes a directional or spot light";
+  }
+  if (!light.cast_shadows) return "light " + std::to_string(index) + " has cast_shadows: false";
+  return "";
+}
+
 // Depth of the scene from the light (shaders/shadow.vert); its view goes to light_view.
 class ShadowMapExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
     if (!program_.pipeline) prepare(c);
     const int64_t index = std::get<int64_t>(c.param("light"));
-    const Light& light = c.scene->lights[size_t(index)];
+    const bool casts = shadow_light_problem(*c.scene, index).empty() && !geometry_->objects().empty();
     shading::ShadowViewBlock block{};
-    const shading::Box scene_bounds{geometry_->bounds_min(), geometry_->bounds_max()};
-    to_floats(light_view_projection(c, light, scene_bounds), block.light_view_projection);
     block.params[0] = float(std::get<double>(c.param("depth_bias")));
     block.params[1] = float(std::get<double>(c.param("pcf_radius")));
-    block.params[3] = float(index);
+    block.params[3] = casts ? float(index) : -1.0f;  // −1: no light is shadowed
     block.mode[0] = c.variant() == "pcf" ? 1 : 0;
+    if (casts) {
+      const shading::Box scene_bounds{geometry_->bounds_min(), geometry_->bounds_max()};
+      to_floats(light_view_projection(c, c.scene->lights[size_t(index)], scene_bounds), block.light_view_projection);
+    }
     const auto bytes = std::as_bytes(std::span(&block, 1));
     c.device.write_buffer(view_, 0, bytes);           // for this pass's vertex shader
     c.encoder.update_buffer(c.buffer("light_view"), 0, bytes);  // for the passes that sample the map
+    // Without a light to cast shadows (a pass kept by --no-cull) or anything to cast
+    // them, the map stays clear: nothing occludes anything.
     rhi::RenderPassDesc pass;
     pass.label = c.graph_pass().name;
     pass.depth = {c.view("depth"), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
-    c.encoder.set_pipeline(program_.pipeline);
-    c.encoder.set_bind_group(0, view_group_);
-    geometry_->draw(c.encoder, 1);
+    if (casts) {
+      c.encoder.set_pipeline(program_.pipeline);
+      c.encoder.set_bind_group(0, view_group_);
+      geometry_->draw(c.encoder, 1);
+    }
     c.encoder.end_render_pass();
   }
 
@@ -79,19 +99,10 @@ class ShadowMapExecution final : public PassExecution {
   rhi::BindGroupId view_group_;
 };
 
-// The light must exist, be directional or spot, and cast shadows.
 std::vector<ParamProblem> check_light(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params) {
-  const int64_t index = std::get<int64_t>(params[size_t(decl.param_index("light"))]);
-  if (index >= int64_t(scene.lights.size())) {
-    return {{"light", "light " + std::to_string(index) + " does not exist: scene.lights has " +
-                          std::to_string(scene.lights.size())}};
-  }
-  const Light& light = scene.lights[size_t(index)];
-  if (light.type == LightType::point) {
-    return {{"light", "light " + std::to_string(index) + " is a point light; shadow_map takes a directional or spot light"}};
-  }
-  if (!light.cast_shadows) return {{"light", "light " + std::to_string(index) + " has cast_shadows: false"}};
-  return {};
+  const std::string problem = shadow_light_problem(scene, std::get<int64_t>(params[size_t(decl.param_index("light"))]));
+  if (problem.empty()) return {};
+  return {{"light", problem}};
 }
 
 }  // namespace
