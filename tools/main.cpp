@@ -294,6 +294,16 @@ void write_bytes(const std::string& file, const std::vector<std::byte>& bytes) {
   std::rename(temporary.c_str(), file.c_str());
 }
 
+// VOLGRAPH_SIMULATE_FAULT=out_of_memory|device_lost makes the driver fail (to test how
+// failures are reported); none when unset, nullopt for another value.
+std::optional<vulkan::SimulatedFault> simulated_fault() {
+  const char* value = std::getenv("VOLGRAPH_SIMULATE_FAULT");
+  if (!value || !*value) return vulkan::SimulatedFault::none;
+  if (std::string_view(value) == "out_of_memory") return vulkan::SimulatedFault::out_of_memory;
+  if (std::string_view(value) == "device_lost") return vulkan::SimulatedFault::device_lost;
+  return std::nullopt;
+}
+
 int render(const Args& args, LoadedConfig loaded) {
   if (args.output.empty()) return bad_usage("render needs -o OUT (.png, .exr or .pfm)");
   if (!image_format_for(args.output)) {
@@ -303,7 +313,9 @@ int render(const Args& args, LoadedConfig loaded) {
     std::cerr << "volgraph render: the WebGPU backend arrives with issue 4; use --backend vulkan\n";
     return kFailure;
   }
-  auto context = vulkan::Context::create({.validation = args.validation, .device_index = args.device});
+  const std::optional<vulkan::SimulatedFault> fault = simulated_fault();
+  if (!fault) return bad_usage("VOLGRAPH_SIMULATE_FAULT must be out_of_memory or device_lost");
+  auto context = vulkan::Context::create({.validation = args.validation, .device_index = args.device, .simulate = *fault});
   vulkan::VulkanDevice device(*context);
   const std::vector<Dump> dumps = add_dumps(args.dumps, loaded.graph);
   Executor executor(device, loaded.graph, &loaded.config.scene, args.compile);
@@ -358,6 +370,19 @@ int run(const Args& args, const PassRegistry& registry) {
 }  // namespace
 }  // namespace volgraph
 
+// What kind of failure the driver reported, in the user's terms.
+const char* device_error_heading(volgraph::DeviceError::Kind kind) {
+  using volgraph::DeviceError;
+  switch (kind) {
+    case DeviceError::Kind::out_of_memory: return "out of device memory: ";
+    case DeviceError::Kind::device_lost: return "device lost (the driver stopped or was reset): ";
+    case DeviceError::Kind::no_device: return "no usable GPU: ";
+    case DeviceError::Kind::unsupported: return "";
+    case DeviceError::Kind::other: break;
+  }
+  return "device error: ";
+}
+
 int main(int argc, char** argv) {
   using namespace volgraph;
   Args args;
@@ -370,7 +395,7 @@ int main(int argc, char** argv) {
     std::cerr << e.what() << "\n";
     return kBadInput;
   } catch (const DeviceError& e) {
-    std::cerr << "volgraph: " << (e.kind == DeviceError::Kind::unsupported ? "" : "device error: ") << e.what() << "\n";
+    std::cerr << "volgraph: " << device_error_heading(e.kind) << e.what() << "\n";
     return kFailure;
   } catch (const std::exception& e) {
     std::cerr << "volgraph: internal error: " << e.what() << "\n";

@@ -81,6 +81,24 @@ got: $(cat "$tmp/err")"
     done
     [ -z "$(ls "$tmp" | grep -v '^err$')" ] || fail "a bad --dump left files: $(ls "$tmp")"
     ;;
+  driver)
+    # Driver failures are exit 1 with the failure named, and leave no file behind.
+    check_driver_failure() {  # expected-message, then the render's extra arguments
+      expected=$1
+      shift
+      "$volgraph" render "$config" -o "$tmp/frame.pfm" "$@" >"$tmp/out" 2>"$tmp/err"
+      code=$?
+      [ "$code" -eq 1 ] || fail "render $*: exit $code (expected 1); stderr: $(cat "$tmp/err")"
+      grep -qF -- "$expected" "$tmp/err" || fail "render $*: expected '$expected', got: $(cat "$tmp/err")"
+      [ -z "$(ls "$tmp" | grep -v -e '^out$' -e '^err$')" ] || fail "render $* left files: $(ls "$tmp")"
+    }
+    VOLGRAPH_SIMULATE_FAULT=out_of_memory check_driver_failure "volgraph: out of device memory: vkAllocateMemory" --size 64x36
+    VOLGRAPH_SIMULATE_FAULT=device_lost check_driver_failure "volgraph: device lost" --size 64x36
+    # A real one: a frame whose memory one allocation cannot hold on lavapipe (2 GiB).
+    check_driver_failure "volgraph: out of device memory: transient heap 0 needs" --size 16384x12000
+    VOLGRAPH_SIMULATE_FAULT=sometimes "$volgraph" render "$config" -o "$tmp/frame.pfm" --size 64x36 2>"$tmp/err"
+    [ $? -eq 2 ] || fail "an unknown VOLGRAPH_SIMULATE_FAULT must exit 2"
+    ;;
   *) fail "unknown mode $mode" ;;
 esac
 echo "ok"

@@ -99,6 +99,7 @@ std::vector<DeviceInfo> Context::list_devices() {
 
 std::unique_ptr<Context> Context::create(const ContextOptions& options) {
   std::unique_ptr<Context> c(new Context());
+  c->simulate_ = options.simulate;
   c->create_instance(options.validation);
   c->pick_device(options.device_index);
   c->create_device();
@@ -186,9 +187,11 @@ void Context::pick_device(int index) {
     }
   }
   info_ = describe(physical_);
-  VkPhysicalDeviceProperties props;
-  vkGetPhysicalDeviceProperties(physical_, &props);
-  limits_ = props.limits;
+  VkPhysicalDeviceVulkan11Properties props11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES};
+  VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &props11};
+  vkGetPhysicalDeviceProperties2(physical_, &props);
+  limits_ = props.properties.limits;
+  max_allocation_size_ = props11.maxMemoryAllocationSize;
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
@@ -282,6 +285,13 @@ void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record
   record(cmd);
   check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
 
+  const VkResult result = submit_recorded(cmd);
+  vkFreeCommandBuffers(device_, pool_, 1, &cmd);
+  check(result, "vkQueueSubmit2");
+}
+
+VkResult Context::submit_recorded(VkCommandBuffer cmd) {
+  if (simulate_ == SimulatedFault::device_lost) return VK_ERROR_DEVICE_LOST;
   VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   VkFence fence = VK_NULL_HANDLE;
   check(vkCreateFence(device_, &fence_info, nullptr, &fence), "vkCreateFence");
@@ -293,8 +303,26 @@ void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record
   const VkResult submitted = vkQueueSubmit2(queue_, 1, &submit, fence);
   const VkResult waited = submitted == VK_SUCCESS ? vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX) : submitted;
   vkDestroyFence(device_, fence, nullptr);
-  vkFreeCommandBuffers(device_, pool_, 1, &cmd);
-  check(waited, "vkQueueSubmit2");
+  return waited;
+}
+
+VkDeviceMemory Context::allocate_memory(uint64_t size, uint32_t memory_type, const std::string& label) {
+  const uint64_t heap = memory_.memoryHeaps[memory_.memoryTypes[memory_type].heapIndex].size;
+  const uint64_t limit = std::min(heap, max_allocation_size_ ? max_allocation_size_ : heap);
+  if (size > limit) {
+    throw DeviceError(DeviceError::Kind::out_of_memory,
+                      label + " needs " + std::to_string(size >> 20) + " MiB in one allocation; " + info_.name +
+                          " allows at most " + std::to_string(limit >> 20) + " MiB (" +
+                          (limit == heap ? "its memory heap" : "maxMemoryAllocationSize") + ")");
+  }
+  VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  info.allocationSize = size;
+  info.memoryTypeIndex = memory_type;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  const VkResult result = simulate_ == SimulatedFault::out_of_memory ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                                                                    : vkAllocateMemory(device_, &info, nullptr, &memory);
+  check(result, ("vkAllocateMemory for " + label).c_str());
+  return memory;
 }
 
 uint32_t Context::memory_type(uint32_t type_bits, VkMemoryPropertyFlags required) const {

@@ -17,9 +17,15 @@
 
 namespace volgraph::vulkan {
 
+// A driver failure to act out, so that the way volgraph reports it can be tested on a
+// driver that never fails: every memory allocation returns
+// VK_ERROR_OUT_OF_DEVICE_MEMORY, or every queue submission VK_ERROR_DEVICE_LOST.
+enum class SimulatedFault { none, out_of_memory, device_lost };
+
 struct ContextOptions {
   bool validation = false;       // VK_LAYER_KHRONOS_validation, synchronization validation included
   int device_index = -1;         // -1: lavapipe when present, else the first Vulkan 1.3 device
+  SimulatedFault simulate = SimulatedFault::none;
 };
 
 struct DeviceInfo {
@@ -61,6 +67,12 @@ class Context {
 
   // Records with `record`, submits, waits. For set-up, uploads and readbacks.
   void submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
+  // Submits a recorded command buffer and waits for it; the result for check().
+  VkResult submit_recorded(VkCommandBuffer cmd);
+  // One block of device memory. Throws DeviceError out_of_memory when the driver
+  // refuses, or before asking when `size` exceeds what one allocation may hold
+  // (maxMemoryAllocationSize) or the heap.
+  VkDeviceMemory allocate_memory(uint64_t size, uint32_t memory_type, const std::string& label);
   // A memory type index with `required` properties among `type_bits`; throws when none.
   uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required) const;
 
@@ -86,6 +98,8 @@ class Context {
   DeviceInfo info_;
   VkPhysicalDeviceLimits limits_{};
   VkPhysicalDeviceMemoryProperties memory_{};
+  uint64_t max_allocation_size_ = 0;
+  SimulatedFault simulate_ = SimulatedFault::none;
   std::mutex messages_mutex_;
   std::vector<std::string> messages_;
 };

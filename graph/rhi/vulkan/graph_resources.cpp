@@ -79,11 +79,7 @@ RequirementsFn GraphResources::requirements() const {
 }
 
 VkDeviceMemory GraphResources::allocate(uint64_t size, uint32_t memory_type, const std::string& text) {
-  VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  info.allocationSize = size;
-  info.memoryTypeIndex = memory_type;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  check(vkAllocateMemory(context_.device(), &info, nullptr, &memory), ("vkAllocateMemory for " + text).c_str());
+  VkDeviceMemory memory = context_.allocate_memory(size, memory_type, text);
   memory_.push_back(memory);
   name(VK_OBJECT_TYPE_DEVICE_MEMORY, uint64_t(memory), text);
   return memory;

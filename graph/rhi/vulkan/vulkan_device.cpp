@@ -314,12 +314,7 @@ void VulkanDevice::name(VkObjectType type, uint64_t handle, const std::string& l
 VkDeviceMemory VulkanDevice::allocate(const VkMemoryRequirements& req, bool host_visible, const std::string& label) {
   const VkMemoryPropertyFlags wanted = host_visible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
                                                     : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-  VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  info.allocationSize = req.size;
-  info.memoryTypeIndex = context_.memory_type(req.memoryTypeBits, wanted);
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  check(vkAllocateMemory(context_.device(), &info, nullptr, &memory), ("vkAllocateMemory for " + label).c_str());
-  return memory;
+  return context_.allocate_memory(req.size, context_.memory_type(req.memoryTypeBits, wanted), label);
 }
 
 rhi::BufferId VulkanDevice::create_buffer(const rhi::BufferDesc& desc) {
@@ -740,17 +735,7 @@ void VulkanDevice::submit(std::unique_ptr<rhi::CommandEncoder> commands) {
   dep.pMemoryBarriers = &to_host;
   vkCmdPipelineBarrier2(cmd, &dep);
   check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
-  VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence fence = VK_NULL_HANDLE;
-  check(vkCreateFence(context_.device(), &fence_info, nullptr, &fence), "vkCreateFence");
-  VkCommandBufferSubmitInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-  cmd_info.commandBuffer = cmd;
-  VkSubmitInfo2 submit_info{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-  submit_info.commandBufferInfoCount = 1;
-  submit_info.pCommandBufferInfos = &cmd_info;
-  VkResult result = vkQueueSubmit2(context_.queue(), 1, &submit_info, fence);
-  if (result == VK_SUCCESS) result = vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX);
-  vkDestroyFence(context_.device(), fence, nullptr);
+  const VkResult result = context_.submit_recorded(cmd);
   vkFreeCommandBuffers(context_.device(), pool_, 1, &cmd);
   check(result, "vkQueueSubmit2");
 }
