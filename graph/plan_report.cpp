@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "graph/pooling.h"
+
 namespace volgraph {
 namespace {
 
@@ -97,6 +99,9 @@ std::string plan_text(const Graph& g, const Plan& plan, const PlanReportContext&
   o << "\nmemory: " << m.transient_count << " transient resources; unaliased " << bytes_text(m.unaliased_bytes)
     << ", aliased " << bytes_text(m.aliased_bytes) << ", lower bound " << bytes_text(m.lower_bound_bytes)
     << "; persistent " << bytes_text(m.persistent_bytes) << "; placement " << placement_method_name(m.method) << "\n";
+  const ResourcePool pool = pool_resources(g, plan);
+  o << "pooled (WebGPU, no placed memory): " << pool.transient_objects << " objects for " << m.transient_count
+    << " transient resources, " << bytes_text(pool.transient_bytes) << "\n";
   o << "barriers: " << plan.barriers.size() << "\n";
   return o.str();
 }
@@ -160,6 +165,9 @@ std::string plan_json(const Graph& g, const Plan& plan, const PlanReportContext&
   j["memory"] = {{"transient_resources", m.transient_count}, {"unaliased_bytes", m.unaliased_bytes},
                  {"aliased_bytes", m.aliased_bytes}, {"lower_bound_bytes", m.lower_bound_bytes},
                  {"persistent_bytes", m.persistent_bytes}, {"placement", placement_method_name(m.method)}};
+  const ResourcePool pool = pool_resources(g, plan);
+  j["memory"]["pooled_objects"] = pool.transient_objects;
+  j["memory"]["pooled_bytes"] = pool.transient_bytes;
   return j.dump(2) + "\n";
 }
 

@@ -301,5 +301,38 @@ TEST(CheckerSelfTest, BreakingOtherAspectsIsCaught) {
   EXPECT_GT(overlaps, 5);
 }
 
+// Pooling: moving a resource into the object of one alive at the same time, or into an
+// object of another description, is caught; an untouched pool passes.
+TEST(CheckerSelfTest, BreakingThePoolIsCaught) {
+  int broken_overlap = 0, broken_description = 0;
+  for (uint64_t seed = 1; seed <= 200; ++seed) {
+    const RandomGraph g = make_random_graph(options_for_seed(seed));
+    const Plan plan = compile(g.graph);
+    const ResourcePool pool = pool_resources(g.graph, plan);
+    ASSERT_TRUE(check_pool(g.graph, plan, pool).empty()) << "seed " << seed;
+    for (uint32_t a = 0; a < g.graph.resources.size(); ++a) {
+      for (uint32_t b = a + 1; b < g.graph.resources.size(); ++b) {
+        const uint32_t oa = pool.object_of[a], ob = pool.object_of[b];
+        if (oa == kNone || ob == kNone || oa == ob || pool.objects[ob].occupants.size() != 1) continue;
+        const Lifetime& la = plan.lifetimes[a];
+        const Lifetime& lb = plan.lifetimes[b];
+        const bool overlapping = la.first <= lb.last && lb.first <= la.last;
+        ResourcePool broken = pool;  // b moves into a's object
+        broken.objects[oa].occupants.push_back(b);
+        broken.objects[ob].occupants.clear();
+        broken.object_of[b] = oa;
+        if (check_pool(g.graph, plan, broken).empty()) {
+          EXPECT_FALSE(overlapping) << "seed " << seed << ": overlap not caught";
+          continue;
+        }
+        broken_overlap += overlapping ? 1 : 0;
+        broken_description += overlapping ? 0 : 1;
+      }
+    }
+  }
+  EXPECT_GT(broken_overlap, 10);
+  EXPECT_GT(broken_description, 10);
+}
+
 }  // namespace
 }  // namespace volgraph::test

@@ -28,7 +28,8 @@ bool check_seed(uint64_t seed, const Combo& combo, bool verbose) {
     ADD_FAILURE() << describe(seed, o, combo.name) << "\ncompile() threw: " << e.what();
     return false;
   }
-  const std::vector<std::string> v = check_plan(g.graph, plan, combo.options, req);
+  std::vector<std::string> v = check_plan(g.graph, plan, combo.options, req);
+  for (std::string& violation : check_pool(g.graph, plan, pool_resources(g.graph, plan))) v.push_back(std::move(violation));
   if (verbose) std::cout << graph_text(g.graph) << plan_text(g.graph, plan);
   if (!v.empty()) {
     ADD_FAILURE() << describe(seed, o, combo.name) << "\n"

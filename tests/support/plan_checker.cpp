@@ -1136,4 +1136,48 @@ std::string plan_text(const Graph& graph, const Plan& plan) {
   return os.str();
 }
 
+namespace {
+
+bool same_description(const ResourceDesc& a, const ResourceDesc& b) {
+  return a.kind == b.kind && a.format == b.format && a.extent.width == b.extent.width &&
+         a.extent.height == b.extent.height && a.extent.depth == b.extent.depth &&
+         (a.kind != ResourceKind::buffer || a.buffer_bytes == b.buffer_bytes);
+}
+
+bool overlap(const Lifetime& a, const Lifetime& b) { return a.first <= b.last && b.first <= a.last; }
+
+}  // namespace
+
+std::vector<std::string> check_pool(const Graph& graph, const Plan& plan, const ResourcePool& pool) {
+  std::vector<std::string> v;
+  auto name = [&](uint32_t r) { return graph.resources[r].desc.name; };
+  std::vector<int> seen(graph.resources.size(), 0);
+  uint64_t transient = 0, persistent = 0;
+  for (uint32_t o = 0; o < pool.objects.size(); ++o) {
+    const PooledObject& object = pool.objects[o];
+    (object.persistent ? persistent : transient) += object.bytes;
+    if ((object.persistent || !plan.options.alias) && object.occupants.size() != 1) {
+      v.push_back("pool: object " + std::to_string(o) + " must hold one resource, holds " + std::to_string(object.occupants.size()));
+    }
+    for (size_t i = 0; i < object.occupants.size(); ++i) {
+      const uint32_t r = object.occupants[i];
+      ++seen[r];
+      if (pool.object_of[r] != o) v.push_back("pool: " + name(r) + " is in object " + std::to_string(o) + " but object_of says otherwise");
+      if (!same_description(graph.resources[r].desc, object.desc)) v.push_back("pool: " + name(r) + " differs from object " + std::to_string(o));
+      for (size_t j = 0; j < i; ++j) {
+        const uint32_t q = object.occupants[j];
+        if (overlap(plan.lifetimes[q], plan.lifetimes[r])) v.push_back("pool: " + name(q) + " and " + name(r) + " share an object while both are alive");
+      }
+    }
+  }
+  for (uint32_t r = 0; r < graph.resources.size(); ++r) {
+    const bool live = plan.lifetimes[r].first != kNone;
+    if (live && seen[r] != 1) v.push_back("pool: " + name(r) + " is in " + std::to_string(seen[r]) + " objects");
+    if (!live && (seen[r] != 0 || pool.object_of[r] != kNone)) v.push_back("pool: unused " + name(r) + " has an object");
+  }
+  if (transient != pool.transient_bytes) v.push_back("pool: transient_bytes is not the sum of the transient objects");
+  if (persistent != pool.persistent_bytes) v.push_back("pool: persistent_bytes is not the sum of the persistent objects");
+  return v;
+}
+
 }  // namespace volgraph::test

@@ -11,6 +11,7 @@
 
 #include "graph/graph.h"
 #include "graph/plan.h"
+#include "graph/pooling.h"
 
 namespace volgraph::test {
 
@@ -20,6 +21,13 @@ namespace volgraph::test {
 std::vector<std::string> check_plan(const Graph& graph, const Plan& plan, const CompileOptions& options);
 std::vector<std::string> check_plan(const Graph& graph, const Plan& plan, const CompileOptions& options,
                                     const RequirementsFn& requirements);
+
+// Violations of the pooling rules (graph/pooling.h) by `pool`, built for `plan` (whose
+// lifetimes check_plan verifies): every live resource in exactly one object, unused ones
+// in none; occupants of one object never alive together and of one description (kind,
+// format, extent, buffer size, compared here field by field); persistent resources and
+// every resource under --no-alias alone; the byte totals the objects' sums.
+std::vector<std::string> check_pool(const Graph& graph, const Plan& plan, const ResourcePool& pool);
 
 // What culling must give, computed independently (exposed for tests).
 struct ExpectedCulling {
