@@ -135,8 +135,9 @@ ResourceDesc resolve_slot(const PassDecl&, const SlotDecl& slot, Extent output_s
       auto scaled = [](uint32_t n, float s) {
         return std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(double(n) * s)));
       };
+      const uint32_t depth = slot.size.param.empty() ? slot.size.absolute.depth : uint32_t(std::max<int64_t>(1, size_param));
       d.extent = {scaled(output_size.width, slot.size.scale_x), scaled(output_size.height, slot.size.scale_y),
-                  std::max<uint32_t>(1, slot.size.absolute.depth)};
+                  std::max<uint32_t>(1, depth)};
       break;
     }
     case SizeSpec::Mode::square_param: {

@@ -60,6 +60,12 @@ SizeSpec SizeSpec::of_output(float sx, float sy, uint32_t depth) {
   return s;
 }
 
+SizeSpec SizeSpec::of_output_slices(float sx, float sy, std::string param) {
+  SizeSpec s = of_output(sx, sy, 1);
+  s.param = std::move(param);
+  return s;
+}
+
 SizeSpec SizeSpec::square_of(std::string param_name) {
   SizeSpec s;
   s.mode = Mode::square_param;

@@ -55,11 +55,13 @@ struct SizeSpec {
   Extent absolute{};             // absolute: all three; relative/square_param: depth only
   float scale_x = 1.0f;          // relative
   float scale_y = 1.0f;          // relative
-  std::string param;             // square_param
+  std::string param;             // square_param: the side; relative: the depth, when set
   uint64_t buffer_bytes = 0;     // buffers: absolute size in bytes
 
   static SizeSpec fixed(uint32_t w, uint32_t h = 1, uint32_t d = 1);
   static SizeSpec of_output(float sx = 1.0f, float sy = 1.0f, uint32_t depth = 1);
+  // A fraction of the output in x and y, as many slices as integer parameter `param`.
+  static SizeSpec of_output_slices(float sx, float sy, std::string param);
   static SizeSpec square_of(std::string param_name);
   static SizeSpec bytes(uint64_t n);
 };

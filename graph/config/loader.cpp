@@ -659,7 +659,7 @@ class Wiring {
   ResourceDesc output_desc(uint32_t p, const SlotDecl& slot) {
     const PassDecl& decl = *decls_[p];
     int64_t side = 0;
-    if (slot.size.mode == SizeSpec::Mode::square_param) {
+    if (!slot.size.param.empty()) {
       side = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.param))]);
     }
     SlotDecl effective = slot;

@@ -170,6 +170,7 @@ std::vector<Readback> Executor::run_frame_and_read(std::span<const uint32_t> res
     if (timed) encoder->write_timestamp(queries_, 2 * pos);
     const auto start = std::chrono::steady_clock::now();
     PassContext context(device_, *encoder, graph_, plan_.order[pos].pass, *resources_, scene_);
+    context.frame = frame_;
     executions_[pos]->record(context);
     cpu_ms[pos] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (timed) encoder->write_timestamp(queries_, 2 * pos + 1);

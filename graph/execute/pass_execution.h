@@ -35,6 +35,7 @@ class PassContext {
   rhi::TextureViewId view(std::string_view slot) const { return resources_.view(resource(slot)); }
   rhi::BufferId buffer(std::string_view slot) const { return resources_.buffer(resource(slot)); }
   const Scene* scene;
+  uint64_t frame = 0;  // frames run before this one (temporal passes jitter and blend by it)
 
  private:
   const rhi::GraphResourceSet& resources_;

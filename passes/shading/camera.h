@@ -136,16 +136,40 @@ inline Mat4 view_projection(const Camera& c, double aspect) {
   return perspective(c.fov_y_deg, aspect, c.near, c.far) * look_at(c.position, c.target, c.up);
 }
 
-// The direction (unit, world space) pixel (i, j) of a W × H frame looks along.
-inline Vec3 pixel_ray(const Camera& c, uint32_t width, uint32_t height, double i, double j) {
-  const double x = (i + 0.5) / width * 2 - 1, y = 1 - (j + 0.5) / height * 2;
-  const double t = std::tan(c.fov_y_deg * M_PI / 360.0), aspect = double(width) / height;
+// The camera's rays by NDC (shaders/include/view_rays.glsl): the ray through NDC (x, y)
+// is forward + x·right + y·up, scaled so that its component along forward is 1 — a point
+// at view depth z along it is position + z·ray.
+struct ViewRays {
+  Vec3 position, forward, right, up;
+};
+
+inline ViewRays view_rays(const Camera& c, double aspect) {
+  const double t = std::tan(c.fov_y_deg * M_PI / 360.0);
   const Vec3 f = normalize(sub(c.target, c.position));
   const Vec3 s = normalize(cross(f, c.up));
   const Vec3 u = cross(s, f);
-  Vec3 d;
-  for (size_t k = 0; k < 3; ++k) d[k] = f[k] + x * t * aspect * s[k] + y * t * u[k];
-  return normalize(d);
+  return {c.position, f, scaled(s, t * aspect), scaled(u, t)};
+}
+
+inline Vec3 view_ray(const ViewRays& v, double ndc_x, double ndc_y) {
+  return add(v.forward, add(scaled(v.right, ndc_x), scaled(v.up, ndc_y)));
+}
+
+// The direction (unit, world space) pixel (i, j) of a W × H frame looks along.
+inline Vec3 pixel_ray(const Camera& c, uint32_t width, uint32_t height, double i, double j) {
+  const double x = (i + 0.5) / width * 2 - 1, y = 1 - (j + 0.5) / height * 2;
+  return normalize(view_ray(view_rays(c, double(width) / height), x, y));
+}
+
+// The inverse of an affine transform (a model matrix): world to the object's space.
+inline Mat4 inverse_affine(const Mat4& m) {
+  const Mat4 inverse_transpose = normal_matrix(m);
+  Mat4 r = Mat4::identity();
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) r(row, col) = inverse_transpose(col, row);
+  }
+  for (int row = 0; row < 3; ++row) r(row, 3) = -(r(row, 0) * m(0, 3) + r(row, 1) * m(1, 3) + r(row, 2) * m(2, 3));
+  return r;
 }
 
 }  // namespace volgraph::shading

@@ -1,0 +1,89 @@
+// The scene's participating media at a world-space point: global homogeneous fog,
+// exponential height fog and local volumes (box, sphere, ellipsoid) with an edge fade,
+// summed; g is the σs-weighted mean of the media's. Packed by passes/shading/
+// media_field.cpp (std140); CPU twin: passes/shading/media_field.h. Noise density is not
+// sampled yet.
+#ifndef VOLGRAPH_MEDIA_FIELD_GLSL
+#define VOLGRAPH_MEDIA_FIELD_GLSL
+#include "media.glsl"
+
+const int MAX_MEDIUM_VOLUMES = 8;
+const int SHAPE_BOX = 1;
+const int SHAPE_SPHERE = 2;
+const int SHAPE_ELLIPSOID = 3;
+
+struct MediumCoefficients {
+  vec4 sigma_s_g;  // rgb σs (1/m), w g
+  vec4 sigma_a;    // rgb σa (1/m)
+  vec4 emission;   // rgb radiance per metre
+};
+
+struct MediumVolume {
+  mat4 world_to_local;
+  vec4 size_shape;  // xyz size (box edges, sphere radius in x, ellipsoid radii), w shape
+  vec4 fade;        // x edge fade (m)
+  MediumCoefficients medium;
+};
+
+struct MediaField {
+  ivec4 counts;                    // x volumes, y global fog present, z height fog present
+  MediumCoefficients fog;
+  MediumCoefficients height_fog;   // at base height
+  vec4 height;                     // x base height (m), y falloff (1/m)
+  MediumVolume volumes[MAX_MEDIUM_VOLUMES];
+};
+
+struct MediaSample {
+  vec3 sigma_s;
+  vec3 sigma_a;
+  vec3 emission;
+  float g;
+};
+
+// How far inside the volume's surface the local point is (negative outside), in
+// local units; the ellipsoid's is approximate (scaled by its smallest radius).
+float inside_distance(MediumVolume v, vec3 local) {
+  const int shape = int(v.size_shape.w);
+  if (shape == SHAPE_BOX) {
+    const vec3 d = 0.5 * v.size_shape.xyz - abs(local);
+    return min(d.x, min(d.y, d.z));
+  }
+  if (shape == SHAPE_SPHERE) return v.size_shape.x - length(local);
+  const vec3 radii = max(v.size_shape.xyz, vec3(1e-12));
+  return (1.0 - length(local / radii)) * min(radii.x, min(radii.y, radii.z));
+}
+
+float volume_density(MediumVolume v, vec3 p) {
+  const vec3 local = (v.world_to_local * vec4(p, 1.0)).xyz;
+  const float d = inside_distance(v, local);
+  if (d < 0.0) return 0.0;
+  return v.fade.x > 0.0 ? clamp(d / v.fade.x, 0.0, 1.0) : 1.0;
+}
+
+void add_medium(inout MediaSample s, inout float g_weight, MediumCoefficients m, float density) {
+  const vec3 sigma_s = m.sigma_s_g.rgb * density;
+  s.sigma_s += sigma_s;
+  s.sigma_a += m.sigma_a.rgb * density;
+  s.emission += m.emission.rgb * density;
+  const float weight = sigma_s.r + sigma_s.g + sigma_s.b;
+  s.g += m.sigma_s_g.w * weight;
+  g_weight += weight;
+}
+
+MediaSample sample_media(MediaField field, vec3 p) {
+  MediaSample s = MediaSample(vec3(0.0), vec3(0.0), vec3(0.0), 0.0);
+  float g_weight = 0.0;
+  if (field.counts.y != 0) add_medium(s, g_weight, field.fog, 1.0);
+  if (field.counts.z != 0) {
+    const float density = exp(min(-field.height.y * (p.y - field.height.x), MAX_EXPONENT));
+    add_medium(s, g_weight, field.height_fog, density);
+  }
+  for (int i = 0; i < field.counts.x; ++i) {
+    const float density = volume_density(field.volumes[i], p);
+    if (density > 0.0) add_medium(s, g_weight, field.volumes[i].medium, density);
+  }
+  s.g = g_weight > 0.0 ? s.g / g_weight : 0.0;
+  return s;
+}
+
+#endif
