@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -75,7 +76,8 @@ using SceneCheck = std::vector<ParamProblem> (*)(const PassDecl& decl, const Sce
                                                  const std::vector<ParamValue>& params);
 
 // Makes what a pass of this type does on the GPU (graph/execute/pass_execution.h).
-using MakeExecution = std::unique_ptr<PassExecution> (*)();
+// A function object, so a pass type may hand its executions objects they share.
+using MakeExecution = std::function<std::unique_ptr<PassExecution>()>;
 
 struct PassDecl {
   std::string name;

@@ -1,7 +1,9 @@
 #include "graph/execute/executor.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <stdexcept>
 
 #include "graph/rhi/device_error.h"
 
@@ -32,111 +34,27 @@ float half_to_float(uint16_t h) {
   return f;
 }
 
-}  // namespace
-
-Executor::Executor(rhi::Device& device, const Graph& graph, const Scene* scene, const CompileOptions& options)
-    : device_(device), graph_(graph), scene_(scene), resources_(device.create_graph_resources(graph)) {
-  plan_ = compile(graph, options, resources_->requirements());
-  for (const PlannedPass& p : plan_.order) {
-    const PassDecl& decl = *graph.passes[p.pass].decl;
-    if (!decl.make_execution) {
-      throw DeviceError(DeviceError::Kind::unsupported, "pass \"" + graph.passes[p.pass].name + "\" (" + decl.name +
-                                                            ") has no GPU implementation yet");
-    }
-    executions_.push_back(decl.make_execution());
-  }
-  resources_->bind(plan_);
-  if (device.has_timestamps() && !plan_.order.empty()) {
-    queries_ = device.create_timestamp_queries("pass times", uint32_t(2 * plan_.order.size()));
-  }
-}
-
-Executor::~Executor() = default;
-
-// The plan's transitions before a pass. On the first frame, persistent resources have
-// no previous frame: their first transition starts from undefined contents.
-std::vector<rhi::ResourceBarrier> Executor::barriers_before(uint32_t position) const {
-  std::vector<rhi::ResourceBarrier> out;
-  const PlannedPass& p = plan_.order[position];
-  for (uint32_t i = p.barrier_begin; i < p.barrier_begin + p.barrier_count; ++i) {
-    const Barrier& b = plan_.barriers[i];
-    rhi::ResourceBarrier rb{{}, {}, b.from, b.to};
-    if (b.resource != kNone) {
-      const ResourceDesc& d = graph_.resources[b.resource].desc;
-      if (d.kind == ResourceKind::buffer) rb.buffer = resources_->buffer(b.resource);
-      else rb.texture = resources_->texture(b.resource);
-      if (frame_ == 0 && d.persistent && plan_.lifetimes[b.resource].first == position) {
-        rb.from = {stage::none, access::none, d.kind == ResourceKind::buffer ? Layout::none : Layout::undefined};
-      }
-    }
-    out.push_back(rb);
-  }
-  return out;
-}
-
-void Executor::run_frame() {
-  auto encoder = device_.create_command_encoder("frame " + std::to_string(frame_));
-  std::vector<double> cpu_ms(plan_.order.size());
-  for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
-    const GraphPass& pass = graph_.passes[plan_.order[pos].pass];
-    encoder->push_debug_group(pass.name + " (" + pass.decl->name + ")");
-    const std::vector<rhi::ResourceBarrier> barriers = barriers_before(pos);
-    if (!barriers.empty()) encoder->barrier(barriers);
-    if (queries_) encoder->write_timestamp(queries_, 2 * pos);
-    const auto start = std::chrono::steady_clock::now();
-    PassContext context(device_, *encoder, graph_, plan_.order[pos].pass, *resources_, scene_);
-    executions_[pos]->record(context);
-    cpu_ms[pos] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (queries_) encoder->write_timestamp(queries_, 2 * pos + 1);
-    encoder->pop_debug_group();
-  }
-  const auto submitted = std::chrono::steady_clock::now();
-  device_.submit(std::move(encoder));
-  frame_wall_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - submitted).count();
-  timings_.clear();
-  const std::vector<double> ns =
-      queries_ ? device_.read_timestamps(queries_, 0, uint32_t(2 * plan_.order.size())) : std::vector<double>{};
-  for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
-    const GraphPass& p = graph_.passes[plan_.order[pos].pass];
-    const double gpu = ns.empty() ? 0.0 : (ns[2 * pos + 1] - ns[2 * pos]) * 1e-6;
-    timings_.push_back({p.name, p.decl->name, gpu, cpu_ms[pos]});
-  }
-  ++frame_;
-}
-
-// The state the resource's last use in the frame left it in.
-AccessState Executor::last_state(uint32_t r) const {
-  AccessState last{};
-  for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
-    const GraphPass& p = graph_.passes[plan_.order[pos].pass];
-    for (const ResourceUse& u : p.uses) {
-      if (u.resource == r) last = access_state(u.usage, p.kind, graph_.resources[r].desc.kind);
-    }
-  }
-  return last;
-}
-
-Texels Executor::read_texture(uint32_t r) {
-  const ResourceDesc& d = graph_.resources[r].desc;
+// The 2D texture formats read back as texels.
+bool readable_as_texels(const ResourceDesc& d) {
   const bool mono = d.format == Format::r32_float || d.format == Format::d32_float;
-  if (d.kind != ResourceKind::texture2d ||
-      (d.format != Format::rgba32_float && d.format != Format::rgba16_float && !mono)) {
-    throw DeviceError(DeviceError::Kind::unsupported,
-                      d.name + " is a " + std::string(kind_name(d.kind)) + " of " + std::string(format_info(d.format).name) +
-                          "; reading back takes 2D rgba32_float, rgba16_float, r32_float or d32_float textures");
-  }
-  if (!resources_->texture(r)) throw DeviceError(DeviceError::Kind::other, d.name + " was not used in the last frame");
-  const uint32_t texel_bytes = format_info(d.format).bytes_per_texel;
-  const rhi::BufferId readback = device_.create_buffer(
-      {d.name + " read-back", uint64_t(d.extent.width) * d.extent.height * texel_bytes, rhi::buffer_usage::copy_dst});
-  auto encoder = device_.create_command_encoder("read " + d.name);
-  const rhi::ResourceBarrier to_copy{resources_->texture(r), {}, last_state(r),
-                                     access_state(Usage::copy_src, PassKind::transfer, d.kind)};
-  encoder->barrier({&to_copy, 1});
-  encoder->copy_texture_to_buffer(resources_->texture(r), readback, 0);
-  device_.submit(std::move(encoder));
-  const std::vector<std::byte> raw = device_.read_buffer(readback);
-  device_.destroy(readback);
+  return d.kind == ResourceKind::texture2d && (d.format == Format::rgba32_float || d.format == Format::rgba16_float || mono);
+}
+
+DeviceError not_texels(const ResourceDesc& d) {
+  return DeviceError(DeviceError::Kind::unsupported,
+                     d.name + " is a " + std::string(kind_name(d.kind)) + " of " + std::string(format_info(d.format).name) +
+                         "; reading back takes 2D rgba32_float, rgba16_float, r32_float or d32_float textures");
+}
+
+uint64_t readback_bytes(const ResourceDesc& d) {
+  if (d.kind == ResourceKind::buffer) return d.buffer_bytes;
+  return uint64_t(d.extent.width) * d.extent.height * format_info(d.format).bytes_per_texel;
+}
+
+// A 2D texture's read-back bytes (rows tightly packed) as RGBA floats; a one-channel
+// format is copied to RGB, alpha 1.
+Texels texels_of(const ResourceDesc& d, const std::vector<std::byte>& raw) {
+  const bool mono = d.format == Format::r32_float || d.format == Format::d32_float;
   const size_t texels = size_t(d.extent.width) * d.extent.height;
   Texels out{d.extent.width, d.extent.height, std::vector<float>(texels * 4, 1.0f)};
   for (size_t t = 0; t < texels; ++t) {
@@ -157,21 +75,217 @@ Texels Executor::read_texture(uint32_t r) {
   return out;
 }
 
+// The plan's tables are indexed by the graph's passes and resources, every pass's
+// barriers lie inside the barrier list and name the graph's resources.
+bool plan_fits(const Graph& graph, const Plan& plan) {
+  if (plan.position.size() != graph.passes.size() || plan.lifetimes.size() != graph.resources.size() ||
+      plan.placements.size() != graph.resources.size()) {
+    return false;
+  }
+  for (const PlannedPass& p : plan.order) {
+    if (p.pass >= graph.passes.size() || uint64_t(p.barrier_begin) + p.barrier_count > plan.barriers.size()) return false;
+  }
+  for (const Barrier& b : plan.barriers) {
+    if (b.resource != kNone && b.resource >= graph.resources.size()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+Executor::Executor(rhi::Device& device, const Graph& graph, const Scene* scene, const CompileOptions& options)
+    : device_(device), graph_(graph), scene_(scene), resources_(device.create_graph_resources(graph)) {
+  plan_ = compile(graph, options, resources_->requirements());
+  prepare();
+}
+
+Executor::Executor(rhi::Device& device, const Graph& graph, const Scene* scene,
+                   std::unique_ptr<rhi::GraphResourceSet> resources, Plan plan)
+    : device_(device), graph_(graph), scene_(scene), resources_(std::move(resources)), plan_(std::move(plan)) {
+  prepare();
+}
+
+Plan Executor::compile_for(rhi::Device& device, const Graph& graph, const CompileOptions& options) {
+  return compile(graph, options, device.create_graph_resources(graph)->requirements());
+}
+
+std::unique_ptr<Executor> Executor::for_plan(rhi::Device& device, const Graph& graph, const Scene* scene, Plan plan) {
+  if (!plan_fits(graph, plan)) throw std::invalid_argument("the plan given to the executor is not this graph's plan");
+  return std::unique_ptr<Executor>(new Executor(device, graph, scene, device.create_graph_resources(graph), std::move(plan)));
+}
+
+// Each pass's execution and the plan's memory bound.
+void Executor::prepare() {
+  for (const PlannedPass& p : plan_.order) {
+    const PassDecl& decl = *graph_.passes[p.pass].decl;
+    if (!decl.make_execution) {
+      throw DeviceError(DeviceError::Kind::unsupported, "pass \"" + graph_.passes[p.pass].name + "\" (" + decl.name +
+                                                            ") has no GPU implementation yet");
+    }
+    executions_.push_back(decl.make_execution());
+  }
+  resources_->bind(plan_);
+}
+
+// Whether this frame writes time stamps; their queries are made for the first timed frame.
+bool Executor::timing_frame() {
+  if (!gpu_timing_ || !device_.has_timestamps() || plan_.order.empty()) return false;
+  if (!queries_) queries_ = device_.create_timestamp_queries("pass times", uint32_t(2 * plan_.order.size()));
+  return true;
+}
+
+Executor::~Executor() = default;
+
+// The plan's transitions before a pass. On the first frame, persistent resources have
+// no previous frame: their first transition starts from undefined contents.
+std::vector<rhi::ResourceBarrier> Executor::barriers_before(uint32_t position) const {
+  std::vector<rhi::ResourceBarrier> out;
+  const PlannedPass& p = plan_.order[position];
+  for (uint32_t i = p.barrier_begin; i < p.barrier_begin + p.barrier_count; ++i) {
+    const Barrier& b = plan_.barriers[i];
+    if (b.resource == kNone) {
+      out.push_back({{}, {}, b.from, b.to});
+      continue;
+    }
+    const ResourceDesc& d = graph_.resources[b.resource].desc;
+    const bool first_ever = frame_ == 0 && d.persistent && plan_.lifetimes[b.resource].first == position;
+    const AccessState undefined{stage::none, access::none, d.kind == ResourceKind::buffer ? Layout::none : Layout::undefined};
+    out.push_back(barrier_of(b.resource, first_ever ? undefined : b.from, b.to));
+  }
+  return out;
+}
+
+void Executor::run_frame() { run_frame_and_read({}); }
+
+std::vector<Readback> Executor::run_frame_and_read(std::span<const uint32_t> resources) {
+  for (const uint32_t r : resources) check_readable(r);
+  const bool timed = timing_frame();
+  auto encoder = device_.create_command_encoder("frame " + std::to_string(frame_));
+  std::vector<double> cpu_ms(plan_.order.size());
+  for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
+    const GraphPass& pass = graph_.passes[plan_.order[pos].pass];
+    encoder->push_debug_group(pass.name + " (" + pass.decl->name + ")");
+    const std::vector<rhi::ResourceBarrier> barriers = barriers_before(pos);
+    if (!barriers.empty()) encoder->barrier(barriers);
+    if (timed) encoder->write_timestamp(queries_, 2 * pos);
+    const auto start = std::chrono::steady_clock::now();
+    PassContext context(device_, *encoder, graph_, plan_.order[pos].pass, *resources_, scene_);
+    executions_[pos]->record(context);
+    cpu_ms[pos] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (timed) encoder->write_timestamp(queries_, 2 * pos + 1);
+    encoder->pop_debug_group();
+  }
+  const PendingReadback pending = record_readback(*encoder, resources);
+  const auto submitted = std::chrono::steady_clock::now();
+  device_.submit(std::move(encoder));
+  frame_wall_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - submitted).count();
+  timings_.clear();
+  const std::vector<double> ns =
+      timed ? device_.read_timestamps(queries_, 0, uint32_t(2 * plan_.order.size())) : std::vector<double>{};
+  for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
+    const GraphPass& p = graph_.passes[plan_.order[pos].pass];
+    const double gpu = ns.empty() ? 0.0 : (ns[2 * pos + 1] - ns[2 * pos]) * 1e-6;
+    timings_.push_back({p.name, p.decl->name, gpu, cpu_ms[pos]});
+  }
+  ++frame_;
+  return collect(pending, resources);
+}
+
+rhi::ResourceBarrier Executor::barrier_of(uint32_t r, const AccessState& from, const AccessState& to) const {
+  if (graph_.resources[r].desc.kind == ResourceKind::buffer) return {{}, resources_->buffer(r), from, to};
+  return {resources_->texture(r), {}, from, to};
+}
+
+// The state the resource's last use in the frame left it in.
+AccessState Executor::last_state(uint32_t r) const {
+  AccessState last{};
+  for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
+    const GraphPass& p = graph_.passes[plan_.order[pos].pass];
+    for (const ResourceUse& u : p.uses) {
+      if (u.resource == r) last = access_state(u.usage, p.kind, graph_.resources[r].desc.kind);
+    }
+  }
+  return last;
+}
+
+void Executor::check_readable(uint32_t r) const {
+  const ResourceDesc& d = graph_.resources[r].desc;
+  const bool buffer = d.kind == ResourceKind::buffer;
+  if (!buffer && !readable_as_texels(d)) throw not_texels(d);
+  if (buffer ? !resources_->buffer(r) : !resources_->texture(r)) {
+    throw DeviceError(DeviceError::Kind::other, d.name + " was not used in the last frame");
+  }
+}
+
+// From the state the frame left each resource in to copy source, once per resource.
+std::vector<rhi::ResourceBarrier> Executor::to_copy_source(std::span<const uint32_t> resources) const {
+  std::vector<rhi::ResourceBarrier> out;
+  for (size_t i = 0; i < resources.size(); ++i) {
+    const uint32_t r = resources[i];
+    if (std::find(resources.begin(), resources.begin() + i, r) != resources.begin() + i) continue;
+    const AccessState copy_source = access_state(Usage::copy_src, PassKind::transfer, graph_.resources[r].desc.kind);
+    out.push_back(barrier_of(r, last_state(r), copy_source));
+  }
+  return out;
+}
+
+// Every resource copied into one read-back buffer, each at a 16-byte aligned offset
+// (texel-size aligned for texture copies).
+Executor::PendingReadback Executor::record_readback(rhi::CommandEncoder& encoder, std::span<const uint32_t> resources) {
+  PendingReadback pending;
+  if (resources.empty()) return pending;
+  uint64_t total = 0;
+  for (const uint32_t r : resources) {
+    pending.offsets.push_back(total);
+    total += (readback_bytes(graph_.resources[r].desc) + 15) / 16 * 16;
+  }
+  pending.buffer = device_.create_buffer({"read-back", total, rhi::buffer_usage::copy_dst});
+  encoder.barrier(to_copy_source(resources));
+  for (size_t i = 0; i < resources.size(); ++i) {
+    const uint32_t r = resources[i];
+    if (graph_.resources[r].desc.kind == ResourceKind::buffer) {
+      encoder.copy_buffer_to_buffer(resources_->buffer(r), pending.buffer, graph_.resources[r].desc.buffer_bytes,
+                                    pending.offsets[i]);
+    } else {
+      encoder.copy_texture_to_buffer(resources_->texture(r), pending.buffer, pending.offsets[i]);
+    }
+  }
+  return pending;
+}
+
+std::vector<Readback> Executor::collect(const PendingReadback& pending, std::span<const uint32_t> resources) {
+  if (resources.empty()) return {};
+  const std::vector<std::byte> raw = device_.read_buffer(pending.buffer);
+  device_.destroy(pending.buffer);
+  std::vector<Readback> out;
+  for (size_t i = 0; i < resources.size(); ++i) {
+    const ResourceDesc& d = graph_.resources[resources[i]].desc;
+    const auto begin = raw.begin() + std::ptrdiff_t(pending.offsets[i]);
+    std::vector<std::byte> bytes(begin, begin + std::ptrdiff_t(readback_bytes(d)));
+    if (d.kind == ResourceKind::buffer) out.push_back({{}, std::move(bytes)});
+    else out.push_back({texels_of(d, bytes), {}});
+  }
+  return out;
+}
+
+std::vector<Readback> Executor::read_resources(std::span<const uint32_t> resources) {
+  if (resources.empty()) return {};
+  for (const uint32_t r : resources) check_readable(r);
+  auto encoder = device_.create_command_encoder("read back");
+  const PendingReadback pending = record_readback(*encoder, resources);
+  device_.submit(std::move(encoder));
+  return collect(pending, resources);
+}
+
+Texels Executor::read_texture(uint32_t r) {
+  if (!readable_as_texels(graph_.resources[r].desc)) throw not_texels(graph_.resources[r].desc);
+  return std::move(read_resources({&r, 1}).front().texels);
+}
+
 std::vector<std::byte> Executor::read_buffer(uint32_t r) {
   const ResourceDesc& d = graph_.resources[r].desc;
-  if (d.kind != ResourceKind::buffer || !resources_->buffer(r)) {
-    throw DeviceError(DeviceError::Kind::other, d.name + " is not a buffer used in the last frame");
-  }
-  const rhi::BufferId readback = device_.create_buffer({d.name + " read-back", d.buffer_bytes, rhi::buffer_usage::copy_dst});
-  auto encoder = device_.create_command_encoder("read " + d.name);
-  const rhi::ResourceBarrier to_copy{{}, resources_->buffer(r), last_state(r),
-                                     access_state(Usage::copy_src, PassKind::transfer, d.kind)};
-  encoder->barrier({&to_copy, 1});
-  encoder->copy_buffer_to_buffer(resources_->buffer(r), readback, d.buffer_bytes);
-  device_.submit(std::move(encoder));
-  std::vector<std::byte> bytes = device_.read_buffer(readback);
-  device_.destroy(readback);
-  return bytes;
+  if (d.kind != ResourceKind::buffer) throw DeviceError(DeviceError::Kind::other, d.name + " is not a buffer");
+  return std::move(read_resources({&r, 1}).front().bytes);
 }
 
 }  // namespace volgraph

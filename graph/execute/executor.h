@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,12 @@ struct Texels {
   std::vector<float> rgba;  // row 0 at the top
 };
 
+// One resource read back: a texture's texels or a buffer's bytes.
+struct Readback {
+  Texels texels;
+  std::vector<std::byte> bytes;
+};
+
 class Executor {
  public:
   // Compiles with the device's memory requirements. Throws DeviceError (unsupported)
@@ -33,18 +40,52 @@ class Executor {
   Executor(rhi::Device& device, const Graph& graph, const Scene* scene, const CompileOptions& options);
   ~Executor();
 
+  // The plan the constructor would run: compiled with the device's memory
+  // requirements, for callers that inspect or edit it first.
+  static Plan compile_for(rhi::Device& device, const Graph& graph, const CompileOptions& options);
+  // Runs the given plan as it is instead of compiling one: a plan edited to debug
+  // synchronisation or memory (barriers dropped, placements moved) runs exactly as
+  // edited. It must be this graph's plan for this device (compile_for), edits aside;
+  // throws std::invalid_argument when its tables do not fit the graph.
+  static std::unique_ptr<Executor> for_plan(rhi::Device& device, const Graph& graph, const Scene* scene, Plan plan);
+
   const Plan& plan() const { return plan_; }
   void run_frame();
+  // Runs one frame and reads `resources` back (as read_resources) at its end, in the
+  // same submission: one wait on the device instead of two. frame_wall_ms then
+  // includes the copies.
+  std::vector<Readback> run_frame_and_read(std::span<const uint32_t> resources);
   const std::vector<PassTiming>& timings() const { return timings_; }
+  // GPU time stamps around every pass: on by default (when the device has them). Off,
+  // frames record none and cost less (a frame as it runs unprofiled); gpu_ms stays 0.
+  void set_gpu_timing(bool on) { gpu_timing_ = on; }
   double frame_wall_ms() const { return frame_wall_ms_; }  // submit to completion, last frame
   // Graph output `index` (a 2D texture: rgba32/16 float, r32 float or d32 float; one
   // channel is copied to RGB) after the last frame.
   Texels read_output(size_t index) { return read_texture(graph_.outputs.at(index).resource); }
   Texels read_texture(uint32_t resource);
   std::vector<std::byte> read_buffer(uint32_t resource);
+  // Several resources (2D textures as read_texture takes, buffers) after the last
+  // frame, in one submission rather than one wait on the device each.
+  std::vector<Readback> read_resources(std::span<const uint32_t> resources);
 
  private:
+  // Read-back copies recorded, not yet submitted: where each resource lands.
+  struct PendingReadback {
+    rhi::BufferId buffer;
+    std::vector<uint64_t> offsets;
+  };
+
+  Executor(rhi::Device& device, const Graph& graph, const Scene* scene, std::unique_ptr<rhi::GraphResourceSet> resources,
+           Plan plan);
+  void prepare();
+  bool timing_frame();
   std::vector<rhi::ResourceBarrier> barriers_before(uint32_t position) const;
+  rhi::ResourceBarrier barrier_of(uint32_t resource, const AccessState& from, const AccessState& to) const;
+  std::vector<rhi::ResourceBarrier> to_copy_source(std::span<const uint32_t> resources) const;
+  void check_readable(uint32_t resource) const;
+  PendingReadback record_readback(rhi::CommandEncoder& encoder, std::span<const uint32_t> resources);
+  std::vector<Readback> collect(const PendingReadback& pending, std::span<const uint32_t> resources);
   AccessState last_state(uint32_t resource) const;
 
   rhi::Device& device_;
@@ -54,6 +95,7 @@ class Executor {
   Plan plan_;
   std::vector<std::unique_ptr<PassExecution>> executions_;  // per plan position
   rhi::QuerySetId queries_;
+  bool gpu_timing_ = true;
   std::vector<PassTiming> timings_;
   uint64_t frame_ = 0;
   double frame_wall_ms_ = 0;

@@ -252,7 +252,9 @@ class CommandEncoder {
   virtual void copy_buffer_to_texture(BufferId source, uint64_t offset, TextureId destination) = 0;
   virtual void copy_texture_to_buffer(TextureId source, BufferId destination, uint64_t offset) = 0;
   virtual void copy_texture_to_texture(TextureId source, TextureId destination) = 0;  // same size and format
-  virtual void copy_buffer_to_buffer(BufferId source, BufferId destination, uint64_t size) = 0;  // from offset 0 to 0
+  // From the source's start to `destination_offset` (read-backs gather several resources).
+  virtual void copy_buffer_to_buffer(BufferId source, BufferId destination, uint64_t size,
+                                     uint64_t destination_offset = 0) = 0;
 };
 
 // The graph's resources on a device: first the driver's requirements for compile(),

@@ -1,6 +1,5 @@
+// Synchronization2 barriers from the plan's access states (see barriers.h).
 #include "graph/rhi/vulkan/barriers.h"
-
-#include <vector>
 
 namespace volgraph::vulkan {
 
@@ -82,29 +81,6 @@ VkBufferMemoryBarrier2 buffer_barrier(VkBuffer buffer, const AccessState& from, 
 VkMemoryBarrier2 memory_barrier(const AccessState& from, const AccessState& to) {
   return {VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, to_vk_stages(from.stages), to_vk_access(from.access),
           to_vk_stages(to.stages), to_vk_access(to.access)};
-}
-
-void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, uint32_t position,
-                     const GraphResources& resources) {
-  const PlannedPass& pass = plan.order[position];
-  if (pass.barrier_count == 0) return;
-  std::vector<VkMemoryBarrier2> globals;
-  std::vector<VkBufferMemoryBarrier2> buffers;
-  std::vector<VkImageMemoryBarrier2> images;
-  for (uint32_t i = pass.barrier_begin; i < pass.barrier_begin + pass.barrier_count; ++i) {
-    const Barrier& b = plan.barriers[i];
-    if (b.resource == kNone) {
-      globals.push_back(memory_barrier(b.from, b.to));
-      continue;
-    }
-    const ResourceDesc& d = graph.resources[b.resource].desc;
-    if (d.kind == ResourceKind::buffer) {
-      buffers.push_back(buffer_barrier(resources.buffer(b.resource), b.from, b.to));
-    } else {
-      images.push_back(image_barrier(resources.image(b.resource), d.format, b.from, b.to));
-    }
-  }
-  submit_barriers(cmd, globals, buffers, images);
 }
 
 void submit_barriers(VkCommandBuffer cmd, const std::vector<VkMemoryBarrier2>& globals,

@@ -1,13 +1,13 @@
-// The plan's barriers in synchronization2 terms, recorded as the plan lists them:
-// every transition before a pass in one vkCmdPipelineBarrier2.
+// The plan's transitions (AccessState pairs) in synchronization2 terms, for the command
+// encoder's barrier(): every transition given together in one vkCmdPipelineBarrier2.
 #pragma once
 
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
-#include "graph/plan.h"
-#include "graph/rhi/vulkan/graph_resources.h"
+#include "graph/access.h"
+#include "graph/resource.h"
 
 namespace volgraph::vulkan {
 
@@ -24,9 +24,5 @@ VkMemoryBarrier2 memory_barrier(const AccessState& from, const AccessState& to);
 // Records the three lists in one vkCmdPipelineBarrier2 (nothing when all are empty).
 void submit_barriers(VkCommandBuffer cmd, const std::vector<VkMemoryBarrier2>& globals,
                      const std::vector<VkBufferMemoryBarrier2>& buffers, const std::vector<VkImageMemoryBarrier2>& images);
-
-// Records the barriers planned before order[position].
-void record_barriers(VkCommandBuffer cmd, const Graph& graph, const Plan& plan, uint32_t position,
-                     const GraphResources& resources);
 
 }  // namespace volgraph::vulkan

@@ -240,8 +240,9 @@ class VulkanEncoder final : public rhi::CommandEncoder {
     vkCmdCopyImage(cmd_, s.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                    &region);
   }
-  void copy_buffer_to_buffer(rhi::BufferId source, rhi::BufferId destination, uint64_t size) override {
-    const VkBufferCopy region{0, 0, size};
+  void copy_buffer_to_buffer(rhi::BufferId source, rhi::BufferId destination, uint64_t size,
+                             uint64_t destination_offset) override {
+    const VkBufferCopy region{0, destination_offset, size};
     vkCmdCopyBuffer(cmd_, device_.buffer(source).buffer, device_.buffer(destination).buffer, 1, &region);
   }
   void copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset) override {

@@ -1,0 +1,51 @@
+// Participating media maths shared by every fog technique, per RGB channel. CPU twin:
+// passes/shading/media.h — change both together; formulas and precision notes there.
+#ifndef VOLGRAPH_MEDIA_GLSL
+#define VOLGRAPH_MEDIA_GLSL
+
+const float SERIES_BELOW = 0.01;
+const float MAX_EXPONENT = 80.0;
+const float MIN_TRANSMITTANCE = 1e-6;
+
+// (1 − e^(−x)) / x, a series below |x| = SERIES_BELOW (the direct form cancels there).
+float one_minus_exp_over_x(float x) {
+  x = max(x, -MAX_EXPONENT);
+  if (abs(x) < SERIES_BELOW) return 1.0 + x * (-1.0 / 2.0 + x * (1.0 / 6.0 + x * (-1.0 / 24.0 + x / 120.0)));
+  return (1.0 - exp(-x)) / x;
+}
+vec3 one_minus_exp_over_x(vec3 x) {
+  return vec3(one_minus_exp_over_x(x.r), one_minus_exp_over_x(x.g), one_minus_exp_over_x(x.b));
+}
+
+vec3 transmittance(vec3 sigma_t, float distance) { return exp(-min(sigma_t * distance, vec3(1e30))); }
+
+// Wronski 2014 (eq. 14.15).
+void integrate_wronski(inout vec3 radiance, inout vec3 transmittance_so_far, vec3 in_scatter, vec3 sigma_t, float dz) {
+  radiance += transmittance_so_far * in_scatter * dz;
+  transmittance_so_far *= transmittance(sigma_t, dz);
+}
+
+// Hillaire 2015 (eq. 14.16), energy-conserving and stable as σt → 0.
+void integrate_hillaire(inout vec3 radiance, inout vec3 transmittance_so_far, vec3 in_scatter, vec3 sigma_t, float dz) {
+  radiance += transmittance_so_far * in_scatter * dz * one_minus_exp_over_x(sigma_t * dz);
+  transmittance_so_far *= transmittance(sigma_t, dz);
+}
+
+// Optical depth through exponential height fog along origin + t·direction, t ∈ [0, length].
+vec3 height_fog_optical_depth(vec3 sigma_base, float falloff, float base_height, float origin_y, float direction_y, float len) {
+  const float at_origin = exp(min(-falloff * (origin_y - base_height), MAX_EXPONENT));
+  return sigma_base * (at_origin * len * one_minus_exp_over_x(falloff * direction_y * len));
+}
+
+// Depth fog (eq. 14.12–14.14): the fraction of the surface's radiance left at distance z.
+float depth_fog_linear(float z, float z_start, float z_end) {
+  if (z_end <= z_start) return z < z_start ? 1.0 : 0.0;
+  return clamp((z_end - z) / (z_end - z_start), 0.0, 1.0);
+}
+float depth_fog_exponential(float z, float density) { return exp(-min(density * z, MAX_EXPONENT)); }
+float depth_fog_exponential_squared(float z, float density) {
+  const float dz = min(density * z, 9.0);
+  return exp(-dz * dz);
+}
+
+#endif

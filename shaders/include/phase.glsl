@@ -1,0 +1,35 @@
+// Phase functions normalised over the sphere; cos_theta between the light's direction of
+// travel and the scattered direction (forward: 1). CPU twin: passes/shading/phase.h —
+// change both together; the formulas and their precision notes are documented there.
+#ifndef VOLGRAPH_PHASE_GLSL
+#define VOLGRAPH_PHASE_GLSL
+
+const float INV_FOUR_PI = 0.0795774715459476679;
+const float HG_MAX_ABS_G_FOR_FP16 = 0.998;
+const float SCHLICK_MAX_K = 0.9999;
+
+float phase_isotropic() { return INV_FOUR_PI; }
+
+float phase_rayleigh(float cos_theta) { return 0.75 * INV_FOUR_PI * (1.0 + cos_theta * cos_theta); }
+
+// Henyey–Greenstein 1941, denominator as (1 − g)² + 2g(1 − cosθ).
+float phase_hg(float g, float cos_theta) {
+  const float one_minus_g = 1.0 - g;
+  const float base = one_minus_g * one_minus_g + 2.0 * g * (1.0 - cos_theta);
+  return INV_FOUR_PI * one_minus_g * (1.0 + g) / max(base * sqrt(base), 1e-30);
+}
+
+// Schlick (Blasi, Le Saëc, Schlick 1993): k ≈ 1.55g − 0.55g³, clamped inside (−1, 1).
+float schlick_k(float g) { return clamp(1.55 * g - 0.55 * g * g * g, -SCHLICK_MAX_K, SCHLICK_MAX_K); }
+
+float phase_schlick(float k, float cos_theta) {
+  const float base = k >= 0.0 ? (1.0 - k) + k * (1.0 - cos_theta) : (1.0 + k) - k * (1.0 + cos_theta);
+  return INV_FOUR_PI * (1.0 - k) * (1.0 + k) / max(base * base, 1e-30);
+}
+
+// Two HG lobes mixed (the issue's eq. 14.17).
+float phase_dual_hg(float g_forward, float g_backward, float w_forward, float cos_theta) {
+  return w_forward * phase_hg(g_forward, cos_theta) + (1.0 - w_forward) * phase_hg(g_backward, cos_theta);
+}
+
+#endif

@@ -1,0 +1,108 @@
+// The shared physics includes (shaders/include/phase.glsl, media.glsl) on lavapipe
+// against their CPU twins in float (passes/shading/phase.h, media.h), over a table that
+// covers the traps (g → ±1, x → 0, dense and empty media, huge distances): relative
+// error ≤ 2e-5 (GLSL lets exp be off by 3 + 2|x| ULP; our twins use the same formulas).
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "graph/rhi/vulkan/vulkan_device.h"
+#include "passes/shading/media.h"
+#include "passes/shading/phase.h"
+#include "graph/rhi/spirv_reflect.h"
+#include "tests/gpu/shaders/gpu_test_shaders.h"
+#include "tests/gpu/validation_messages.h"
+
+namespace volgraph::vulkan {
+namespace {
+
+struct Case {
+  float g, cos_theta, unused0 = 0, unused1 = 0;
+  float x, sigma_t, dz, falloff;
+  float origin_y, direction_y, unused2 = 0, unused3 = 0;
+};
+
+std::vector<Case> cases() {
+  const float gs[] = {-0.999f, -0.5f, 0.0f, 0.3f, 0.9f, 0.99f, 0.999f};
+  const float cosines[] = {-1.0f, -0.5f, 0.0f, 0.5f, 0.99f, 0.99999f, 1.0f};
+  const float xs[] = {0.0f, 1e-9f, 1e-6f, 1e-3f, 0.00999f, 0.0101f, 0.3f, 5.0f, -3.0f, 1e4f};
+  const float sigmas[] = {0.0f, 1e-7f, 1e-3f, 0.5f, 20.0f, 1e4f};
+  const float dzs[] = {1e-3f, 0.25f, 3.0f, 1e3f, 1e5f};
+  const float falloffs[] = {1e-6f, 0.05f, 0.5f, 3.0f};
+  const float directions[] = {-1.0f, -0.3f, 0.0f, 0.2f, 1.0f};
+  std::vector<Case> out;
+  size_t i = 0;
+  for (float g : gs) {
+    for (float c : cosines) {
+      out.push_back({g, c, 0, 0, xs[i % 10], sigmas[i % 6], dzs[i % 5], falloffs[i % 4], 2.0f - 0.5f * float(i % 7),
+                     directions[i % 5]});
+      ++i;
+    }
+  }
+  return out;
+}
+
+// The CPU twins' values for one case, in the shader's order.
+std::array<float, 8> expected(const Case& c) {
+  using namespace shading;
+  ScatterAccumulator<float> a;
+  integrate_hillaire(a, 1.0f, c.sigma_t, c.dz);
+  return {phase_hg(c.g, c.cos_theta), phase_schlick(schlick_k(c.g), c.cos_theta), phase_dual_hg(c.g, -0.5f * c.g, 0.7f, c.cos_theta),
+          phase_rayleigh(c.cos_theta), one_minus_exp_over_x(c.x), a.radiance, a.transmittance,
+          height_fog_optical_depth(c.sigma_t, c.falloff, 0.0f, c.origin_y, c.direction_y, c.dz)};
+}
+
+TEST(PhysicsTwins, ShadersMatchTheirCpuTwins) {
+  using namespace rhi;
+  auto context = Context::create({.validation = true});
+  {
+    VulkanDevice device(*context);
+    const std::vector<Case> table = cases();
+    const uint64_t in_bytes = table.size() * sizeof(Case), out_bytes = table.size() * 32;
+    const BufferId input = device.create_buffer({"cases", in_bytes, buffer_usage::storage | buffer_usage::copy_dst});
+    const BufferId output = device.create_buffer({"results", out_bytes, buffer_usage::storage | buffer_usage::copy_src});
+    const BufferId readback = device.create_buffer({"readback", out_bytes, buffer_usage::copy_dst});
+    device.write_buffer(input, 0, std::as_bytes(std::span(table)));
+
+    const auto spirv = gpu_test_shader_spirv("physics_twins.comp");
+    const rhi::ShaderStageCode stage{spirv, shader_stage::compute};
+    const auto layouts = reflect_bind_group_layouts({&stage, 1}, "physics twins");
+    const BindGroupLayoutId layout = device.create_bind_group_layout(layouts[0]);
+    const ComputePipelineId pipeline =
+        device.create_compute_pipeline({"physics twins", device.create_shader_module("physics_twins.comp", spirv), "main", {layout}});
+    const BindGroupId group =
+        device.create_bind_group({"physics twins", layout, {BindGroupEntry::of(0, input), BindGroupEntry::of(1, output)}});
+
+    auto encoder = device.create_command_encoder("physics twins");
+    const AccessState written = access_state(Usage::storage_write, PassKind::compute, ResourceKind::buffer);
+    const AccessState copied = access_state(Usage::copy_src, PassKind::transfer, ResourceKind::buffer);
+    const ResourceBarrier before{{}, output, {}, written}, after{{}, output, written, copied};
+    encoder->barrier({&before, 1});
+    encoder->begin_compute_pass("physics twins");
+    encoder->set_pipeline(pipeline);
+    encoder->set_bind_group(0, group);
+    encoder->dispatch(uint32_t((table.size() + 63) / 64));
+    encoder->end_compute_pass();
+    encoder->barrier({&after, 1});
+    encoder->copy_buffer_to_buffer(output, readback, out_bytes);
+    device.submit(std::move(encoder));
+    const std::vector<std::byte> bytes = device.read_buffer(readback);
+    const auto* results = reinterpret_cast<const float*>(bytes.data());
+
+    const char* names[] = {"hg", "schlick", "dual hg", "rayleigh", "1-exp/x", "hillaire L", "hillaire T", "height depth"};
+    for (size_t i = 0; i < table.size(); ++i) {
+      const std::array<float, 8> want = expected(table[i]);
+      for (size_t k = 0; k < 8; ++k) {
+        const float got = results[8 * i + k];
+        ASSERT_TRUE(std::isfinite(got)) << names[k] << " case " << i;
+        EXPECT_NEAR(got, want[k], 2e-5f * std::abs(want[k]) + 1e-30f) << names[k] << " case " << i << " g " << table[i].g
+                                                                     << " cos " << table[i].cos_theta << " x " << table[i].x;
+      }
+    }
+  }
+  const auto messages = context->take_validation_messages();
+  EXPECT_TRUE(messages.empty()) << joined(messages);
+}
+
+}  // namespace
+}  // namespace volgraph::vulkan
