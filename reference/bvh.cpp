@@ -30,6 +30,15 @@ void grow(Vec3& lo, Vec3& hi, const Vec3& p) {
   }
 }
 
+// The union of two boxes (an empty box, lo = +∞ and hi = −∞, changes nothing).
+template <typename Box>
+void merge(Box& into, const Box& other) {
+  for (size_t k = 0; k < 3; ++k) {
+    into.lo[k] = std::min(into.lo[k], other.lo[k]);
+    into.hi[k] = std::max(into.hi[k], other.hi[k]);
+  }
+}
+
 // 1/d per axis (±∞ for a zero component), for the slab test.
 Vec3 inverse_direction(const Vec3& d) { return {1.0 / d[0], 1.0 / d[1], 1.0 / d[2]}; }
 
@@ -97,8 +106,7 @@ uint32_t Bvh::build(Build& b, uint32_t begin, uint32_t end, uint32_t depth) {
   nodes_.push_back({});
   Box bounds, centroid_bounds;
   for (uint32_t i = begin; i < end; ++i) {
-    grow(bounds.lo, bounds.hi, b.boxes[order_[i]].lo);
-    grow(bounds.lo, bounds.hi, b.boxes[order_[i]].hi);
+    merge(bounds, b.boxes[order_[i]]);
     grow(centroid_bounds.lo, centroid_bounds.hi, b.centroids[order_[i]]);
   }
   nodes_[index].bounds = bounds;
@@ -110,8 +118,8 @@ uint32_t Bvh::build(Build& b, uint32_t begin, uint32_t end, uint32_t depth) {
   };
   if (count <= 1 || depth >= kMaxDepth) return make_leaf();
 
-  // The best binned split over the three axes: cost A_L·N_L + A_R·N_R (the parent's area
-  // and the traversal step are common to all splits and to the leaf's cost N·A).
+  // The best binned split over the three axes: cost A_L·N_L + A_R·N_R, against the
+  // leaf's N·A plus one traversal step A (a box test costs about a triangle test).
   double best_cost = std::numeric_limits<double>::infinity();
   size_t best_axis = 0;
   uint32_t best_bin = 0;
@@ -127,23 +135,20 @@ uint32_t Bvh::build(Build& b, uint32_t begin, uint32_t end, uint32_t depth) {
     for (uint32_t i = begin; i < end; ++i) {
       const uint32_t bin = bin_of(order_[i], axis);
       ++bin_counts[bin];
-      grow(bin_boxes[bin].lo, bin_boxes[bin].hi, b.boxes[order_[i]].lo);
-      grow(bin_boxes[bin].lo, bin_boxes[bin].hi, b.boxes[order_[i]].hi);
+      merge(bin_boxes[bin], b.boxes[order_[i]]);
     }
     std::array<double, kBins> right_cost{};
     Box right;
     uint32_t right_count = 0;
     for (uint32_t bin = kBins - 1; bin > 0; --bin) {
-      grow(right.lo, right.hi, bin_boxes[bin].lo);
-      grow(right.lo, right.hi, bin_boxes[bin].hi);
+      merge(right, bin_boxes[bin]);
       right_count += bin_counts[bin];
       right_cost[bin] = surface_area(right.lo, right.hi) * right_count;
     }
     Box left;
     uint32_t left_count = 0;
     for (uint32_t split = 1; split < kBins; ++split) {  // bins [0, split) go left
-      grow(left.lo, left.hi, bin_boxes[split - 1].lo);
-      grow(left.lo, left.hi, bin_boxes[split - 1].hi);
+      merge(left, bin_boxes[split - 1]);
       left_count += bin_counts[split - 1];
       if (left_count == 0 || left_count == count) continue;
       const double cost = surface_area(left.lo, left.hi) * left_count + right_cost[split];
@@ -156,7 +161,7 @@ uint32_t Bvh::build(Build& b, uint32_t begin, uint32_t end, uint32_t depth) {
   }
   const double leaf_cost = surface_area(bounds.lo, bounds.hi) * count;
   if (!std::isfinite(best_cost)) return make_leaf();  // every centroid in one place
-  if (count <= kMaxLeafSize && leaf_cost <= best_cost) return make_leaf();
+  if (count <= kMaxLeafSize && leaf_cost <= best_cost + surface_area(bounds.lo, bounds.hi)) return make_leaf();
 
   const uint32_t* middle = std::partition(order_.data() + begin, order_.data() + end,
                                           [&](uint32_t tri) { return bin_of(tri, best_axis) < best_bin; });

@@ -29,13 +29,33 @@ Vec3 interpolate(const std::array<Vec3, 3>& corners, double u, double v) {
   return add(add(scaled(corners[0], 1 - u - v), scaled(corners[1], u)), scaled(corners[2], v));
 }
 
+bool is_zero(const Vec3& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
+
+// The unit direction light travels in at `point`.
+Vec3 light_travel(const Light& light, const Vec3& point) {
+  return light.type == LightType::directional ? normalize(light.direction) : normalize(sub(point, light.position));
+}
+
+// Optical depth of the media from `point` to the light.
+Vec3 optical_depth_toward(const SceneMedia& media, const Light& light, const Vec3& point) {
+  const Vec3 to_light = scaled(light_travel(light, point), -1);
+  if (light.type == LightType::directional) return media.optical_depth_to_infinity(point, to_light);
+  return media.optical_depth(point, to_light, 0, std::sqrt(dot(sub(light.position, point), sub(light.position, point))));
+}
+
 // The camera's view axis, unit.
 Vec3 forward(const Camera& camera) { return normalize(sub(camera.target, camera.position)); }
 
 }  // namespace
 
-Renderer::Renderer(const Scene& scene)
-    : scene_(scene), triangles_(scene_triangles(scene)), camera_bvh_(triangles_.triangles), shadow_bvh_(shadow_casters(triangles_)) {}
+Renderer::Renderer(const Scene& scene, const IntegrationSettings& integration)
+    : scene_(scene),
+      triangles_(scene_triangles(scene)),
+      camera_bvh_(triangles_.triangles),
+      shadow_bvh_(shadow_casters(triangles_)),
+      media_(scene.media),
+      integration_(integration) {}
 
 Vec3 Renderer::pixel_radiance(uint32_t i, uint32_t j, uint32_t width, uint32_t height, uint32_t samples_per_axis) const {
   Vec3 sum{0, 0, 0};
@@ -52,7 +72,20 @@ Vec3 Renderer::pixel_radiance(uint32_t i, uint32_t j, uint32_t width, uint32_t h
 
 Vec3 Renderer::camera_ray_radiance(const Vec3& direction) const {
   const std::optional<SurfaceHit> hit = surface_hit(direction);
-  return hit ? surface_radiance(*hit) : scene_.background;
+  const Vec3 behind = hit ? surface_radiance(*hit) : scene_.background;
+  if (media_.empty()) return behind;
+  const Camera& camera = scene_.camera;
+  const double along_axis = dot(direction, forward(camera));
+  const double length = hit ? hit->t : along_axis > 0 ? camera.far / along_axis : 0;
+  // The in-scattering of a point or spot light peaks where the ray passes closest to it.
+  std::vector<double> breaks;
+  for (const Light& light : scene_.lights) {
+    if (light.type != LightType::directional) breaks.push_back(dot(sub(light.position, camera.position), direction));
+  }
+  const RayScattering media = integrate_single_scattering(
+      media_, camera.position, direction, length, std::move(breaks), [&](const Vec3& x) { return in_scattering(x, direction); },
+      integration_);
+  return add(media.radiance, times(media.transmittance, behind));
 }
 
 std::optional<SurfaceHit> Renderer::surface_hit(const Vec3& direction) const {
@@ -80,13 +113,28 @@ std::optional<SurfaceHit> Renderer::surface_hit(const Vec3& direction) const {
 
 Vec3 Renderer::surface_radiance(const SurfaceHit& hit) const {
   Vec3 e{0, 0, 0};
-  for (const Light& light : scene_.lights) {
-    const Vec3 unshadowed = shading::irradiance(light, hit.position, hit.normal);
-    if (unshadowed[0] == 0 && unshadowed[1] == 0 && unshadowed[2] == 0) continue;
-    if (light_visible(light, hit.position)) e = add(e, unshadowed);
-  }
+  for (const Light& light : scene_.lights) e = add(e, light_arrival(light, hit.position, hit.normal));
   const SurfaceMaterial& m = triangles_.materials[triangles_.attributes[hit.triangle].material];
   return add(shading::lambert(albedo_at(triangles_, m, hit.u, hit.v), e), emission_at(triangles_, m, hit.u, hit.v));
+}
+
+Vec3 Renderer::light_arrival(const Light& light, const Vec3& point, const Vec3& normal) const {
+  const Vec3 unshadowed = shading::irradiance(light, point, normal);
+  if (is_zero(unshadowed) || !light_visible(light, point)) return {0, 0, 0};
+  if (media_.empty()) return unshadowed;
+  return times(unshadowed, transmittance_of(optical_depth_toward(media_, light, point)));
+}
+
+Vec3 Renderer::in_scattering(const Vec3& point, const Vec3& direction) const {
+  Vec3 j = media_.at(point).emission;
+  for (const Light& light : scene_.lights) {
+    const Vec3 travel = light_travel(light, point);  // the light's direction of travel at the point
+    const Vec3 sigma_s_phase = media_.scattering(point, -dot(travel, direction));
+    if (is_zero(sigma_s_phase)) continue;
+    // Facing the light: irradiance is E (directional) or I/d² with the spot's cone.
+    j = add(j, times(sigma_s_phase, light_arrival(light, point, scaled(travel, -1))));
+  }
+  return j;
 }
 
 bool Renderer::light_visible(const Light& light, const Vec3& point) const {

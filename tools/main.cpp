@@ -59,6 +59,7 @@ options (reference):
   --threads N                  worker threads (default: the hardware's); the image does not depend on it
   --spp N                      samples per pixel on a regular sub-pixel grid, N a square (1, 4, 9, …);
                                default 1: pixel centres, as the GPU samples
+  --tolerance X                relative error allowed in each stretch of the media integral (default 1e-5)
 
 options (render):
   --backend vulkan|webgpu      default vulkan (webgpu arrives with issue 4)
@@ -80,6 +81,7 @@ struct Args {
   int frames = 1;
   int threads = 0;             // reference: 0 for the hardware's
   int samples_per_axis = 1;    // reference: √spp
+  double tolerance = 1e-5;     // reference: the media integral's relative tolerance
   bool timings = false, validation = false;
   std::string timings_out;
   std::vector<std::string> dumps;
@@ -151,6 +153,14 @@ std::optional<int> parse(int argc, char** argv, Args& args) {
       if (*end || v->empty() || n < 1 || n > 4096) return bad_usage(w + " expects a whole number in [1, 4096], got \"" + *v + "\"");
       if (w == "--spp" && root * root != n) return bad_usage("--spp expects a square number (1, 4, 9, 16, …), got \"" + *v + "\"");
       (w == "--threads" ? args.threads : args.samples_per_axis) = int(w == "--threads" ? n : root);
+    } else if (w == "--tolerance") {
+      const auto v = value("--tolerance");
+      if (!v) return kBadInput;
+      char* end = nullptr;
+      args.tolerance = std::strtod(v->c_str(), &end);
+      if (*end || v->empty() || !(args.tolerance >= 1e-12 && args.tolerance <= 0.1)) {
+        return bad_usage("--tolerance expects a number in [1e-12, 0.1], got \"" + *v + "\"");
+      }
     } else if (w == "--dump") {
       const auto v = value("--dump");
       if (!v) return kBadInput;
@@ -375,7 +385,9 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<reference::Renderer> renderer;
   try {
-    renderer.emplace(loaded.config.scene);
+    reference::IntegrationSettings integration;
+    integration.relative_tolerance = args.tolerance;
+    renderer.emplace(loaded.config.scene, integration);
   } catch (const std::runtime_error& e) {  // a model or texture the loader accepted but cannot be read now
     throw ConfigError({{{args.config, "/scene", 0}, e.what()}});
   }

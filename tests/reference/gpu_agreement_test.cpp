@@ -2,9 +2,7 @@
 // image (tests/golden/, the Vulkan render tone-mapped by the config's ACES composite)
 // against the reference's radiance through the same tone map (shading/tonemap.h), away
 // from shadow and silhouette edges (pixels whose 3×3 neighbourhood sees one object and
-// one sun visibility); the image is the same bit for bit on 1 and 2 threads; and the
-// time of a 320×180 reference of the helmet demo, printed.
-#include <chrono>
+// one sun visibility); and the image is the same bit for bit on 1 and 2 threads.
 #include <cstdio>
 
 #include <gtest/gtest.h>
@@ -86,19 +84,6 @@ TEST(ReferenceVersusGpu, ImageIsTheSameOnOneAndTwoThreads) {
   const ReferenceImage one = render_image(renderer, {.width = 64, .height = 36, .samples_per_axis = 2, .threads = 1});
   const ReferenceImage two = render_image(renderer, {.width = 64, .height = 36, .samples_per_axis = 2, .threads = 2});
   EXPECT_TRUE(one.rgb == two.rgb);
-}
-
-TEST(ReferenceTiming, HelmetDemoAt320x180) {
-  const auto start = std::chrono::steady_clock::now();
-  const LoadedConfig loaded = load_shipped("demo_helmet.json", 320, 180);
-  const Renderer renderer(loaded.config.scene);
-  const auto built = std::chrono::steady_clock::now();
-  const ReferenceImage image = render_image(renderer, {.width = 320, .height = 180, .threads = 2});
-  const auto done = std::chrono::steady_clock::now();
-  std::printf("reference timing: demo_helmet 320x180, %zu triangles, CPU 2 threads: load and BVH %.2f s, render %.2f s\n",
-              renderer.triangles().triangles.size(), std::chrono::duration<double>(built - start).count(),
-              std::chrono::duration<double>(done - built).count());
-  EXPECT_EQ(image.rgb.size(), size_t(320 * 180 * 3));
 }
 
 }  // namespace
