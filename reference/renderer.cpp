@@ -128,6 +128,7 @@ Vec3 Renderer::light_arrival(const Light& light, const Vec3& point, const Vec3& 
 Vec3 Renderer::in_scattering(const Vec3& point, const Vec3& direction) const {
   Vec3 j = media_.at(point).emission;
   for (const Light& light : scene_.lights) {
+    if (light.type != LightType::directional && point == light.position) continue;  // no direction: a singular point
     const Vec3 travel = light_travel(light, point);  // the light's direction of travel at the point
     const Vec3 sigma_s_phase = media_.scattering(point, -dot(travel, direction));
     if (is_zero(sigma_s_phase)) continue;

@@ -31,4 +31,15 @@ inline Scene plane_scene(const Vec3& eye, double albedo, double size = 100) {
   return s;
 }
 
+// demo_primitives with fog everywhere, denser near the ground, and a ball of thick fog.
+inline void add_demo_fog(Scene& scene) {
+  scene.media.fog = Medium{.sigma_s = {0.02, 0.025, 0.03}, .sigma_a = {0.005, 0.005, 0.005}, .g = 0.3};
+  scene.media.height_fog = HeightFog{.medium = {.sigma_s = {0.1, 0.1, 0.1}, .sigma_a = {0.01, 0.01, 0.01}, .g = 0.5},
+                                     .base_height = 0, .falloff = 1.5};
+  MediumVolume ball{.shape = Shape::sphere, .medium = {.sigma_s = {0.6, 0.5, 0.4}, .sigma_a = {0.05, 0.05, 0.05}, .g = -0.2}};
+  ball.transform.translate = {0, 1.8, 1};
+  ball.transform.scale = {0.8, 0.8, 0.8};
+  scene.media.volumes.push_back(ball);
+}
+
 }  // namespace volgraph::reference
