@@ -8,6 +8,7 @@
 #include "passes/passes.h"
 #include "passes/shading/camera.h"
 #include "passes/shading/gltf.h"
+#include "passes/shading/light_list.h"
 #include "passes/shading/programs.h"
 #include "passes/shading/scene_geometry.h"
 #include "passes/shading/textures.h"
@@ -15,38 +16,12 @@
 namespace volgraph {
 namespace {
 
-constexpr int kMaxLights = 16;  // shaders/include/scene_uniforms.glsl
-
-// std140 blocks of shaders/include/scene_uniforms.glsl.
-struct GpuLight {
-  float position_type[4];
-  float direction_cos_outer[4];
-  float power_cos_inner[4];
-};
+// std140 block Frame of shaders/include/scene_uniforms.glsl.
 struct FrameBlock {
   float view_projection[16];
   float ambient_irradiance[4];
-  int32_t counts[4];
-  GpuLight lights[kMaxLights];
+  shading::GpuLightList light_list;
 };
-
-GpuLight gpu_light(const Light& l) {
-  GpuLight g{};
-  const bool directional = l.type == LightType::directional;
-  const Vec3 dir = shading::normalize(l.direction);
-  const Vec3& power = directional ? l.irradiance : l.intensity;
-  const float type = directional ? 0.0f : l.type == LightType::point ? 1.0f : 2.0f;
-  const float cos_outer = float(std::cos(l.outer_cone_deg * M_PI / 180)), cos_inner = float(std::cos(l.inner_cone_deg * M_PI / 180));
-  for (size_t i = 0; i < 3; ++i) {
-    g.position_type[i] = float(l.position[i]);
-    g.direction_cos_outer[i] = float(dir[i]);
-    g.power_cos_inner[i] = float(power[i]);
-  }
-  g.position_type[3] = type;
-  g.direction_cos_outer[3] = cos_outer;
-  g.power_cos_inner[3] = cos_inner;
-  return g;
-}
 
 // glTF files must load and textures decode: a malformed one is bad input, reported at
 // the object's "file" or the material's "albedo_texture".
@@ -100,17 +75,13 @@ class SceneExecution final : public PassExecution {
     to_floats(shading::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
     const auto ambient = std::get<std::array<double, 3>>(c.param("ambient"));
     for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i]);
-    f.counts[0] = int32_t(std::min<size_t>(scene.lights.size(), kMaxLights));
-    for (int i = 0; i < f.counts[0]; ++i) f.lights[i] = gpu_light(scene.lights[size_t(i)]);
+    f.light_list = shading::pack_lights(scene.lights);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&f, 1)));
   }
 
   void prepare(PassContext& c) {
     using namespace rhi;
     const Scene& scene = *c.scene;
-    if (scene.lights.size() > kMaxLights) {
-      throw DeviceError(DeviceError::Kind::unsupported, "scene pass: at most " + std::to_string(kMaxLights) + " lights");
-    }
     // With a shadow map wired (and shadows on), its light is shadowed (set 2).
     const bool shadowed = c.bound("shadow_map") && c.bound("light_view") && std::get<bool>(c.param("shadows"));
     RenderPipelineDesc pd;

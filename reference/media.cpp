@@ -64,7 +64,24 @@ std::optional<Interval> ball_interval(const Vec3& o, const Vec3& d) {
   return Interval{std::min(r1, r2), std::max(r1, r2)};
 }
 
+// The volume's size as a scale of the unit shape: box edges, a sphere's radius, an
+// ellipsoid's radii.
+Mat4 unit_shape_to_volume(const MediumVolume& v) {
+  Mat4 scale = Mat4::identity();
+  for (int k = 0; k < 3; ++k) scale(k, k) = v.shape == Shape::sphere ? v.size[0] : v.size[size_t(k)];
+  return scale;
+}
+
 }  // namespace
+
+std::string unsupported(const Media& media) {
+  for (size_t i = 0; i < media.volumes.size(); ++i) {
+    if (media.volumes[i].noise.octaves > 0) {
+      return "volume " + std::to_string(i) + " has noise: heterogeneous media are not in the reference yet";
+    }
+  }
+  return "";
+}
 
 Vec3 transmittance_of(const Vec3& optical_depth) {
   return {shading::transmittance(optical_depth[0], 1.0), shading::transmittance(optical_depth[1], 1.0),
@@ -77,7 +94,7 @@ std::optional<Interval> unit_shape_interval(Shape shape, const Vec3& origin, con
 
 SceneMedia::SceneMedia(const Media& media) : fog_(media.fog), height_fog_(media.height_fog) {
   for (const MediumVolume& v : media.volumes) {
-    const Mat4 model = shading::model_matrix(v.transform);
+    const Mat4 model = shading::model_matrix(v.transform) * unit_shape_to_volume(v);
     volumes_.push_back({v.shape, model, affine_inverse(model), v.medium});
   }
 }

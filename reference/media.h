@@ -1,14 +1,16 @@
 // The scene's participating media as the reference renderer sees them (DESIGN.md units,
 // σ in 1/m): the global homogeneous fog, the exponential height fog (every coefficient
 // of its medium, emission included, scaled by e^(−falloff·(y − base_height))), and the
-// homogeneous volumes — a box is the cube of edge 1 centred at the origin, a sphere or
-// ellipsoid the ball of radius 1, each carried into the world by its transform (scale
-// makes an ellipsoid). Media that overlap add their coefficients. Emission is a source
+// homogeneous volumes — a box of edges `size`, a sphere of radius size[0], an ellipsoid
+// of radii `size`, centred at the origin and carried into the world by the transform.
+// Volumes with noise (heterogeneous density) are not supported yet: see unsupported().
+// Media that overlap add their coefficients. Emission is a source
 // term, radiance added per metre of path (W/(m²·sr·m)), attenuated like in-scattering.
 #pragma once
 
 #include <functional>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,7 +25,8 @@ struct Interval {
 };
 
 // Where the ray origin + t·direction is inside the unit shape of `shape` (box: edges 1;
-// sphere, ellipsoid: radius 1), in that shape's space: analytic slabs or quadric.
+// sphere, ellipsoid: radius 1), in that shape's space: analytic slabs or quadric (a
+// volume's size scales the unit shape before its transform).
 std::optional<Interval> unit_shape_interval(Shape shape, const Vec3& origin, const Vec3& direction);
 
 // Beer–Lambert per channel: e^(−τ) of an optical depth τ.
@@ -35,6 +38,9 @@ struct MediumPoint {
   Vec3 sigma_t{0, 0, 0};
   Vec3 emission{0, 0, 0};
 };
+
+// Why the reference cannot render these media ("" when it can).
+std::string unsupported(const Media& media);
 
 class SceneMedia {
  public:

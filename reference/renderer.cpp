@@ -32,14 +32,9 @@ Vec3 interpolate(const std::array<Vec3, 3>& corners, double u, double v) {
 bool is_zero(const Vec3& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
-// The unit direction light travels in at `point`.
-Vec3 light_travel(const Light& light, const Vec3& point) {
-  return light.type == LightType::directional ? normalize(light.direction) : normalize(sub(point, light.position));
-}
-
 // Optical depth of the media from `point` to the light.
 Vec3 optical_depth_toward(const SceneMedia& media, const Light& light, const Vec3& point) {
-  const Vec3 to_light = scaled(light_travel(light, point), -1);
+  const Vec3 to_light = scaled(shading::light_arriving(light, point).travel, -1);
   if (light.type == LightType::directional) return media.optical_depth_to_infinity(point, to_light);
   return media.optical_depth(point, to_light, 0, std::sqrt(dot(sub(light.position, point), sub(light.position, point))));
 }
@@ -129,11 +124,11 @@ Vec3 Renderer::in_scattering(const Vec3& point, const Vec3& direction) const {
   Vec3 j = media_.at(point).emission;
   for (const Light& light : scene_.lights) {
     if (light.type != LightType::directional && point == light.position) continue;  // no direction: a singular point
-    const Vec3 travel = light_travel(light, point);  // the light's direction of travel at the point
-    const Vec3 sigma_s_phase = media_.scattering(point, -dot(travel, direction));
-    if (is_zero(sigma_s_phase)) continue;
-    // Facing the light: irradiance is E (directional) or I/d² with the spot's cone.
-    j = add(j, times(sigma_s_phase, light_arrival(light, point, scaled(travel, -1))));
+    const shading::LightArriving arriving = shading::light_arriving(light, point);
+    const Vec3 sigma_s_phase = media_.scattering(point, -dot(arriving.travel, direction));
+    if (is_zero(sigma_s_phase) || is_zero(arriving.irradiance) || !light_visible(light, point)) continue;
+    const Vec3 through = media_.empty() ? Vec3{1, 1, 1} : transmittance_of(optical_depth_toward(media_, light, point));
+    j = add(j, times(sigma_s_phase, times(arriving.irradiance, through)));
   }
   return j;
 }

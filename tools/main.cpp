@@ -25,6 +25,7 @@
 #include "graph/rhi/vulkan/context.h"
 #include "passes/passes.h"
 #include "reference/image_render.h"
+#include "reference/media.h"
 #include "reference/renderer.h"
 
 namespace volgraph {
@@ -381,6 +382,10 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
   if (args.output.empty()) return bad_usage("reference needs -o OUT (.png, .exr or .pfm)");
   if (!image_format_for(args.output)) {
     throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
+  }
+  if (const std::string why = reference::unsupported(loaded.config.scene.media); !why.empty()) {
+    std::cerr << "volgraph reference: " << why << "\n";
+    return kFailure;
   }
   const auto start = std::chrono::steady_clock::now();
   std::optional<reference::Renderer> renderer;

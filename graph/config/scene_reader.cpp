@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "passes/shading/media.h"  // header-only: sigma from a transmittance colour
+
 namespace volgraph::config {
 namespace {
 
@@ -130,9 +132,39 @@ void read_light(const Node& n, Light& l) {
   if (spot && l.inner_cone_deg > l.outer_cone_deg) n.error("spot inner_cone_deg exceeds outer_cone_deg");
 }
 
-// σs, σa and g directly, or albedo + extinction (σs = albedo·σt, σa = σt − σs).
+// The medium's σ from one of three inputs: σs and σa directly; albedo + extinction
+// (σs = albedo·σt, σa = σt − σs); or albedo + the transmittance colour seen through a
+// distance (the eq. 14.23: σt = −ln(colour)/distance, colour 0 as opaque as
+// kMinTransmittance allows).
+void read_coefficients(const Node& n, Medium& m) {
+  const bool physical = n.member("sigma_s") || n.member("sigma_a");
+  const bool extinction_given = n.member("extinction").has_value();
+  const bool transmittance_given = n.member("transmittance").has_value();
+  if (int(physical) + int(extinction_given) + int(transmittance_given) > 1) {
+    n.error("give one of sigma_s/sigma_a, albedo + extinction, or albedo + transmittance");
+    return;
+  }
+  read(n, "sigma_s", m.sigma_s, 0, kMaxCoefficient);
+  read(n, "sigma_a", m.sigma_a, 0, kMaxCoefficient);
+  if (physical) return;
+  Vec3 albedo{1, 1, 1}, extinction{0, 0, 0};
+  read(n, "albedo", albedo, 0, 1);
+  read(n, "extinction", extinction, 0, kMaxCoefficient);
+  if (auto t = n.member("transmittance"); t && t->object({"color", "distance"})) {
+    Vec3 colour{1, 1, 1};
+    double distance = 1;
+    read(*t, "color", colour, 0, 1);
+    read(*t, "distance", distance, 1e-6, kHuge);
+    for (size_t c = 0; c < 3; ++c) extinction[c] = shading::sigma_t_from_transmittance(colour[c], distance);
+  }
+  for (size_t c = 0; c < 3; ++c) {
+    m.sigma_s[c] = albedo[c] * extinction[c];
+    m.sigma_a[c] = extinction[c] - m.sigma_s[c];
+  }
+}
+
 void read_medium(const Node& n, Medium& m, std::initializer_list<const char*> extra_keys) {
-  std::vector<const char*> keys = {"sigma_s", "sigma_a", "albedo", "extinction", "g", "emission"};
+  std::vector<const char*> keys = {"sigma_s", "sigma_a", "albedo", "extinction", "transmittance", "g", "emission"};
   keys.insert(keys.end(), extra_keys.begin(), extra_keys.end());
   if (!n.object_any_keys()) return;
   for (const auto& [key, value] : n.json().items()) {
@@ -144,22 +176,21 @@ void read_medium(const Node& n, Medium& m, std::initializer_list<const char*> ex
       n.child(key).error("unknown key \"" + key + "\"" + did_you_mean(key, names) + "; expected " + one_of(names));
     }
   }
-  const bool physical = n.member("sigma_s") || n.member("sigma_a");
-  const bool artistic = n.member("albedo") || n.member("extinction");
-  if (physical && artistic) n.error("give either sigma_s/sigma_a or albedo/extinction, not both");
-  read(n, "sigma_s", m.sigma_s, 0, kMaxCoefficient);
-  read(n, "sigma_a", m.sigma_a, 0, kMaxCoefficient);
-  if (artistic) {
-    Vec3 albedo{1, 1, 1}, extinction{0, 0, 0};
-    read(n, "albedo", albedo, 0, 1);
-    read(n, "extinction", extinction, 0, kMaxCoefficient);
-    for (int c = 0; c < 3; ++c) {
-      m.sigma_s[c] = albedo[c] * extinction[c];
-      m.sigma_a[c] = extinction[c] - m.sigma_s[c];
-    }
+  if (n.member("albedo") && !n.member("extinction") && !n.member("transmittance")) {
+    n.error("albedo needs extinction or transmittance beside it");
   }
+  read_coefficients(n, m);
   read(n, "g", m.g, -0.999, 0.999);
   read(n, "emission", m.emission, 0, kMaxRadiance);
+}
+
+void read_noise(const Node& n, Noise& noise) {
+  if (!n.object({"octaves", "scale", "edge_fade"})) return;
+  if (auto o = n.member("octaves")) {
+    if (auto v = o->integer(0, 8)) noise.octaves = int(*v);
+  }
+  read(n, "scale", noise.scale, 1e-3, kHuge);
+  read(n, "edge_fade", noise.edge_fade, 0, kHuge);
 }
 
 void read_media(const Node& n, Media& media) {
@@ -181,7 +212,9 @@ void read_media(const Node& n, Media& media) {
       const Node v = list->element(i);
       MediumVolume vol;
       vol.where = v.where();
-      read_medium(v, vol.medium, {"shape", "transform"});
+      read_medium(v, vol.medium, {"shape", "size", "transform", "noise"});
+      read(v, "size", vol.size, 0, kHuge);
+      if (auto noise = v.member("noise")) read_noise(*noise, vol.noise);
       if (auto s = v.member("shape")) {
         if (auto shape = choice<Shape>(*s, {{"box", Shape::box}, {"sphere", Shape::sphere},
                                            {"ellipsoid", Shape::ellipsoid}})) {

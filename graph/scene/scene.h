@@ -79,10 +79,21 @@ struct HeightFog {
   double falloff = 0.1;      // 1/m: density × exp(−falloff · (y − base_height))
 };
 
+// Procedural density inside a local volume: fractal gradient noise (octaves summed at
+// doubling frequency and halving amplitude) scaling the medium's σ, faded to 0 at the
+// shape's surface.
+struct Noise {
+  int octaves = 0;         // 0: no noise (uniform density)
+  double scale = 1;        // m: the size of the largest features
+  double edge_fade = 0;    // m: density ramps from 0 at the surface to full this far inside
+};
+
 struct MediumVolume {
   Shape shape = Shape::box;  // box, sphere, ellipsoid
+  Vec3 size{1, 1, 1};        // box: edges; sphere: radius (first value); ellipsoid: radii
   Transform transform;
   Medium medium;
+  Noise noise;
   Where where;
 };
 

@@ -14,24 +14,33 @@ inline double smoothstep(double e0, double e1, double x) {
   return t * t * (3 - 2 * t);
 }
 
-// Irradiance on a surface at `p` with unit normal `n` from one light, unshadowed: E·cos θ.
-inline Vec3 irradiance(const Light& light, const Vec3& p, const Vec3& n) {
-  if (light.type == LightType::directional) {
-    const Vec3 dir = normalize(light.direction);
-    const double c = std::max(-dot(n, dir), 0.0);
-    return {light.irradiance[0] * c, light.irradiance[1] * c, light.irradiance[2] * c};
-  }
-  const Vec3 to_light = sub(light.position, p);
-  const double d2 = std::max(dot(to_light, to_light), 1e-12);
-  const Vec3 l = normalize(to_light);
+// What one light delivers at `p`, unshadowed: the irradiance E on a surface facing it
+// (directional: E; point and spot: I/d², spot with a smooth cone falloff), and the unit
+// direction its light travels there.
+struct LightArriving {
+  Vec3 irradiance;
+  Vec3 travel;
+};
+
+inline LightArriving light_arriving(const Light& light, const Vec3& p) {
+  if (light.type == LightType::directional) return {light.irradiance, normalize(light.direction)};
+  const Vec3 from_light = sub(p, light.position);
+  const double d2 = std::max(dot(from_light, from_light), 1e-12);
+  const Vec3 travel = normalize(from_light);
   double cone = 1.0;
   if (light.type == LightType::spot) {
-    const Vec3 dir = normalize(light.direction);
     cone = smoothstep(std::cos(light.outer_cone_deg * M_PI / 180), std::cos(light.inner_cone_deg * M_PI / 180),
-                      -dot(l, dir));
+                      dot(travel, normalize(light.direction)));
   }
-  const double f = cone * std::max(dot(n, l), 0.0) / d2;
-  return {light.intensity[0] * f, light.intensity[1] * f, light.intensity[2] * f};
+  const double f = cone / d2;
+  return {{light.intensity[0] * f, light.intensity[1] * f, light.intensity[2] * f}, travel};
+}
+
+// Irradiance on a surface at `p` with unit normal `n` from one light, unshadowed: E·cos θ.
+inline Vec3 irradiance(const Light& light, const Vec3& p, const Vec3& n) {
+  const LightArriving a = light_arriving(light, p);
+  const double c = std::max(-dot(n, a.travel), 0.0);
+  return {a.irradiance[0] * c, a.irradiance[1] * c, a.irradiance[2] * c};
 }
 
 // A Lambertian surface of albedo ρ under irradiance E reflects ρ/π · E.

@@ -13,21 +13,30 @@ struct Light {
   vec4 power_cos_inner;      // rgb irradiance (directional, W/m²) or intensity (point, spot, W/sr); w cos(inner cone)
 };
 
-// Irradiance on a surface at `p` with normal `n` from one light, unshadowed: E·cos θ.
-// Point and spot: E = I/d²; spot: smooth falloff between the inner and outer cones.
-vec3 irradiance(Light light, vec3 p, vec3 n) {
+// What one light delivers at `p`, unshadowed: the irradiance E on a surface facing it
+// (directional: E; point and spot: I/d², spot with a smooth falloff between the inner
+// and outer cones), and `travel` the unit direction its light travels at p.
+vec3 light_arriving(Light light, vec3 p, out vec3 travel) {
   const int type = int(light.position_type.w);
   if (type == LIGHT_DIRECTIONAL) {
-    return light.power_cos_inner.rgb * max(dot(n, -light.direction_cos_outer.xyz), 0.0);
+    travel = light.direction_cos_outer.xyz;
+    return light.power_cos_inner.rgb;
   }
-  const vec3 to_light = light.position_type.xyz - p;
-  const float d2 = max(dot(to_light, to_light), 1e-12);
-  const vec3 l = to_light * inversesqrt(d2);
+  const vec3 from_light = p - light.position_type.xyz;
+  const float d2 = max(dot(from_light, from_light), 1e-12);
+  travel = from_light * inversesqrt(d2);
   float cone = 1.0;
   if (type == LIGHT_SPOT) {
-    cone = smoothstep(light.direction_cos_outer.w, light.power_cos_inner.w, dot(-l, light.direction_cos_outer.xyz));
+    cone = smoothstep(light.direction_cos_outer.w, light.power_cos_inner.w, dot(travel, light.direction_cos_outer.xyz));
   }
-  return light.power_cos_inner.rgb * (cone * max(dot(n, l), 0.0) / d2);
+  return light.power_cos_inner.rgb * (cone / d2);
+}
+
+// Irradiance on a surface at `p` with normal `n` from one light, unshadowed: E·cos θ.
+vec3 irradiance(Light light, vec3 p, vec3 n) {
+  vec3 travel;
+  const vec3 e = light_arriving(light, p, travel);
+  return e * max(dot(n, -travel), 0.0);
 }
 
 // A Lambertian surface of albedo ρ under irradiance E reflects ρ/π · E.

@@ -14,8 +14,8 @@ void main() {
   vec3 n = normalize(world_normal);
   if (!gl_FrontFacing) n = -n;
   vec3 e = frame.ambient_irradiance.rgb;
-  for (int i = 0; i < frame.counts.x; ++i) {
-    e += irradiance(frame.lights[i], world_position, n) * light_visibility(i, world_position);
+  for (int i = 0; i < frame.light_list.counts.x; ++i) {
+    e += irradiance(frame.light_list.lights[i], world_position, n) * light_visibility(i, world_position);
   }
   const vec3 albedo = material_albedo(object.albedo.rgb, texture_uv);
   radiance = vec4(lambert(albedo, e) + material_emission(object.emissive.rgb, texture_uv), 1.0);

@@ -72,7 +72,7 @@ TEST(ReferenceMedia, BeerLambertThroughASlab) {
   Scene scene = empty_scene();
   MediumVolume slab{.shape = Shape::box};
   slab.transform.translate = {0, 0, -5};
-  slab.transform.scale = {40, 40, 2};  // z from −6 to −4
+  slab.size = {40, 40, 2};  // z from −6 to −4
   slab.medium.sigma_a = {0.3, 0.5, 0.7};
   scene.media.volumes.push_back(slab);
   const Renderer renderer(scene, precise());
@@ -89,7 +89,8 @@ TEST(ReferenceMedia, BeerLambertThroughAnEllipsoid) {
   Scene scene = empty_scene();
   MediumVolume ball{.shape = Shape::ellipsoid};
   ball.transform.translate = {0.2, -0.1, -5};
-  ball.transform.scale = {1.5, 1.5, 3};  // semi-axes
+  ball.size = {1.5, 1.5, 0.75};  // radii, then stretched by the transform: semi-axes 1.5, 1.5, 3
+  ball.transform.scale = {1, 1, 4};
   ball.medium.sigma_a = {0.4, 0.2, 0.1};
   ball.medium.sigma_s = {0.2, 0, 0};  // scatters, but there is no light
   scene.media.volumes.push_back(ball);
@@ -246,7 +247,7 @@ TEST(ReferenceMedia, AVolumeShadowsALitWall) {
   scene.lights.push_back(sun);
   MediumVolume slab{.shape = Shape::box};
   slab.transform.translate = {-50, 2, 0};
-  slab.transform.scale = {100, 0.5, 100};  // y from 1.75 to 2.25, beneath the camera
+  slab.size = {100, 0.5, 100};  // y from 1.75 to 2.25, beneath the camera
   slab.medium.sigma_a = {0.4, 0.8, 1.6};
   scene.media.volumes.push_back(slab);
   const Renderer renderer(scene, precise());
@@ -258,6 +259,14 @@ TEST(ReferenceMedia, AVolumeShadowsALitWall) {
       EXPECT_NEAR(e[c], 2 * through, 2e-15) << "x " << x << " channel " << c;
     }
   }
+}
+
+TEST(ReferenceMedia, NoisyVolumesAreRefusedNotRenderedUniform) {
+  Media media;
+  media.volumes.push_back(MediumVolume{});
+  EXPECT_EQ(unsupported(media), "");
+  media.volumes.back().noise.octaves = 3;
+  EXPECT_NE(unsupported(media).find("noise"), std::string::npos);
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ inline void add_demo_fog(Scene& scene) {
                                      .base_height = 0, .falloff = 1.5};
   MediumVolume ball{.shape = Shape::sphere, .medium = {.sigma_s = {0.6, 0.5, 0.4}, .sigma_a = {0.05, 0.05, 0.05}, .g = -0.2}};
   ball.transform.translate = {0, 1.8, 1};
-  ball.transform.scale = {0.8, 0.8, 0.8};
+  ball.size = {0.8, 0.8, 0.8};  // a sphere: radius size[0]
   scene.media.volumes.push_back(ball);
 }
 
