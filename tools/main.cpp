@@ -10,7 +10,11 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <cmath>
+#include <iomanip>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
@@ -20,6 +24,9 @@
 #include "graph/rhi/device_error.h"
 #include "graph/rhi/vulkan/context.h"
 #include "passes/passes.h"
+#include "reference/image_render.h"
+#include "reference/media.h"
+#include "reference/renderer.h"
 
 namespace volgraph {
 namespace {
@@ -32,6 +39,10 @@ commands:
   validate CONFIG              check a config without a GPU (exit 0 valid, 2 invalid)
   plan CONFIG [--json|--dot]   the compiled plan: order, culling, lifetimes, memory, barriers
   render CONFIG -o OUT         render to .png (sRGB 8-bit), .exr or .pfm (linear float)
+  reference CONFIG -o OUT      the CPU ground truth of the config's scene (double precision, exact
+                               visibility; pass parameters such as ambient or tone maps are not part
+                               of the scene and are ignored): .exr or .pfm linear float, or .png
+                               with linear values clamped to [0, 1] and sRGB-encoded (no tone map)
   passes                       the pass types with their variants, parameters and slots
   devices                      the Vulkan devices (index for --device N; lavapipe is the default)
   test                         run the whole test suite (handled by tools/volgraph)
@@ -43,6 +54,13 @@ options (plan, validate, render):
   --no-cull                    keep every pass (debug)
   --no-alias                   give every transient resource its own memory (debug)
   --serialize                  a full barrier between every two passes (debug)
+
+options (reference):
+  --size WxH                   frame size (overrides output.size)
+  --threads N                  worker threads (default: the hardware's); the image does not depend on it
+  --spp N                      samples per pixel on a regular sub-pixel grid, N a square (1, 4, 9, …);
+                               default 1: pixel centres, as the GPU samples
+  --tolerance X                relative error allowed in each stretch of the media integral (default 1e-5)
 
 options (render):
   --backend vulkan|webgpu      default vulkan (webgpu arrives with issue 4)
@@ -62,6 +80,9 @@ struct Args {
   std::string backend = "vulkan";
   int device = -1;
   int frames = 1;
+  int threads = 0;             // reference: 0 for the hardware's
+  int samples_per_axis = 1;    // reference: √spp
+  double tolerance = 1e-5;     // reference: the media integral's relative tolerance
   bool timings = false, validation = false;
   std::string timings_out;
   std::vector<std::string> dumps;
@@ -124,6 +145,23 @@ std::optional<int> parse(int argc, char** argv, Args& args) {
       const long low = w == "--device" ? 0 : 1;
       if (*end || n < low || n > 100000) return bad_usage(w + " expects a whole number ≥ " + std::to_string(low) + ", got \"" + *v + "\"");
       (w == "--device" ? args.device : args.frames) = int(n);
+    } else if (w == "--threads" || w == "--spp") {
+      const auto v = value(w.c_str());
+      if (!v) return kBadInput;
+      char* end = nullptr;
+      const long n = std::strtol(v->c_str(), &end, 10);
+      const long root = std::lround(std::sqrt(double(std::max(n, 0L))));
+      if (*end || v->empty() || n < 1 || n > 4096) return bad_usage(w + " expects a whole number in [1, 4096], got \"" + *v + "\"");
+      if (w == "--spp" && root * root != n) return bad_usage("--spp expects a square number (1, 4, 9, 16, …), got \"" + *v + "\"");
+      (w == "--threads" ? args.threads : args.samples_per_axis) = int(w == "--threads" ? n : root);
+    } else if (w == "--tolerance") {
+      const auto v = value("--tolerance");
+      if (!v) return kBadInput;
+      char* end = nullptr;
+      args.tolerance = std::strtod(v->c_str(), &end);
+      if (*end || v->empty() || !(args.tolerance >= 1e-12 && args.tolerance <= 0.1)) {
+        return bad_usage("--tolerance expects a number in [1e-12, 0.1], got \"" + *v + "\"");
+      }
     } else if (w == "--dump") {
       const auto v = value("--dump");
       if (!v) return kBadInput;
@@ -338,12 +376,49 @@ int render(const Args& args, LoadedConfig loaded) {
   return messages.empty() ? kOk : kFailure;
 }
 
+// The CPU ground truth (reference/): the config's scene only, its size from output.size
+// or --size.
+int reference_render(const Args& args, const LoadedConfig& loaded) {
+  if (args.output.empty()) return bad_usage("reference needs -o OUT (.png, .exr or .pfm)");
+  if (!image_format_for(args.output)) {
+    throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
+  }
+  if (const std::string why = reference::unsupported(loaded.config.scene.media); !why.empty()) {
+    std::cerr << "volgraph reference: " << why << "\n";
+    return kFailure;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<reference::Renderer> renderer;
+  try {
+    reference::IntegrationSettings integration;
+    integration.relative_tolerance = args.tolerance;
+    renderer.emplace(loaded.config.scene, integration);
+  } catch (const std::runtime_error& e) {  // a model or texture the loader accepted but cannot be read now
+    throw ConfigError({{{args.config, "/scene", 0}, e.what()}});
+  }
+  reference::RenderSettings settings;
+  settings.width = loaded.config.output_size.width;
+  settings.height = loaded.config.output_size.height;
+  settings.samples_per_axis = uint32_t(args.samples_per_axis);
+  settings.threads = unsigned(args.threads);
+  settings.progress = isatty(STDERR_FILENO) ? &std::cerr : nullptr;
+  const reference::ReferenceImage image = reference::render_image(*renderer, settings);
+  Image out{image.width, image.height, std::vector<float>(size_t(image.width) * image.height * 4, 1.0f)};
+  for (size_t p = 0; p < size_t(image.width) * image.height; ++p) {
+    for (size_t c = 0; c < 3; ++c) out.rgba[p * 4 + c] = float(image.rgb[p * 3 + c]);
+  }
+  write_image(args.output, out);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cerr << "reference: " << image.width << "×" << image.height << " in " << std::fixed << std::setprecision(2) << seconds << " s\n";
+  return kOk;
+}
+
 int run(const Args& args, const PassRegistry& registry) {
   if (args.command == "passes") return print_passes(registry);
   if (args.command == "devices") return print_devices();
-  const bool known = args.command == "validate" || args.command == "plan" || args.command == "render";
+  const bool known = args.command == "validate" || args.command == "plan" || args.command == "render" || args.command == "reference";
   if (!known) {
-    if (args.command == "reference" || args.command == "ab" || args.command == "sweep") {
+    if (args.command == "ab" || args.command == "sweep") {
       std::cerr << "volgraph " << args.command << ": not implemented yet (arrives with the volumetric fog issue)\n";
       return kFailure;
     }
@@ -351,6 +426,7 @@ int run(const Args& args, const PassRegistry& registry) {
   }
   if (args.config.empty()) return bad_usage(args.command + " needs a CONFIG file");
   LoadedConfig loaded = load_config(args.config, registry, args.overrides);
+  if (args.command == "reference") return reference_render(args, loaded);
   const Plan plan = compile_loaded(loaded, args.compile);
   const PlanReportContext context{args.config};
   if (args.command == "validate") {

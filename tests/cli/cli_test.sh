@@ -6,6 +6,8 @@
 #                                         yet (exit 1) and writes nothing
 #   cli_test.sh VOLGRAPH usage            bad command lines exit 2 with one message
 #   cli_test.sh VOLGRAPH dump CONFIG      --dump writes intermediates; a bad --dump exits 2 and writes nothing
+#   cli_test.sh VOLGRAPH reference CONFIG the CPU reference writes PFM and PNG with its time line; bad
+#                                         command lines and a broken model exit 2 and write nothing
 set -uo pipefail
 volgraph=$1 mode=$2 config=${3:-}
 tmp=$(mktemp -d)
@@ -98,6 +100,24 @@ got: $(cat "$tmp/err")"
     check_driver_failure "volgraph: out of device memory: transient heap 0 needs" --size 16384x12000
     VOLGRAPH_SIMULATE_FAULT=sometimes "$volgraph" render "$config" -o "$tmp/frame.pfm" --size 64x36 2>"$tmp/err"
     [ $? -eq 2 ] || fail "an unknown VOLGRAPH_SIMULATE_FAULT must exit 2"
+    ;;
+  reference)
+    "$volgraph" reference "$config" -o "$tmp/ref.pfm" --size 32x18 --threads 2 --spp 4 2>"$tmp/err" ||
+      fail "reference: $(cat "$tmp/err")"
+    [ "$(head -c 2 "$tmp/ref.pfm")" = "PF" ] || fail "reference wrote no PFM"
+    grep -q "^reference: 32×18 in .* s$" "$tmp/err" || fail "reference time line: $(cat "$tmp/err")"
+    "$volgraph" reference "$config" -o "$tmp/ref.png" --size 32x18 2>"$tmp/err" || fail "reference .png: $(cat "$tmp/err")"
+    rm -f "$tmp/ref.pfm" "$tmp/ref.png"
+    bad_gltf=$(dirname "$0")/bad/malformed_gltf.json
+    for args in "reference $config" "reference $config -o $tmp/x.jpg" "reference $config -o $tmp/x.pfm --spp 3" \
+                "reference $config -o $tmp/x.pfm --threads 0" "reference $config -o $tmp/x.pfm --tolerance 2" \
+                "reference /no/such.json -o $tmp/x.pfm" "reference $bad_gltf -o $tmp/x.pfm"; do
+      # shellcheck disable=SC2086
+      "$volgraph" $args >"$tmp/out" 2>"$tmp/err"
+      code=$?
+      [ "$code" -eq 2 ] || fail "'volgraph $args' exit $code (expected 2); stderr: $(cat "$tmp/err")"
+    done
+    [ -z "$(ls "$tmp" | grep -v -e '^out$' -e '^err$')" ] || fail "bad reference command lines left files: $(ls "$tmp")"
     ;;
   *) fail "unknown mode $mode" ;;
 esac

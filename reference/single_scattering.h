@@ -1,0 +1,48 @@
+// Single scattering along one ray through the scene's media (the volume rendering
+// equation without multiple scattering): L = ∫₀^D T(0,t)·J(t) dt, with J the radiance
+// per metre scattered or emitted toward the viewer at distance t and T(0,t) the exact
+// transmittance (closed-form optical depth between the media's boundaries). The integral
+// is taken segment by segment between media boundaries and any breaks the caller adds
+// (where J peaks, e.g. a point light's closest approach), each segment by adaptive
+// Simpson quadrature (Lyness 1969, "Notes on the adaptive Simpson quadrature routine")
+// from a grid of initial panels.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "reference/media.h"
+
+namespace volgraph::reference {
+
+struct IntegrationSettings {
+  // Each segment's estimated error (Richardson: |S₂ − S₁|/15, max over channels) is held
+  // below this fraction of the segment's integral.
+  double relative_tolerance = 1e-5;
+  // Integration stops where T(0,t) (its largest channel) falls below this: what lies
+  // beyond adds at most this fraction of the radiance it would add unattenuated.
+  double min_transmittance = 1e-6;
+  // Initial panels are at most this long (m), or this fraction of their distance from the
+  // camera where that is longer (a feature far away subtends less), so that features
+  // narrower than the whole segment (shafts of light between shadows) are seen before
+  // refinement…
+  double max_initial_panel = 0.5;
+  double initial_panel_per_distance = 0.05;
+  // …but no more than this many per segment.
+  uint32_t max_initial_panels = 256;
+  uint32_t max_depth = 30;  // bisections of an initial panel
+};
+
+struct RayScattering {
+  Vec3 radiance{0, 0, 0};       // ∫ T·J, the light the media add
+  Vec3 transmittance{1, 1, 1};  // T(0, D), exact, for what lies at D
+};
+
+// `source(x)`: J at point x (W/(m²·sr·m) per channel). `direction` is unit.
+RayScattering integrate_single_scattering(const SceneMedia& media, const Vec3& origin, const Vec3& direction,
+                                          double length, std::vector<double> breaks,
+                                          const std::function<Vec3(const Vec3&)>& source,
+                                          const IntegrationSettings& settings);
+
+}  // namespace volgraph::reference

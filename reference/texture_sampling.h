@@ -1,0 +1,26 @@
+// Material textures as the reference renderer reads them: level 0 of the image, decoded
+// from sRGB to linear light once, sampled bilinearly with the sampler's wrap modes (the
+// GPU filters the same decoded texels; it also blends mip levels, which the reference,
+// having no pixel footprint, does not).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "graph/scene/scene.h"
+#include "passes/shading/textures.h"
+
+namespace volgraph::reference {
+
+struct LinearImage {
+  uint32_t width = 0, height = 0;
+  std::vector<float> rgb;  // linear, 3 floats a texel, row 0 at the top
+};
+
+LinearImage linear_image(const shading::Rgba8Image& encoded);
+
+// The image at texture coordinate (u, v) (0, 0 the top-left corner, texel centres at
+// half-integers of the texel grid), bilinear between the four nearest texels.
+Vec3 sample_bilinear(const LinearImage& image, shading::SamplerWrap wrap, double u, double v);
+
+}  // namespace volgraph::reference
