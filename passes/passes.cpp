@@ -1,5 +1,7 @@
 #include "passes/passes.h"
 
+#include "passes/fog/fog_passes.h"
+
 namespace volgraph {
 
 void register_builtin_passes(PassRegistry& registry) {
@@ -8,6 +10,10 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(composite_pass());
   registry.add(clear_pass());
   registry.add(copy_pass());
+  registry.add(froxel_voxelize_pass());
+  registry.add(froxel_scatter_pass());
+  registry.add(scatter_integrate_pass());
+  registry.add(froxel_apply_pass());
 }
 
 }  // namespace volgraph

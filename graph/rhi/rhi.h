@@ -146,7 +146,8 @@ struct VertexBufferLayout {
 
 enum class CompareFunction : uint8_t { never, less, less_equal, greater, greater_equal, equal, not_equal, always };
 enum class CullMode : uint8_t { none, front, back };
-enum class BlendMode : uint8_t { replace, additive };  // additive: src + dst (light volumes, accumulation)
+// additive: src + dst (light volumes, accumulation); multiply: dst × src (transmittance)
+enum class BlendMode : uint8_t { replace, additive, multiply };
 enum class IndexFormat : uint8_t { uint16, uint32 };
 enum class LoadOp : uint8_t { clear, load };
 

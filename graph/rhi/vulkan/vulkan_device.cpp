@@ -548,6 +548,13 @@ rhi::RenderPipelineId VulkanDevice::create_render_pipeline(const rhi::RenderPipe
       b.srcColorBlendFactor = b.dstColorBlendFactor = b.srcAlphaBlendFactor = b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
       b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
     }
+    if (c.blend == rhi::BlendMode::multiply) {  // dst × src
+      b.blendEnable = VK_TRUE;
+      b.srcColorBlendFactor = b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+      b.dstColorBlendFactor = VK_BLEND_FACTOR_SRC_COLOR;
+      b.dstAlphaBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+      b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
     blends.push_back(b);
     color_formats.push_back(to_vk(c.format));
   }

@@ -1,0 +1,51 @@
+#include "passes/fog/fog_frame.h"
+
+#include "graph/scene/scene.h"
+#include "passes/shading/camera.h"
+
+namespace volgraph::fog {
+namespace {
+
+// The radical inverse of n in `base` (Halton 1960).
+double radical_inverse(uint64_t n, uint64_t base) {
+  double inverse = 0, scale = 1.0 / double(base);
+  for (; n > 0; n /= base, scale /= double(base)) inverse += double(n % base) * scale;
+  return inverse;
+}
+
+void put(float* out, const Vec3& v, double w) {
+  for (size_t i = 0; i < 3; ++i) out[i] = float(v[i]);
+  out[3] = float(w);
+}
+
+}  // namespace
+
+std::array<double, 3> froxel_jitter(uint64_t frame) {
+  if (frame == 0) return {0, 0, 0};
+  return {radical_inverse(frame, 2) - 0.5, radical_inverse(frame, 3) - 0.5, radical_inverse(frame, 5) - 0.5};
+}
+
+GpuFogFrame make_fog_frame(const PassContext& c, const FogFrameInputs& inputs) {
+  const Scene& scene = *c.scene;
+  const Extent out = c.graph.output_size;
+  const shading::ViewRays rays = shading::view_rays(scene.camera, double(out.width) / double(out.height));
+  GpuFogFrame f{};
+  put(f.view.position, rays.position, scene.camera.near);
+  put(f.view.forward, rays.forward, scene.camera.far);
+  put(f.view.right, rays.right, 0);
+  put(f.view.up, rays.up, 0);
+  f.grid.size[0] = inputs.grid.width;
+  f.grid.size[1] = inputs.grid.height;
+  f.grid.size[2] = inputs.grid.depth;
+  f.grid.range[0] = float(inputs.range.near);
+  f.grid.range[1] = float(inputs.range.far);
+  f.grid.range[2] = inputs.range.distribution == shading::FroxelDistribution::linear ? 0.0f : 1.0f;
+  const std::array<double, 3> jitter = inputs.jitter ? froxel_jitter(c.frame) : std::array<double, 3>{0, 0, 0};
+  put(f.jitter, {jitter[0], jitter[1], jitter[2]}, double(c.frame));
+  put(f.ambient, inputs.ambient_radiance, 0);
+  f.light_list = shading::pack_lights(scene.lights);
+  f.media = shading::pack_media(scene.media);
+  return f;
+}
+
+}  // namespace volgraph::fog

@@ -1,0 +1,13 @@
+// The participating-media passes (one file per technique in passes/fog/).
+#pragma once
+
+#include "graph/pass_decl.h"
+
+namespace volgraph {
+
+PassDecl froxel_voxelize_pass();
+PassDecl froxel_scatter_pass();
+PassDecl scatter_integrate_pass();
+PassDecl froxel_apply_pass();
+
+}  // namespace volgraph

@@ -1,0 +1,5 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// froxel_scatter without a shadow map: every light reaches every froxel.
+float light_visibility(int light, vec3 p) { return 1.0; }
+#include "include/froxel_scatter_body.glsl"

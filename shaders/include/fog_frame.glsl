@@ -1,0 +1,35 @@
+// What froxel_voxelize tells the other fog passes of the frame (its `frame` buffer,
+// std140, packed by passes/fog/fog_frame.cpp): the camera's rays, the froxel grid, this
+// frame's sample jitter, ambient radiance, the lights and the media.
+#ifndef VOLGRAPH_FOG_FRAME_GLSL
+#define VOLGRAPH_FOG_FRAME_GLSL
+#include "froxel.glsl"
+#include "light_list.glsl"
+#include "media_field.glsl"
+#include "view_rays.glsl"
+
+struct FogFrame {
+  ViewRays view;       // position.w: the camera's near plane, forward.w: its far plane (m)
+  FroxelGrid grid;
+  vec4 jitter;         // xyz: this frame's sample offset inside each froxel (froxel units, within ±0.5); w: frame
+  vec4 ambient;        // rgb: ambient radiance (W/(m²·sr)) scattered by the media
+  LightList light_list;
+  MediaField media;
+};
+
+// View depth of a depth-buffer value of the scene pass's perspective projection
+// (depth 0 at near, 1 at far): near·far / (far − d·(far − near)).
+float view_depth(FogFrame f, float depth) {
+  const float near = f.view.position.w, far = f.view.forward.w;
+  return near * far / (far - depth * (far - near));
+}
+
+// World position of froxel `texel` (plus `offset` froxels) of the grid.
+vec3 froxel_position(FogFrame f, vec3 texel, vec3 offset) {
+  const vec3 size = vec3(f.grid.size.xyz);
+  const vec2 ndc = grid_ndc(texel.xy, offset.xy, size.xy);
+  const float depth = froxel_depth(f.grid, (texel.z + 0.5 + offset.z) / size.z);
+  return f.view.position.xyz + depth * view_ray(f.view, ndc);
+}
+
+#endif

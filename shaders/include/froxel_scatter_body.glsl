@@ -1,0 +1,61 @@
+// froxel_scatter's body (Wronski 2014, Hillaire 2015): per froxel, the light scattered
+// toward the camera per metre, S = σs·(Σ_lights p(θ)·E·V + L_ambient) + emission
+// (DESIGN.md units). The including shader defines `float light_visibility(int light,
+// vec3 p)` first (1 when unshadowed).
+#ifndef VOLGRAPH_FROXEL_SCATTER_BODY_GLSL
+#define VOLGRAPH_FROXEL_SCATTER_BODY_GLSL
+#include "fog_frame.glsl"
+#include "phase.glsl"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+layout(set = 0, binding = 0) uniform Frame { FogFrame f; } frame;
+layout(set = 0, binding = 1) uniform texture3D media_scattering;
+layout(set = 0, binding = 2) uniform texture3D media_emission;
+layout(set = 0, binding = 3) uniform sampler nearest;
+layout(set = 0, binding = 4, rgba16f) uniform writeonly image3D in_scatter;
+layout(set = 0, binding = 5) uniform Params {
+  ivec4 phase;  // x: 0 isotropic, 1 Rayleigh, 2 HG, 3 Schlick, 4 dual-lobe HG
+  vec4 lobes;   // dual-lobe HG: x backward g, y forward weight
+} params;
+
+const int PHASE_ISOTROPIC = 0;
+const int PHASE_RAYLEIGH = 1;
+const int PHASE_HG = 2;
+const int PHASE_SCHLICK = 3;
+const int PHASE_DUAL_HG = 4;
+const float FP16_MAX = 65000.0;
+
+// g is the medium's (clamped where HG's peak would overflow rgba16f).
+float phase(float g, float cos_theta) {
+  g = clamp(g, -HG_MAX_ABS_G_FOR_FP16, HG_MAX_ABS_G_FOR_FP16);
+  switch (params.phase.x) {
+    case PHASE_ISOTROPIC: return phase_isotropic();
+    case PHASE_RAYLEIGH: return phase_rayleigh(cos_theta);
+    case PHASE_SCHLICK: return phase_schlick(schlick_k(g), cos_theta);
+    case PHASE_DUAL_HG: return phase_dual_hg(g, params.lobes.x, params.lobes.y, cos_theta);
+    default: return phase_hg(g, cos_theta);
+  }
+}
+
+void main() {
+  const uvec3 id = gl_GlobalInvocationID;
+  if (any(greaterThanEqual(id, frame.f.grid.size.xyz))) return;
+  const vec4 scattering = texelFetch(sampler3D(media_scattering, nearest), ivec3(id), 0);
+  const vec3 emission = texelFetch(sampler3D(media_emission, nearest), ivec3(id), 0).rgb;
+  vec3 scattered = vec3(0.0);
+  if (any(greaterThan(scattering.rgb, vec3(0.0)))) {
+    const vec3 p = froxel_position(frame.f, vec3(id), frame.f.jitter.xyz);
+    const vec3 to_camera = normalize(frame.f.view.position.xyz - p);
+    vec3 light = frame.f.ambient.rgb;
+    for (int i = 0; i < frame.f.light_list.counts.x; ++i) {
+      vec3 travel;
+      const vec3 e = light_arriving(frame.f.light_list.lights[i], p, travel);
+      light += phase(scattering.a, dot(travel, to_camera)) * e * light_visibility(i, p);
+    }
+    scattered = scattering.rgb * light;
+  }
+  imageStore(in_scatter, ivec3(id), vec4(min(scattered + emission, vec3(FP16_MAX)), 0.0));
+}
+
+#endif
