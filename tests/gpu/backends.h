@@ -50,6 +50,7 @@ class OnEachBackend : public ::testing::TestWithParam<Param> {
   virtual Backend backend() const = 0;
   void SetUp() override { gpu_ = create_gpu(backend()); }
   void TearDown() override {
+    if (!gpu_) return;  // SetUp failed: the test has failed already
     const std::vector<std::string> messages = gpu_->finish();
     EXPECT_TRUE(messages.empty()) << backend_name(backend()) << " validation:\n" << joined_messages(messages);
   }

@@ -2,11 +2,13 @@
 // creates is the plan's pooled figure (count and bytes) for every shipped config, with
 // and without --no-alias; and each object has only the usages the graph declares — a
 // pass that uses a resource in an undeclared way gets a Dawn validation error (the
-// negative control), while the same graph with the usage declared stays silent.
+// negative control), while the same graph with the usage declared stays silent. And the
+// command line's mode: with errors_throw, a Dawn error is a DeviceError at the next submit.
 #include <gtest/gtest.h>
 
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
+#include "graph/rhi/device_error.h"
 #include "graph/rhi/webgpu/graph_resources.h"
 #include "graph/rhi/webgpu/webgpu_device.h"
 #include "passes/passes.h"
@@ -86,6 +88,19 @@ TEST_F(WebGpuResources, AnUndeclaredUsageIsADawnValidationError) {
 
 TEST_F(WebGpuResources, TheSameCopyDeclaredIsSilent) {
   EXPECT_TRUE(messages_of_copy(*device_, registry_, Usage::copy_src).empty());
+}
+
+TEST(WebGpuErrors, ADawnErrorThrowsAtTheNextSubmitWhenAsked) {
+  const auto device = webgpu::WebGpuDevice::create({.errors_throw = true});
+  device->create_texture({"no usage", ResourceKind::texture2d, Format::rgba8_unorm, {4, 4, 1}, 0});  // WebGPU refuses usage 0
+  try {
+    device->submit(device->create_command_encoder("after the error"));
+    FAIL() << "expected a DeviceError";
+  } catch (const DeviceError& e) {
+    EXPECT_EQ(e.kind, DeviceError::Kind::other);
+    EXPECT_NE(std::string(e.what()).find("Dawn validation error"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(device->submit(device->create_command_encoder("reported once")));
 }
 
 }  // namespace
