@@ -20,7 +20,9 @@
 #include "graph/execute/executor.h"
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "tools/image_io.h"
+#include "tools/webgpu_backend.h"
 #include "graph/plan_report.h"
+#include "graph/pooling.h"
 #include "graph/rhi/device_error.h"
 #include "graph/rhi/vulkan/context.h"
 #include "passes/passes.h"
@@ -63,12 +65,14 @@ options (reference):
   --tolerance X                relative error allowed in each stretch of the media integral (default 1e-5)
 
 options (render):
-  --backend vulkan|webgpu      default vulkan (webgpu arrives with issue 4)
-  --device N                   a Vulkan device by index (volgraph devices); default lavapipe
+  --backend vulkan|webgpu      default vulkan; webgpu: Dawn (its Vulkan backend on lavapipe here)
+  --device N                   a Vulkan device by index (volgraph devices); default lavapipe (vulkan only)
   --frames N                   render N frames, write the last
   --timings                    per-pass GPU and CPU times of the last frame, JSON on stdout
+                               (CPU only, said so, where the device has no time stamps)
   --timings-out FILE           the same JSON to FILE
-  --validation                 run under the Khronos validation layer (synchronization too)
+  --validation                 run under the Khronos validation layer (synchronization too);
+                               WebGPU validates always: any Dawn error fails the render (exit 1)
   --dump PASS.SLOT=FILE        also write that resource: 2D textures as images, buffers raw (.bin)
 )";
 
@@ -261,11 +265,16 @@ int print_devices() {
   return kOk;
 }
 
-std::string timings_json(const std::vector<PassTiming>& timings, const rhi::AdapterInfo& adapter, int frames,
+std::string timings_json(const std::vector<PassTiming>& timings, const rhi::Device& device, int frames,
                          double frame_wall_ms) {
+  const rhi::AdapterInfo adapter = device.info();
   std::ostringstream o;
   o << "{\n  \"device\": \"" << adapter.device << "\",\n  \"backend\": \"" << adapter.backend
-    << "\",\n  \"frames\": " << frames << ",\n";
+    << "\",\n  \"frames\": " << frames << ",\n  \"gpu_timestamps\": " << (device.has_timestamps() ? "true" : "false")
+    << ",\n";
+  if (!device.has_timestamps()) {
+    o << "  \"timing\": \"cpu: the adapter has no time stamps, so gpu_ms are 0; cpu_ms and frame_wall_ms are measured\",\n";
+  }
   if (adapter.device.find("llvmpipe") != std::string::npos) {
     o << "  \"note\": \"lavapipe (CPU): the GPU is the CPU; its time stamps do not bracket compute dispatches "
          "reliably, frame_wall_ms (submit to completion) does\",\n";
@@ -342,19 +351,31 @@ std::optional<vulkan::SimulatedFault> simulated_fault() {
   return std::nullopt;
 }
 
+void render_frames(rhi::Device& device, const Args& args, LoadedConfig& loaded);
+
 int render(const Args& args, LoadedConfig loaded) {
   if (args.output.empty()) return bad_usage("render needs -o OUT (.png, .exr or .pfm)");
   if (!image_format_for(args.output)) {
     throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
   }
-  if (args.backend == "webgpu") {
-    std::cerr << "volgraph render: the WebGPU backend arrives with issue 4; use --backend vulkan\n";
-    return kFailure;
-  }
   const std::optional<vulkan::SimulatedFault> fault = simulated_fault();
   if (!fault) return bad_usage("VOLGRAPH_SIMULATE_FAULT must be out_of_memory or device_lost");
+  if (args.backend == "webgpu") {
+    if (args.device >= 0) return bad_usage("--device picks a Vulkan device; WebGPU uses Dawn's default adapter");
+    const std::unique_ptr<rhi::Device> device = create_webgpu_device(*fault);
+    render_frames(*device, args, loaded);  // Dawn's errors throw as DeviceErrors
+    return kOk;
+  }
   auto context = vulkan::Context::create({.validation = args.validation, .device_index = args.device, .simulate = *fault});
   vulkan::VulkanDevice device(*context);
+  render_frames(device, args, loaded);
+  const auto messages = context->take_validation_messages();
+  for (const std::string& m : messages) std::cerr << "validation: " << m << "\n";
+  return messages.empty() ? kOk : kFailure;
+}
+
+// Renders the frames on `device` and writes the output, the dumps and the timings.
+void render_frames(rhi::Device& device, const Args& args, LoadedConfig& loaded) {
   const std::vector<Dump> dumps = add_dumps(args.dumps, loaded.graph);
   Executor executor(device, loaded.graph, &loaded.config.scene, args.compile);
   for (int f = 0; f < args.frames; ++f) executor.run_frame();
@@ -368,12 +389,18 @@ int render(const Args& args, LoadedConfig loaded) {
       write_image(d.file, Image{t.width, t.height, t.rgba}, "--dump");
     }
   }
-  const std::string timings = timings_json(executor.timings(), device.info(), args.frames, executor.frame_wall_ms());
+  const std::string timings = timings_json(executor.timings(), device, args.frames, executor.frame_wall_ms());
   if (args.timings) std::cout << timings;
   if (!args.timings_out.empty()) std::ofstream(args.timings_out) << timings;
-  const auto messages = context->take_validation_messages();
-  for (const std::string& m : messages) std::cerr << "validation: " << m << "\n";
-  return messages.empty() ? kOk : kFailure;
+}
+
+// What `plan --backend webgpu` says first: WebGPU pools whole objects instead of aliasing.
+std::string webgpu_memory_line(const Graph& graph, const Plan& plan) {
+  const ResourcePool pool = pool_resources(graph, plan);
+  std::ostringstream o;
+  o << "backend webgpu: no placed memory; transient resources are pooled — " << pool.transient_objects << " objects, "
+    << bytes_text(pool.transient_bytes) << " (the \"pooled\" figure below)\n\n";
+  return o.str();
 }
 
 // The CPU ground truth (reference/): the config's scene only, its size from output.size
@@ -435,6 +462,7 @@ int run(const Args& args, const PassRegistry& registry) {
     return kOk;
   }
   if (args.command == "plan") {
+    if (args.backend == "webgpu" && !args.json && !args.dot) std::cout << webgpu_memory_line(loaded.graph, plan);
     std::cout << (args.json ? plan_json(loaded.graph, plan, context)
                   : args.dot ? plan_dot(loaded.graph, plan, context)
                              : plan_text(loaded.graph, plan, context));

@@ -13,4 +13,9 @@ class DeviceError : public std::runtime_error {
   Kind kind;
 };
 
+// A failure a backend acts out on request (VOLGRAPH_SIMULATE_FAULT), so that reporting
+// is tested on a driver that never fails: every allocation runs out of memory, or every
+// submission loses the device.
+enum class SimulatedFault { none, out_of_memory, device_lost };
+
 }  // namespace volgraph

@@ -91,12 +91,21 @@ struct SamplerDesc {
 
 enum class BindingType : uint8_t { uniform_buffer, storage_buffer, read_only_storage_buffer, sampled_texture, sampler, storage_texture };
 
+enum class StorageAccess : uint8_t { read_write, read_only, write_only };
+
 struct LayoutEntry {
   uint32_t binding = 0;
   uint32_t visibility = shader_stage::compute;
   BindingType type = BindingType::uniform_buffer;
   ResourceKind texture_kind = ResourceKind::texture2d;  // sampled and storage textures
   Format storage_format = Format::undefined;            // storage textures
+  // Sampled textures and samplers, as the shaders use them (reflection): true when
+  // some shader samples through them (texture(), textureLod …), false when the texture
+  // is only fetched or queried (texelFetch, textureSize). WebGPU needs it: a filtered
+  // texture must have a filterable format and its sampler may filter; a fetched one
+  // may hold any float format (32-bit float, depth) and its sampler must not filter.
+  bool filtered = false;
+  StorageAccess storage_access = StorageAccess::read_write;  // storage textures
 };
 
 struct BindGroupLayoutDesc {

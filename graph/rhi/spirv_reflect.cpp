@@ -31,6 +31,13 @@ constexpr uint32_t type_runtime_array = 29;  // §3.32.6
 constexpr uint32_t type_struct = 30;         // §3.32.6
 constexpr uint32_t type_pointer = 32;        // §3.32.6
 constexpr uint32_t variable = 59;            // §3.32.8 Memory Instructions
+constexpr uint32_t load = 61;                // §3.32.8
+constexpr uint32_t sampled_image = 86;       // §3.32.10 Image Instructions
+constexpr uint32_t image_sample_first = 87;  // §3.32.10: OpImageSampleImplicitLod …
+constexpr uint32_t image_sample_last = 94;   // … OpImageSampleProjDrefExplicitLod
+constexpr uint32_t image_gather = 96;        // §3.32.10
+constexpr uint32_t image_dref_gather = 97;   // §3.32.10
+constexpr uint32_t image_query_lod = 105;    // §3.32.10
 constexpr uint32_t decorate = 71;            // §3.32.3 Annotation Instructions
 constexpr uint32_t member_decorate = 72;     // §3.32.3
 }  // namespace op
@@ -39,6 +46,7 @@ namespace decoration {  // §3.20 Decoration
 constexpr uint32_t block = 2;
 constexpr uint32_t buffer_block = 3;
 constexpr uint32_t non_writable = 24;
+constexpr uint32_t non_readable = 25;
 constexpr uint32_t binding = 33;
 constexpr uint32_t descriptor_set = 34;
 }  // namespace decoration
@@ -120,6 +128,7 @@ struct Decorations {
   bool block = false;
   bool buffer_block = false;
   bool non_writable = false;
+  bool non_readable = false;
 };
 
 // What reflection needs of one module.
@@ -129,6 +138,11 @@ struct Module {
   std::unordered_map<uint32_t, std::set<uint32_t>> non_writable_members;  // struct id → member indices
   std::unordered_map<uint32_t, Instruction> types;                        // result id → declaration
   std::vector<Instruction> variables;
+  // Texture and sampler variables some instruction samples through (filters with).
+  std::unordered_map<uint32_t, uint32_t> loaded_from;                          // OpLoad result → variable
+  std::unordered_map<uint32_t, std::pair<uint32_t, uint32_t>> sampled_images;  // result → image, sampler loads
+  std::set<uint32_t> sampled_through;                                          // OpSampledImage results sampled
+  std::set<uint32_t> filtered_variables;
 };
 
 bool is_type_declaration(uint32_t opcode) {
@@ -153,6 +167,7 @@ void record_decoration(Module& module, const Instruction& decorate) {
     case decoration::block: target.block = true; return;
     case decoration::buffer_block: target.buffer_block = true; return;
     case decoration::non_writable: target.non_writable = true; return;
+    case decoration::non_readable: target.non_readable = true; return;
     default: return;
   }
 }
@@ -163,9 +178,19 @@ void record_member_decoration(Module& module, const Instruction& decorate) {
   module.non_writable_members[operand(decorate, 0)].insert(operand(decorate, 1));
 }
 
+// Instructions that sample through an OpSampledImage (its operand 2): they filter.
+bool samples_with_filter(uint32_t opcode) {
+  const bool sample = opcode >= op::image_sample_first && opcode <= op::image_sample_last;
+  return sample || opcode == op::image_gather || opcode == op::image_dref_gather || opcode == op::image_query_lod;
+}
+
 void record(Module& module, const Instruction& instruction) {
   if (is_type_declaration(instruction.opcode)) {
     module.types.emplace(operand(instruction, 0), instruction);
+    return;
+  }
+  if (samples_with_filter(instruction.opcode)) {
+    module.sampled_through.insert(operand(instruction, 2));
     return;
   }
   switch (instruction.opcode) {
@@ -173,13 +198,32 @@ void record(Module& module, const Instruction& instruction) {
     case op::decorate: record_decoration(module, instruction); return;
     case op::member_decorate: record_member_decoration(module, instruction); return;
     case op::variable: module.variables.push_back(instruction); return;
+    case op::load: module.loaded_from[operand(instruction, 1)] = operand(instruction, 2); return;  // Result, Pointer
+    case op::sampled_image:  // Result Type, Result, Image, Sampler
+      module.sampled_images[operand(instruction, 1)] = {operand(instruction, 2), operand(instruction, 3)};
+      return;
     default: return;
+  }
+}
+
+// The texture and sampler variables behind every sampled image some instruction samples.
+void find_filtered_variables(Module& module) {
+  auto variable_of = [&](uint32_t loaded) {
+    const auto found = module.loaded_from.find(loaded);
+    return found == module.loaded_from.end() ? 0u : found->second;
+  };
+  for (const uint32_t sampled : module.sampled_through) {
+    const auto found = module.sampled_images.find(sampled);
+    if (found == module.sampled_images.end()) continue;
+    module.filtered_variables.insert(variable_of(found->second.first));
+    module.filtered_variables.insert(variable_of(found->second.second));
   }
 }
 
 Module read_module(std::span<const uint32_t> spirv) {
   Module module;
   for (const Instruction& instruction : parse_instructions(spirv)) record(module, instruction);
+  find_filtered_variables(module);
   return module;
 }
 
@@ -339,6 +383,9 @@ std::optional<DeclaredBinding> reflect_variable(const Module& module, const Inst
   LayoutEntry entry = resource_entry(module, type, storage, decorations.non_writable, where);
   entry.binding = where.binding;
   entry.visibility = stage;
+  entry.filtered = module.filtered_variables.contains(operand(variable, 1));
+  if (decorations.non_writable) entry.storage_access = StorageAccess::read_only;
+  if (decorations.non_readable) entry.storage_access = StorageAccess::write_only;
   return DeclaredBinding{where.set, entry};
 }
 
@@ -375,6 +422,8 @@ void merge(MergedBindings& merged, const DeclaredBinding& declared, std::string_
                              " shader: " + describe(declared.entry));
   }
   entry.visibility |= declared.entry.visibility;
+  entry.filtered = entry.filtered || declared.entry.filtered;
+  if (entry.storage_access != declared.entry.storage_access) entry.storage_access = StorageAccess::read_write;
 }
 
 void merge_stage(MergedBindings& merged, const ShaderStageCode& code, std::string_view label) {

@@ -22,6 +22,9 @@ struct ShaderStageCode {
 // The bind group layouts the stages declare: set i at index i, up to the highest set
 // declared (a set none of them declares: no entries), entries sorted by binding, each
 // visible to the stages that declare it. Layout i is labelled "<label> set <i>".
+// Sampled textures and samplers are `filtered` when some instruction samples through them
+// (OpImageSample*, gathers, OpImageQueryLod), not when they are only fetched or queried;
+// storage textures take their access from NonWritable / NonReadable.
 // Throws std::runtime_error for malformed SPIR-V, a stage whose entry point is not the
 // stage given, two declarations of one binding that differ (naming the set, the binding
 // and both stages), and what the rhi interface cannot express: arrays of resources,

@@ -8,6 +8,8 @@
 #   cli_test.sh VOLGRAPH dump CONFIG      --dump writes intermediates; a bad --dump exits 2 and writes nothing
 #   cli_test.sh VOLGRAPH reference CONFIG the CPU reference writes PFM and PNG with its time line; bad
 #                                         command lines and a broken model exit 2 and write nothing
+#   cli_test.sh VOLGRAPH webgpu CONFIG    render --backend webgpu (64x36) writes a PFM, timings and a --dump;
+#                                         simulated driver failures exit 1 with their message, no file
 set -uo pipefail
 volgraph=$1 mode=$2 config=${3:-}
 tmp=$(mktemp -d)
@@ -118,6 +120,23 @@ got: $(cat "$tmp/err")"
       [ "$code" -eq 2 ] || fail "'volgraph $args' exit $code (expected 2); stderr: $(cat "$tmp/err")"
     done
     [ -z "$(ls "$tmp" | grep -v -e '^out$' -e '^err$')" ] || fail "bad reference command lines left files: $(ls "$tmp")"
+    ;;
+  webgpu)
+    "$volgraph" render "$config" --backend webgpu -o "$tmp/out.pfm" --size 64x36 --timings \
+      --dump lit.color="$tmp/lit.pfm" >"$tmp/out" 2>"$tmp/err" || fail "render --backend webgpu: $(cat "$tmp/err")"
+    [ "$(head -c 2 "$tmp/out.pfm")" = "PF" ] && [ "$(head -c 2 "$tmp/lit.pfm")" = "PF" ] || fail "webgpu wrote no PFM"
+    grep -q '"backend": "webgpu"' "$tmp/out" && grep -q '"gpu_ms"' "$tmp/out" || fail "--timings printed: $(cat "$tmp/out")"
+    "$volgraph" plan "$config" --backend webgpu >"$tmp/out" || fail "plan --backend webgpu"
+    head -1 "$tmp/out" | grep -q "backend webgpu: no placed memory" || fail "plan --backend webgpu: $(head -1 "$tmp/out")"
+    rm -f "$tmp"/*.pfm
+    for fault in out_of_memory:"out of device memory: Dawn" device_lost:"device lost (the driver stopped or was reset): Dawn"; do
+      VOLGRAPH_SIMULATE_FAULT=${fault%%:*} "$volgraph" render "$config" --backend webgpu -o "$tmp/frame.pfm" --size 64x36 \
+        >"$tmp/out" 2>"$tmp/err"
+      code=$?
+      [ "$code" -eq 1 ] || fail "simulated ${fault%%:*}: exit $code (expected 1); stderr: $(cat "$tmp/err")"
+      grep -qF -- "${fault#*:}" "$tmp/err" || fail "simulated ${fault%%:*}: got $(cat "$tmp/err")"
+      [ ! -e "$tmp/frame.pfm" ] || fail "simulated ${fault%%:*} wrote a file"
+    done
     ;;
   *) fail "unknown mode $mode" ;;
 esac

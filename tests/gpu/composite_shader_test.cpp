@@ -1,4 +1,4 @@
-// shaders/composite.comp on lavapipe, through the backend interface, against its CPU twin (passes/shading/tonemap.h):
+// shaders/composite.comp on lavapipe, through the backend interface on each backend, against its CPU twin (passes/shading/tonemap.h):
 // every variant and several exposures, on a frame that is not a multiple of the
 // workgroup size, with radiances from 0 to 1e4 (and a negative one, clamped to 0).
 #include <cmath>
@@ -6,14 +6,13 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/gpu/validation_messages.h"
+#include "tests/gpu/backends.h"
 
-#include "graph/rhi/vulkan/vulkan_device.h"
 #include "passes/shading/tonemap.h"
 #include "passes/shading/programs.h"
 #include "shaders/shader_library.h"
 
-namespace volgraph::vulkan {
+namespace volgraph::testing {
 namespace {
 
 constexpr uint32_t kWidth = 13, kHeight = 11;
@@ -85,10 +84,14 @@ std::vector<float> composite(rhi::Device& device, const std::vector<float>& radi
   return out;
 }
 
-TEST(CompositeShader, MatchesTheCpuTwinForEveryToneMap) {
+class CompositeShader : public OnEachBackend<> {
+ protected:
+  Backend backend() const override { return GetParam(); }
+};
+
+TEST_P(CompositeShader, MatchesTheCpuTwinForEveryToneMap) {
   ASSERT_FALSE(shader_spirv("composite.comp").empty());
-  auto context = Context::create({.validation = true});
-  VulkanDevice device(*context);
+  rhi::Device& device = this->device();
   std::vector<float> radiance(size_t(kWidth) * kHeight * 4);
   for (uint32_t y = 0; y < kHeight; ++y)
     for (uint32_t x = 0; x < kWidth; ++x)
@@ -112,14 +115,12 @@ TEST(CompositeShader, MatchesTheCpuTwinForEveryToneMap) {
       EXPECT_LT(worst, 1e-5) << "tone map " << int(op) << " exposure " << exposure;
     }
   }
-  EXPECT_EQ(device.info().backend, "vulkan");
-  const auto messages = context->take_validation_messages();
-  EXPECT_TRUE(messages.empty()) << joined(messages);
+  EXPECT_EQ(device.info().backend, backend_name(backend()));
 }
-TEST(CompositeShader, TimestampsBracketTheDispatch) {
-  auto context = Context::create({.validation = true});
-  VulkanDevice device(*context);
-  ASSERT_TRUE(device.has_timestamps());
+
+TEST_P(CompositeShader, TimestampsBracketTheDispatch) {
+  rhi::Device& device = this->device();
+  ASSERT_TRUE(device.has_timestamps()) << "lavapipe offers time stamps on both backends";
   const rhi::QuerySetId queries = device.create_timestamp_queries("composite", 2);
   const std::vector<float> radiance(size_t(kWidth) * kHeight * 4, 1.0f);
   for (int frame = 0; frame < 3; ++frame) {  // the query set is reusable frame after frame
@@ -128,9 +129,9 @@ TEST(CompositeShader, TimestampsBracketTheDispatch) {
     EXPECT_GT(ns[1], ns[0]) << "frame " << frame;
     EXPECT_LT(ns[1] - ns[0], 1e9) << "a 13x11 dispatch under a second";
   }
-  const auto messages = context->take_validation_messages();
-  EXPECT_TRUE(messages.empty()) << joined(messages);
 }
 
+INSTANTIATE_TEST_SUITE_P(Backends, CompositeShader, ::testing::ValuesIn(gpu_backends()), backend_test_name);
+
 }  // namespace
-}  // namespace volgraph::vulkan
+}  // namespace volgraph::testing

@@ -1,4 +1,4 @@
-// The shared physics includes (shaders/include/phase.glsl, media.glsl) on lavapipe
+// The shared physics includes (shaders/include/phase.glsl, media.glsl) on lavapipe, on each backend,
 // against their CPU twins in float (passes/shading/phase.h, media.h), over a table that
 // covers the traps (g → ±1, x → 0, dense and empty media, huge distances): relative
 // error ≤ 2e-5 (GLSL lets exp be off by 3 + 2|x| ULP; our twins use the same formulas).
@@ -6,14 +6,13 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/rhi/vulkan/vulkan_device.h"
 #include "passes/shading/media.h"
 #include "passes/shading/phase.h"
 #include "graph/rhi/spirv_reflect.h"
 #include "tests/gpu/shaders/gpu_test_shaders.h"
-#include "tests/gpu/validation_messages.h"
+#include "tests/gpu/backends.h"
 
-namespace volgraph::vulkan {
+namespace volgraph::testing {
 namespace {
 
 struct Case {
@@ -52,11 +51,15 @@ std::array<float, 8> expected(const Case& c) {
           height_fog_optical_depth(c.sigma_t, c.falloff, 0.0f, c.origin_y, c.direction_y, c.dz)};
 }
 
-TEST(PhysicsTwins, ShadersMatchTheirCpuTwins) {
+class PhysicsTwins : public OnEachBackend<> {
+ protected:
+  Backend backend() const override { return GetParam(); }
+};
+
+TEST_P(PhysicsTwins, ShadersMatchTheirCpuTwins) {
   using namespace rhi;
-  auto context = Context::create({.validation = true});
   {
-    VulkanDevice device(*context);
+    rhi::Device& device = this->device();
     const std::vector<Case> table = cases();
     const uint64_t in_bytes = table.size() * sizeof(Case), out_bytes = table.size() * 32;
     const BufferId input = device.create_buffer({"cases", in_bytes, buffer_usage::storage | buffer_usage::copy_dst});
@@ -100,9 +103,9 @@ TEST(PhysicsTwins, ShadersMatchTheirCpuTwins) {
       }
     }
   }
-  const auto messages = context->take_validation_messages();
-  EXPECT_TRUE(messages.empty()) << joined(messages);
 }
 
+INSTANTIATE_TEST_SUITE_P(Backends, PhysicsTwins, ::testing::ValuesIn(gpu_backends()), backend_test_name);
+
 }  // namespace
-}  // namespace volgraph::vulkan
+}  // namespace volgraph::testing

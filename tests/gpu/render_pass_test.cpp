@@ -1,15 +1,14 @@
-// Render passes through the backend interface on lavapipe: DESIGN.md's orientation
+// Render passes through the backend interface on lavapipe, on each backend: DESIGN.md's orientation
 // (NDC +y up, row 0 at the top), back-face culling of clockwise triangles, the depth
 // test and additive blending, checked on read-back pixels with validation on.
 #include <cstring>
 
 #include <gtest/gtest.h>
 
-#include "graph/rhi/vulkan/vulkan_device.h"
 #include "shaders/shader_library.h"
-#include "tests/gpu/validation_messages.h"
+#include "tests/gpu/backends.h"
 
-namespace volgraph::vulkan {
+namespace volgraph::testing {
 namespace {
 
 using namespace rhi;
@@ -22,19 +21,15 @@ struct Quad {
   bool clockwise = false;
 };
 
-class RenderPass : public ::testing::Test {
+class RenderPass : public OnEachBackend<> {
  protected:
+  Backend backend() const override { return GetParam(); }
   void SetUp() override {
-    context_ = Context::create({.validation = true});
-    device_ = std::make_unique<VulkanDevice>(*context_);
+    OnEachBackend::SetUp();
+    device_ = &device();
     layout_ = device_->create_bind_group_layout({"flat colour", {{0, shader_stage::fragment, BindingType::uniform_buffer}}});
     vertex_ = device_->create_shader_module("flat_color.vert", shader_spirv("flat_color.vert"));
     fragment_ = device_->create_shader_module("flat_color.frag", shader_spirv("flat_color.frag"));
-  }
-  void TearDown() override {
-    device_.reset();
-    const auto messages = context_->take_validation_messages();
-    EXPECT_TRUE(messages.empty()) << joined(messages);
   }
 
   // Draws the quads in order into a cleared frame; returns its RGBA texels, row 0 first.
@@ -101,13 +96,12 @@ class RenderPass : public ::testing::Test {
 
   static float red(const std::vector<float>& texels, uint32_t x, uint32_t y) { return texels[4 * (y * kWidth + x)]; }
 
-  std::unique_ptr<Context> context_;
-  std::unique_ptr<VulkanDevice> device_;
+  rhi::Device* device_ = nullptr;
   BindGroupLayoutId layout_;
   ShaderModuleId vertex_, fragment_;
 };
 
-TEST_F(RenderPass, PositiveNdcYIsTheTopOfTheImage) {
+TEST_P(RenderPass, PositiveNdcYIsTheTopOfTheImage) {
   const auto t = render({{0.0f, 1.0f, 0.5f, {1, 0, 0, 1}}}, CullMode::back, BlendMode::replace, true);
   for (uint32_t y = 0; y < kHeight; ++y) {
     for (uint32_t x = 0; x < kWidth; ++x) {
@@ -117,25 +111,25 @@ TEST_F(RenderPass, PositiveNdcYIsTheTopOfTheImage) {
   }
 }
 
-TEST_F(RenderPass, ClockwiseTrianglesAreBackFacesAndCulled) {
+TEST_P(RenderPass, ClockwiseTrianglesAreBackFacesAndCulled) {
   EXPECT_EQ(red(render({{-1, 1, 0.5f, {1, 0, 0, 1}, true}}, CullMode::back, BlendMode::replace, true), 8, 6), 0.0f);
   EXPECT_EQ(red(render({{-1, 1, 0.5f, {1, 0, 0, 1}, true}}, CullMode::none, BlendMode::replace, true), 8, 6), 1.0f);
   EXPECT_EQ(red(render({{-1, 1, 0.5f, {1, 0, 0, 1}, false}}, CullMode::back, BlendMode::replace, true), 8, 6), 1.0f);
 }
 
-TEST_F(RenderPass, TheNearerSurfaceWinsWhateverTheDrawOrder) {
+TEST_P(RenderPass, TheNearerSurfaceWinsWhateverTheDrawOrder) {
   const Quad far{-1, 1, 0.7f, {0.25f, 0, 0, 1}}, near{-1, 1, 0.3f, {0.75f, 0, 0, 1}};
   EXPECT_EQ(red(render({far, near}, CullMode::back, BlendMode::replace, true), 3, 3), 0.75f);
   EXPECT_EQ(red(render({near, far}, CullMode::back, BlendMode::replace, true), 3, 3), 0.75f);
 }
 
-TEST_F(RenderPass, AdditiveBlendingSums) {
+TEST_P(RenderPass, AdditiveBlendingSums) {
   const Quad a{-1, 1, 0.5f, {0.25f, 0, 0, 0}}, b{-1, 1, 0.5f, {0.5f, 0, 0, 0}};
   EXPECT_EQ(red(render({a, b}, CullMode::none, BlendMode::additive, false), 5, 9), 0.75f);
 }
 
 // In-stream buffer updates are ordered like any transfer write: update, barrier, copy.
-TEST_F(RenderPass, UpdateBufferLandsBeforeTheCopyAfterIt) {
+TEST_P(RenderPass, UpdateBufferLandsBeforeTheCopyAfterIt) {
   const BufferId a = device_->create_buffer({"a", 64, buffer_usage::copy_src | buffer_usage::copy_dst});
   const BufferId b = device_->create_buffer({"b", 64, buffer_usage::copy_dst});
   std::vector<uint32_t> words(16);
@@ -153,5 +147,7 @@ TEST_F(RenderPass, UpdateBufferLandsBeforeTheCopyAfterIt) {
   EXPECT_EQ(got, words);
 }
 
+INSTANTIATE_TEST_SUITE_P(Backends, RenderPass, ::testing::ValuesIn(gpu_backends()), backend_test_name);
+
 }  // namespace
-}  // namespace volgraph::vulkan
+}  // namespace volgraph::testing

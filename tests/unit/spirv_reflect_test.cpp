@@ -1,6 +1,7 @@
 // SPIR-V reflection on the embedded production shaders (their layouts are the ones the
 // passes write by hand today) and on test-only shaders (tests/unit/shaders/): storage
-// textures and buffers, a conflict between stages, and what the rhi cannot express.
+// textures and buffers (with their access), textures sampled through a sampler or only
+// fetched, a conflict between stages, and what the rhi cannot express.
 #include "graph/rhi/spirv_reflect.h"
 
 #include <gtest/gtest.h>
@@ -36,14 +37,28 @@ std::string visibility_text(uint32_t visibility) {
   return text;
 }
 
-// "2 C storage_texture texture2d rgba32_float": binding, stages, type, then the texture
-// kind (textures) and format (storage textures).
+std::string_view access_text(StorageAccess access) {
+  switch (access) {
+    case StorageAccess::read_only: return "read_only";
+    case StorageAccess::write_only: return "write_only";
+    case StorageAccess::read_write: break;
+  }
+  return "read_write";
+}
+
+// "2 C storage_texture texture2d rgba32_float write_only": binding, stages, type, then the
+// texture kind (textures), format and access (storage textures), and for sampled
+// textures and samplers whether a shader filters through them or only fetches.
 std::string entry_text(const LayoutEntry& entry) {
   std::string text =
       std::to_string(entry.binding) + " " + visibility_text(entry.visibility) + " " + binding_type_text(entry.type);
   const bool is_texture = entry.type == BindingType::sampled_texture || entry.type == BindingType::storage_texture;
   if (is_texture) text += " " + std::string(kind_name(entry.texture_kind));
-  if (entry.type == BindingType::storage_texture) text += " " + std::string(format_info(entry.storage_format).name);
+  if (entry.type == BindingType::storage_texture) {
+    text += " " + std::string(format_info(entry.storage_format).name) + " " + std::string(access_text(entry.storage_access));
+  }
+  const bool samples = entry.type == BindingType::sampled_texture || entry.type == BindingType::sampler;
+  if (samples) text += entry.filtered ? " filtered" : " fetched";
   return text;
 }
 
@@ -91,8 +106,8 @@ std::string reflection_error(std::vector<ShaderStageCode> stages, std::string_vi
 TEST(SpirvReflect, CompositeDeclaresTextureSamplerStorageImageAndUniforms) {
   const auto layouts = reflect({{production("composite.comp"), shader_stage::compute}}, "composite");
   EXPECT_EQ(labels(layouts), (std::vector<std::string>{"composite set 0"}));
-  EXPECT_EQ(layouts_text(layouts), (Layouts{{"0 C sampled_texture texture2d", "1 C sampler",
-                                             "2 C storage_texture texture2d rgba32_float", "3 C uniform_buffer"}}));
+  EXPECT_EQ(layouts_text(layouts), (Layouts{{"0 C sampled_texture texture2d fetched", "1 C sampler fetched",
+                                             "2 C storage_texture texture2d rgba32_float write_only", "3 C uniform_buffer"}}));
 }
 
 TEST(SpirvReflect, SceneStagesMergeVisibilityPerBinding) {
@@ -100,19 +115,19 @@ TEST(SpirvReflect, SceneStagesMergeVisibilityPerBinding) {
       {{production("scene.vert"), shader_stage::vertex}, {production("scene_shadowed.frag"), shader_stage::fragment}},
       "scene");
   EXPECT_EQ(labels(layouts), (std::vector<std::string>{"scene set 0", "scene set 1", "scene set 2"}));
-  const std::vector<std::string> object = {"0 VF uniform_buffer", "1 F sampled_texture texture2d",
-                                           "2 F sampled_texture texture2d", "3 F sampler"};  // block + material textures
+  const std::vector<std::string> object = {"0 VF uniform_buffer", "1 F sampled_texture texture2d filtered",
+                                           "2 F sampled_texture texture2d filtered", "3 F sampler filtered"};  // block + material textures
   EXPECT_EQ(layouts_text(layouts), (Layouts{{"0 VF uniform_buffer"},
                                             object,
-                                            {"0 F sampled_texture texture2d", "1 F sampler", "2 F uniform_buffer"}}));
+                                            {"0 F sampled_texture texture2d fetched", "1 F sampler fetched", "2 F uniform_buffer"}}));
 }
 
 TEST(SpirvReflect, UnshadowedSceneFragmentHasNoShadowSet) {
   const auto layouts = reflect(
       {{production("scene.vert"), shader_stage::vertex}, {production("scene.frag"), shader_stage::fragment}}, "scene");
   EXPECT_EQ(layouts_text(layouts), (Layouts{{"0 VF uniform_buffer"},
-                                            {"0 VF uniform_buffer", "1 F sampled_texture texture2d",
-                                             "2 F sampled_texture texture2d", "3 F sampler"}}));
+                                            {"0 VF uniform_buffer", "1 F sampled_texture texture2d filtered",
+                                             "2 F sampled_texture texture2d filtered", "3 F sampler filtered"}}));
 }
 
 TEST(SpirvReflect, ShadowVertexDeclaresViewAndObject) {
@@ -129,11 +144,11 @@ TEST(SpirvReflect, StorageTexturesAndBuffers) {
   const auto layouts = reflect({{test_only("storage.comp"), shader_stage::compute}}, "storage");
   EXPECT_EQ(labels(layouts), (std::vector<std::string>{"storage set 0", "storage set 1", "storage set 2"}));
   EXPECT_EQ(layouts_text(layouts),
-            (Layouts{{"0 C storage_texture texture3d rgba16_float", "1 C storage_texture texture2d r32_float",
-                      "2 C read_only_storage_buffer", "3 C storage_texture texture2d r32_uint"},
+            (Layouts{{"0 C storage_texture texture3d rgba16_float write_only", "1 C storage_texture texture2d r32_float write_only",
+                      "2 C read_only_storage_buffer", "3 C storage_texture texture2d r32_uint read_write"},
                      {},
-                     {"0 C storage_buffer", "1 C storage_buffer", "2 C sampled_texture texture3d", "3 C sampler",
-                      "4 C storage_texture texture2d rgba8_unorm"}}));
+                     {"0 C storage_buffer", "1 C storage_buffer", "2 C sampled_texture texture3d filtered", "3 C sampler filtered",
+                      "4 C storage_texture texture2d rgba8_unorm write_only"}}));
 }
 
 TEST(SpirvReflect, WorkgroupSize) {

@@ -22,6 +22,8 @@ def c_decl(api, member, in_struct):
         typ += " const *"
     elif annotation == "*":
         typ += " *"
+    elif annotation == "const*const*":  # an array of C strings (toggle names)
+        typ += " const * const *"
     elif annotation != "value":
         raise SystemExit(f"unhandled annotation {annotation}")
     nullable = member.get("optional") and (annotation != "value" or api.types.get(member["type"]) == "object")

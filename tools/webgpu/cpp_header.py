@@ -25,7 +25,7 @@ def cpp_type(api, name):
 def cpp_annotated(api, member):
     annotation = member.get("annotation", "value")
     typ = cpp_type(api, member["type"])
-    return {"value": typ, "const*": typ + " const *", "*": typ + " *"}[annotation]
+    return {"value": typ, "const*": typ + " const *", "*": typ + " *", "const*const*": typ + " const * const *"}[annotation]
 
 
 # Dawn's C++ header gives these BindGroupLayoutEntry members "binding not used" layouts,

@@ -57,7 +57,7 @@ OBJECTS = {
 FUNCTIONS = ["create instance"]
 
 # Structures no method names: chained extensions the backend uses.
-EXTRA_STRUCTURES = ["shader source SPIRV"]
+EXTRA_STRUCTURES = ["shader source SPIRV", "dawn toggles descriptor"]
 
 # Enums (or values) that no listed method or structure reaches but callers compare with.
 EXTRA_ENUMS = ["s type"]

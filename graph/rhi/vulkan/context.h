@@ -20,7 +20,7 @@ namespace volgraph::vulkan {
 // A driver failure to act out, so that the way volgraph reports it can be tested on a
 // driver that never fails: every memory allocation returns
 // VK_ERROR_OUT_OF_DEVICE_MEMORY, or every queue submission VK_ERROR_DEVICE_LOST.
-enum class SimulatedFault { none, out_of_memory, device_lost };
+using SimulatedFault = volgraph::SimulatedFault;
 
 struct ContextOptions {
   bool validation = false;       // VK_LAYER_KHRONOS_validation, synchronization validation included

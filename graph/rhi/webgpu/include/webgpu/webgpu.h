@@ -119,6 +119,7 @@ struct WGPUTexelCopyBufferInfo;
 struct WGPUInstanceCapabilities;
 struct WGPUInstanceDescriptor;
 struct WGPUShaderSourceSPIRV;
+struct WGPUDawnTogglesDescriptor;
 
 typedef enum WGPUWaitStatus {
     WGPUWaitStatus_Success = 0x00000001,
@@ -699,6 +700,7 @@ typedef enum WGPUStoreOp {
 
 typedef enum WGPUSType {
     WGPUSType_ShaderSourceSPIRV = 0x00000001,
+    WGPUSType_DawnTogglesDescriptor = 0x0005000A,
     WGPUSType_Force32 = 0x7FFFFFFF
 } WGPUSType WGPU_ENUM_ATTRIBUTE;
 
@@ -1268,6 +1270,14 @@ typedef struct WGPUShaderSourceSPIRV {
     uint32_t codeSize;
     uint32_t const * code;
 } WGPUShaderSourceSPIRV WGPU_STRUCTURE_ATTRIBUTE;
+
+typedef struct WGPUDawnTogglesDescriptor {
+    WGPUChainedStruct chain;
+    size_t enabledToggleCount;
+    char const * const * enabledToggles;
+    size_t disabledToggleCount;
+    char const * const * disabledToggles;
+} WGPUDawnTogglesDescriptor WGPU_STRUCTURE_ATTRIBUTE;
 
 #ifdef __cplusplus
 extern "C" {

@@ -611,6 +611,7 @@ static_assert(sizeof(StoreOp) == sizeof(WGPUStoreOp), "sizeof mismatch for Store
 
 enum class SType : uint32_t {
     ShaderSourceSPIRV = WGPUSType_ShaderSourceSPIRV,
+    DawnTogglesDescriptor = WGPUSType_DawnTogglesDescriptor,
 };
 static_assert(sizeof(SType) == sizeof(WGPUSType), "sizeof mismatch for SType");
 
@@ -766,6 +767,7 @@ struct TexelCopyBufferInfo;
 struct InstanceCapabilities;
 struct InstanceDescriptor;
 struct ShaderSourceSPIRV;
+struct DawnTogglesDescriptor;
 
 namespace detail {
 constexpr size_t ConstexprMax(size_t a, size_t b) {
@@ -1896,6 +1898,19 @@ struct ShaderSourceSPIRV : ChainedStruct {
     uint32_t const * code = nullptr;
 };
 
+struct DawnTogglesDescriptor : ChainedStruct {
+    inline DawnTogglesDescriptor();
+    struct Init;
+    inline DawnTogglesDescriptor(Init&& init);
+    inline operator const WGPUDawnTogglesDescriptor&() const noexcept;
+
+    static constexpr size_t kFirstMemberAlignment = detail::ConstexprMax(alignof(ChainedStruct), alignof(size_t));
+    alignas(kFirstMemberAlignment) size_t enabledToggleCount = 0;
+    char const * const * enabledToggles = nullptr;
+    size_t disabledToggleCount = 0;
+    char const * const * disabledToggles = nullptr;
+};
+
 // DeviceDescriptor keeps its callback infos to itself: set them with
 // SetDeviceLostCallback and SetUncapturedErrorCallback.
 namespace detail {
@@ -2574,6 +2589,26 @@ static_assert(sizeof(ShaderSourceSPIRV) == sizeof(WGPUShaderSourceSPIRV), "sizeo
 static_assert(alignof(ShaderSourceSPIRV) == alignof(WGPUShaderSourceSPIRV), "alignof mismatch for ShaderSourceSPIRV");
 static_assert(offsetof(ShaderSourceSPIRV, codeSize) == offsetof(WGPUShaderSourceSPIRV, codeSize), "offsetof mismatch for ShaderSourceSPIRV::codeSize");
 static_assert(offsetof(ShaderSourceSPIRV, code) == offsetof(WGPUShaderSourceSPIRV, code), "offsetof mismatch for ShaderSourceSPIRV::code");
+
+// DawnTogglesDescriptor
+DawnTogglesDescriptor::DawnTogglesDescriptor() : ChainedStruct{nullptr, SType::DawnTogglesDescriptor} {}
+struct DawnTogglesDescriptor::Init {
+    ChainedStruct const * nextInChain;
+    size_t enabledToggleCount = 0;
+    char const * const * enabledToggles = nullptr;
+    size_t disabledToggleCount = 0;
+    char const * const * disabledToggles = nullptr;
+};
+DawnTogglesDescriptor::DawnTogglesDescriptor(DawnTogglesDescriptor::Init&& init)
+    : ChainedStruct{init.nextInChain, SType::DawnTogglesDescriptor}, enabledToggleCount(std::move(init.enabledToggleCount)), enabledToggles(std::move(init.enabledToggles)), disabledToggleCount(std::move(init.disabledToggleCount)), disabledToggles(std::move(init.disabledToggles)) {}
+
+DawnTogglesDescriptor::operator const WGPUDawnTogglesDescriptor&() const noexcept { return *reinterpret_cast<const WGPUDawnTogglesDescriptor*>(this); }
+static_assert(sizeof(DawnTogglesDescriptor) == sizeof(WGPUDawnTogglesDescriptor), "sizeof mismatch for DawnTogglesDescriptor");
+static_assert(alignof(DawnTogglesDescriptor) == alignof(WGPUDawnTogglesDescriptor), "alignof mismatch for DawnTogglesDescriptor");
+static_assert(offsetof(DawnTogglesDescriptor, enabledToggleCount) == offsetof(WGPUDawnTogglesDescriptor, enabledToggleCount), "offsetof mismatch for DawnTogglesDescriptor::enabledToggleCount");
+static_assert(offsetof(DawnTogglesDescriptor, enabledToggles) == offsetof(WGPUDawnTogglesDescriptor, enabledToggles), "offsetof mismatch for DawnTogglesDescriptor::enabledToggles");
+static_assert(offsetof(DawnTogglesDescriptor, disabledToggleCount) == offsetof(WGPUDawnTogglesDescriptor, disabledToggleCount), "offsetof mismatch for DawnTogglesDescriptor::disabledToggleCount");
+static_assert(offsetof(DawnTogglesDescriptor, disabledToggles) == offsetof(WGPUDawnTogglesDescriptor, disabledToggles), "offsetof mismatch for DawnTogglesDescriptor::disabledToggles");
 
 // DeviceDescriptor
 DeviceDescriptor::operator const WGPUDeviceDescriptor&() const noexcept {

@@ -1,0 +1,78 @@
+// WebGpuGraphResources (graph_resources.h): pooled objects with the graph's usages.
+#include "graph/rhi/webgpu/graph_resources.h"
+
+#include "graph/rhi/webgpu/formats.h"
+#include "graph/rhi/webgpu/webgpu_device.h"
+
+namespace volgraph::webgpu {
+namespace {
+
+// Usages through which a texture needs a view (bindings and attachments).
+constexpr wgpu::TextureUsage kViewable =
+    wgpu::TextureUsage::TextureBinding | wgpu::TextureUsage::StorageBinding | wgpu::TextureUsage::RenderAttachment;
+
+}  // namespace
+
+WebGpuGraphResources::WebGpuGraphResources(WebGpuDevice& device, const Graph& graph)
+    : device_(device),
+      graph_(graph),
+      texture_usage_(graph.resources.size(), wgpu::TextureUsage::None),
+      buffer_usage_(graph.resources.size(), wgpu::BufferUsage::None) {
+  for (const GraphPass& p : graph.passes) {
+    for (const ResourceUse& u : p.uses) {
+      texture_usage_[u.resource] |= webgpu::texture_usage(u.usage);
+      buffer_usage_[u.resource] |= webgpu::buffer_usage(u.usage);
+    }
+  }
+  for (const ResourceVersion& o : graph.outputs) {  // read back after the frame
+    texture_usage_[o.resource] |= wgpu::TextureUsage::CopySrc;
+    buffer_usage_[o.resource] |= wgpu::BufferUsage::CopySrc;
+  }
+}
+
+void WebGpuGraphResources::bind(const Plan& plan) {
+  const ResourcePool pool = pool_resources(graph_, plan);
+  textures_.assign(graph_.resources.size(), {});
+  views_.assign(graph_.resources.size(), {});
+  buffers_.assign(graph_.resources.size(), {});
+  for (uint32_t i = 0; i < pool.objects.size(); ++i) create_object(pool.objects[i], i);
+}
+
+// One texture or buffer with every occupant's usage, handed to each occupant.
+void WebGpuGraphResources::create_object(const PooledObject& object, uint32_t index) {
+  const ResourceDesc& d = object.desc;
+  wgpu::TextureUsage texture_usage = wgpu::TextureUsage::None;
+  wgpu::BufferUsage buffer_usage = wgpu::BufferUsage::None;
+  for (const uint32_t r : object.occupants) {
+    texture_usage |= texture_usage_[r];
+    buffer_usage |= buffer_usage_[r];
+  }
+  const std::string label = d.name + " (pooled object " + std::to_string(index) + ")";
+  rhi::TextureId texture;
+  rhi::TextureViewId view;
+  rhi::BufferId buffer;
+  if (d.kind == ResourceKind::buffer) {
+    const wgpu::BufferUsage usage = buffer_usage == wgpu::BufferUsage::None ? wgpu::BufferUsage::CopyDst : buffer_usage;
+    buffer = device_.add_buffer(device_.make_buffer(label, d.buffer_bytes, usage), d.buffer_bytes);
+  } else {
+    rhi::TextureDesc desc{label, d.kind, d.format, d.extent, 0, 1};
+    wgpu::TextureDescriptor descriptor;
+    descriptor.label = std::string_view(label);
+    descriptor.usage = texture_usage == wgpu::TextureUsage::None ? wgpu::TextureUsage::CopyDst : texture_usage;
+    descriptor.dimension = dimension_of(d.kind);
+    descriptor.size = {d.extent.width, d.extent.height, d.kind == ResourceKind::texture3d ? d.extent.depth : 1};
+    descriptor.format = to_wgpu(d.format);
+    const wgpu::Texture made = device_.make_texture(descriptor);
+    texture = device_.add_texture(made, desc);
+    if (texture_usage & kViewable) view = device_.add_view(made.CreateView());
+  }
+  (object.persistent ? created_.persistent_objects : created_.transient_objects) += 1;
+  if (!object.persistent) created_.transient_bytes += estimate_requirements(d).size;
+  for (const uint32_t r : object.occupants) {
+    textures_[r] = texture;
+    views_[r] = view;
+    buffers_[r] = buffer;
+  }
+}
+
+}  // namespace volgraph::webgpu
