@@ -73,7 +73,7 @@ options (render):
   --timings-out FILE           the same JSON to FILE
   --validation                 run under the Khronos validation layer (synchronization too);
                                WebGPU validates always: any Dawn error fails the render (exit 1)
-  --dump PASS.SLOT=FILE        also write that resource: 2D textures as images, buffers raw (.bin)
+  --dump PASS.SLOT=FILE        also write that resource: textures as images (3D: slices stacked, slice 0 on top), buffers raw (.bin)
 )";
 
 struct Args {
@@ -385,8 +385,8 @@ void render_frames(rhi::Device& device, const Args& args, LoadedConfig& loaded) 
     if (loaded.graph.resources[d.resource].desc.kind == ResourceKind::buffer) {
       write_bytes(d.file, executor.read_buffer(d.resource));
     } else {
-      const Texels t = executor.read_texture(d.resource);
-      write_image(d.file, Image{t.width, t.height, t.rgba}, "--dump");
+      const Texels t = executor.read_texture(d.resource);  // a 3D texture: its slices stacked, slice 0 on top
+      write_image(d.file, Image{t.width, t.height * t.depth, t.rgba}, "--dump");
     }
   }
   const std::string timings = timings_json(executor.timings(), device, args.frames, executor.frame_wall_ms());

@@ -34,29 +34,31 @@ float half_to_float(uint16_t h) {
   return f;
 }
 
-// The 2D texture formats read back as texels.
+// The texture formats read back as texels (2D, or 3D slice by slice).
 bool readable_as_texels(const ResourceDesc& d) {
   const bool mono = d.format == Format::r32_float || d.format == Format::d32_float;
-  return d.kind == ResourceKind::texture2d && (d.format == Format::rgba32_float || d.format == Format::rgba16_float || mono);
+  return d.kind != ResourceKind::buffer && (d.format == Format::rgba32_float || d.format == Format::rgba16_float || mono);
 }
 
 DeviceError not_texels(const ResourceDesc& d) {
   return DeviceError(DeviceError::Kind::unsupported,
                      d.name + " is a " + std::string(kind_name(d.kind)) + " of " + std::string(format_info(d.format).name) +
-                         "; reading back takes 2D rgba32_float, rgba16_float, r32_float or d32_float textures");
+                         "; reading back takes rgba32_float, rgba16_float, r32_float or d32_float textures");
 }
+
+uint32_t slices(const ResourceDesc& d) { return d.kind == ResourceKind::texture3d ? std::max(1u, d.extent.depth) : 1; }
 
 uint64_t readback_bytes(const ResourceDesc& d) {
   if (d.kind == ResourceKind::buffer) return d.buffer_bytes;
-  return uint64_t(d.extent.width) * d.extent.height * format_info(d.format).bytes_per_texel;
+  return uint64_t(d.extent.width) * d.extent.height * slices(d) * format_info(d.format).bytes_per_texel;
 }
 
-// A 2D texture's read-back bytes (rows tightly packed) as RGBA floats; a one-channel
-// format is copied to RGB, alpha 1.
+// A texture's read-back bytes (rows tightly packed, slice after slice) as RGBA floats;
+// a one-channel format is copied to RGB, alpha 1.
 Texels texels_of(const ResourceDesc& d, const std::vector<std::byte>& raw) {
   const bool mono = d.format == Format::r32_float || d.format == Format::d32_float;
-  const size_t texels = size_t(d.extent.width) * d.extent.height;
-  Texels out{d.extent.width, d.extent.height, std::vector<float>(texels * 4, 1.0f)};
+  const size_t texels = size_t(d.extent.width) * d.extent.height * slices(d);
+  Texels out{d.extent.width, d.extent.height, std::vector<float>(texels * 4, 1.0f), slices(d)};
   for (size_t t = 0; t < texels; ++t) {
     if (mono) {
       float v;

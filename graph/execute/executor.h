@@ -24,7 +24,8 @@ struct PassTiming {
 struct Texels {
   uint32_t width = 0;
   uint32_t height = 0;
-  std::vector<float> rgba;  // row 0 at the top
+  std::vector<float> rgba;  // row 0 at the top; a 3D texture's slices one after another
+  uint32_t depth = 1;       // slices
 };
 
 // One resource read back: a texture's texels or a buffer's bytes.
@@ -60,8 +61,8 @@ class Executor {
   // frames record none and cost less (a frame as it runs unprofiled); gpu_ms stays 0.
   void set_gpu_timing(bool on) { gpu_timing_ = on; }
   double frame_wall_ms() const { return frame_wall_ms_; }  // submit to completion, last frame
-  // Graph output `index` (a 2D texture: rgba32/16 float, r32 float or d32 float; one
-  // channel is copied to RGB) after the last frame.
+  // Graph output `index` (a 2D or 3D texture: rgba32/16 float, r32 float or d32 float;
+  // one channel is copied to RGB) after the last frame.
   Texels read_output(size_t index) { return read_texture(graph_.outputs.at(index).resource); }
   Texels read_texture(uint32_t resource);
   std::vector<std::byte> read_buffer(uint32_t resource);

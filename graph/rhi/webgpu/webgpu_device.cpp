@@ -210,6 +210,18 @@ wgpu::DepthStencilState depth_state(const rhi::DepthStencilState& d) {
 // src + dst for colour and alpha.
 constexpr wgpu::BlendState kAdditive = {{wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::One},
                                         {wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::One}};
+// dst × src for colour and alpha.
+constexpr wgpu::BlendState kMultiply = {{wgpu::BlendOperation::Add, wgpu::BlendFactor::Zero, wgpu::BlendFactor::Src},
+                                        {wgpu::BlendOperation::Add, wgpu::BlendFactor::Zero, wgpu::BlendFactor::SrcAlpha}};
+
+const wgpu::BlendState* blend_state(rhi::BlendMode mode) {
+  switch (mode) {
+    case rhi::BlendMode::additive: return &kAdditive;
+    case rhi::BlendMode::multiply: return &kMultiply;
+    case rhi::BlendMode::replace: break;
+  }
+  return nullptr;
+}
 
 }  // namespace
 
@@ -220,7 +232,7 @@ rhi::RenderPipelineId WebGpuDevice::create_render_pipeline(const rhi::RenderPipe
   for (const rhi::ColorTargetState& c : desc.colors) {
     wgpu::ColorTargetState target;
     target.format = to_wgpu(c.format);
-    target.blend = c.blend == rhi::BlendMode::additive ? &kAdditive : nullptr;
+    target.blend = blend_state(c.blend);
     targets.push_back(target);
   }
   wgpu::RenderPipelineDescriptor descriptor;
