@@ -14,6 +14,7 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(froxel_scatter_pass());
   registry.add(scatter_integrate_pass());
   registry.add(froxel_apply_pass());
+  registry.add(fog_apply_pass());
 }
 
 }  // namespace volgraph

@@ -9,5 +9,6 @@ PassDecl froxel_voxelize_pass();
 PassDecl froxel_scatter_pass();
 PassDecl scatter_integrate_pass();
 PassDecl froxel_apply_pass();
+PassDecl fog_apply_pass();
 
 }  // namespace volgraph

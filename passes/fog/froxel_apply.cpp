@@ -5,7 +5,7 @@
 // no medium the pass is culled and the colour passes through unchanged.
 #include "graph/execute/pass_execution.h"
 #include "passes/fog/fog_passes.h"
-#include "passes/shading/programs.h"
+#include "passes/fog/apply_draws.h"
 
 namespace volgraph {
 namespace {
@@ -13,41 +13,24 @@ namespace {
 class FroxelApplyExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
-    if (!attenuate_.pipeline) prepare(c);
-    rhi::RenderPassDesc pass;
-    pass.label = c.graph_pass().name;
-    pass.colors = {{c.view("color"), rhi::LoadOp::load}};
-    c.encoder.begin_render_pass(pass);
-    for (const shading::RenderProgram* program : {&attenuate_, &add_}) {
-      c.encoder.set_pipeline(program->pipeline);
-      c.encoder.set_bind_group(0, group_);
-      c.encoder.draw(3);
-    }
-    c.encoder.end_render_pass();
+    if (!draws_.prepared()) prepare(c);
+    draws_.record(c, group_);
   }
 
  private:
-  shading::RenderProgram program(PassContext& c, rhi::BlendMode blend, const char* fragment) {
-    rhi::RenderPipelineDesc pd;
-    pd.label = std::string("froxel_apply ") + fragment;
-    pd.colors = {{c.desc("color").format, blend}};
-    return shading::create_render_program(c.device, pd, "fullscreen.vert", fragment);
-  }
-
   void prepare(PassContext& c) {
     using namespace rhi;
-    attenuate_ = program(c, BlendMode::multiply, "froxel_apply_transmittance.frag");
-    add_ = program(c, BlendMode::additive, "froxel_apply_scattering.frag");
+    draws_.prepare(c, "froxel_apply_transmittance.frag", "froxel_apply_scattering.frag");
     SamplerDesc trilinear{"trilinear"};
     trilinear.filter = trilinear.mip_filter = Filter::linear;
     group_ = c.device.create_bind_group(
-        {"froxel_apply", attenuate_.layouts[0],
+        {"froxel_apply", draws_.layout(),
          {BindGroupEntry::of(0, c.buffer("frame")), BindGroupEntry::of(1, c.view("depth")),
           BindGroupEntry::of(2, c.view("integrated_scattering")), BindGroupEntry::of(3, c.view("integrated_transmittance")),
           BindGroupEntry::of(4, c.device.create_sampler(trilinear)), BindGroupEntry::of(5, c.device.create_sampler({"nearest"}))}});
   }
 
-  shading::RenderProgram attenuate_, add_;
+  fog::ApplyDraws draws_;
   rhi::BindGroupId group_;
 };
 
