@@ -1,0 +1,66 @@
+// A fog technique against the CPU reference (reference/): the same config rendered on a
+// GPU device through the Executor with every composite forced to `none` (linear, no
+// exposure) and by the reference at the same size, compared only where the fog
+// technique alone decides the pixel.
+//
+// Exclusions (what differs between the two for reasons outside the fog technique):
+// - surfaces: the GPU's surface lighting is not attenuated by the media toward the
+//   lights (the reference's is: volumetric shadows on surfaces), it uses a shadow map
+//   (PCF, bias, texel edges) where the reference casts exact shadow rays, and adds the
+//   scene pass's ambient term. So a pixel is compared only when its centre and its eight
+//   neighbours' centres see no surface (the background, through the media only): the
+//   3×3 rule also drops the rasterised silhouettes next to surfaces.
+// - scenes the reference renders differently from the GPU are refused rather than
+//   compared (reference_gap): volumes with noise or with an edge fade (the reference has
+//   homogeneous, hard-edged volumes only and would silently ignore the fade).
+// Metric: tests/support/image_compare.h over the compared pixels — relative mean
+// absolute error Σ|gpu − ref| / Σ|ref|, outliers (a channel off by > 5 % of
+// max(|ref|, mean |ref|)), largest absolute error.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "graph/config/config.h"
+#include "graph/execute/executor.h"
+#include "graph/rhi/rhi.h"
+#include "reference/image_render.h"
+#include "tests/support/image_compare.h"
+
+namespace volgraph::accuracy {
+
+struct FogComparison {
+  testing::ImageDifference difference;
+  size_t compared_pixels = 0;
+  size_t pixels = 0;
+  std::string describe() const;
+};
+
+// The overrides plus, for every composite pass of the config, variant `none` and
+// exposure 0: the graph's output is then the linear radiance the reference computes.
+Overrides linear_output(const LoadedConfig& loaded, Overrides overrides);
+
+// Loads the config at `path` (or from `text`, named `name`) with linear_output applied.
+LoadedConfig load_linear(const std::string& path, const PassRegistry& registry, const Overrides& overrides = {});
+LoadedConfig load_linear_text(const std::string& name, const std::string& text, const PassRegistry& registry,
+                              const Overrides& overrides = {});
+
+// Why the reference would not render this scene's media as the GPU does ("" when it would).
+std::string reference_gap(const Scene& scene);
+
+// The reference image of the config's scene at its output size (throws
+// std::invalid_argument naming the gap when reference_gap is not empty).
+reference::ReferenceImage render_reference(const LoadedConfig& loaded, unsigned threads = 0);
+
+// The config's first graph output after one frame (frame 0: froxels sampled at their
+// centres, no jitter), on `device`.
+Texels render_gpu(rhi::Device& device, const LoadedConfig& loaded);
+
+// Per pixel (row-major): true where the pixel and its 3×3 neighbourhood see no surface.
+std::vector<bool> fog_only_pixels(const Scene& scene, uint32_t width, uint32_t height);
+
+// The GPU image against the reference over the pixels marked in `compared`.
+FogComparison compare_fog(const Texels& gpu, const reference::ReferenceImage& ref, const std::vector<bool>& compared);
+
+}  // namespace volgraph::accuracy
