@@ -121,7 +121,7 @@ void GraphBuilder::mark_output(ResourceVersion what) {
 
 Graph GraphBuilder::finish() { return std::move(graph_); }
 
-ResourceDesc resolve_slot(const PassDecl&, const SlotDecl& slot, Extent output_size, int64_t size_param) {
+ResourceDesc resolve_slot(const PassDecl&, const SlotDecl& slot, Extent output_size, int64_t size_param, int64_t divisor) {
   ResourceDesc d;
   d.kind = slot.kind;
   d.format = slot.format;
@@ -136,7 +136,8 @@ ResourceDesc resolve_slot(const PassDecl&, const SlotDecl& slot, Extent output_s
         return std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(double(n) * s)));
       };
       const uint32_t depth = slot.size.param.empty() ? slot.size.absolute.depth : uint32_t(std::max<int64_t>(1, size_param));
-      d.extent = {scaled(output_size.width, slot.size.scale_x), scaled(output_size.height, slot.size.scale_y),
+      const float by = slot.size.divisor_param.empty() ? 1.0f : 1.0f / float(std::max<int64_t>(1, divisor));
+      d.extent = {scaled(output_size.width, slot.size.scale_x * by), scaled(output_size.height, slot.size.scale_y * by),
                   std::max<uint32_t>(1, depth)};
       break;
     }

@@ -60,9 +60,10 @@ SizeSpec SizeSpec::of_output(float sx, float sy, uint32_t depth) {
   return s;
 }
 
-SizeSpec SizeSpec::of_output_slices(float sx, float sy, std::string param) {
-  SizeSpec s = of_output(sx, sy, 1);
-  s.param = std::move(param);
+SizeSpec SizeSpec::of_output_divided(std::string divisor, std::string slices) {
+  SizeSpec s = of_output(1.0f, 1.0f, 1);
+  s.divisor_param = std::move(divisor);
+  s.param = std::move(slices);
   return s;
 }
 

@@ -56,12 +56,14 @@ struct SizeSpec {
   float scale_x = 1.0f;          // relative
   float scale_y = 1.0f;          // relative
   std::string param;             // square_param: the side; relative: the depth, when set
+  std::string divisor_param;     // relative: x and y are also divided by this parameter, when set
   uint64_t buffer_bytes = 0;     // buffers: absolute size in bytes
 
   static SizeSpec fixed(uint32_t w, uint32_t h = 1, uint32_t d = 1);
   static SizeSpec of_output(float sx = 1.0f, float sy = 1.0f, uint32_t depth = 1);
-  // A fraction of the output in x and y, as many slices as integer parameter `param`.
-  static SizeSpec of_output_slices(float sx, float sy, std::string param);
+  // The output divided by integer parameter `divisor` in x and y, as many slices as
+  // integer parameter `slices` (froxel grids: pixels per froxel, slices).
+  static SizeSpec of_output_divided(std::string divisor, std::string slices);
   static SizeSpec square_of(std::string param_name);
   static SizeSpec bytes(uint64_t n);
 };

@@ -1,5 +1,5 @@
 // froxel_voxelize (Wronski 2014, Hillaire 2015): the scene's media (σs, σa, g, emission)
-// sampled at every froxel of a camera-frustum grid — 1/8 of the output in x and y,
+// sampled at every froxel of a camera-frustum grid — `tile` × `tile` pixels (8) a froxel,
 // `slices` in view depth from `near` to `far`, spaced linearly or exponentially — at the
 // froxel's centre plus a per-frame jitter. Also packs the fog passes' frame block.
 // Shader: shaders/froxel_voxelize.comp.
@@ -72,7 +72,7 @@ std::vector<ParamProblem> check_media(const PassDecl& decl, const Scene& scene, 
 
 SlotDecl media_volume(std::string name, std::string doc) {
   return slot_out(std::move(name), ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-                  SizeSpec::of_output_slices(0.125f, 0.125f, "slices"), std::move(doc));
+                  SizeSpec::of_output_divided("tile", "slices"), std::move(doc));
 }
 
 }  // namespace
@@ -81,9 +81,10 @@ PassDecl froxel_voxelize_pass() {
   PassDecl d;
   d.name = "froxel_voxelize";
   d.kind = PassKind::compute;
-  d.doc = "The scene's media at every froxel of a camera-frustum grid (1/8 of the output in x and y, `slices` deep).";
+  d.doc = "The scene's media at every froxel of a camera-frustum grid (`tile` × `tile` pixels a froxel, 8 by default; `slices` deep).";
   d.variants = {{"jittered", "one sample per froxel, at its centre plus a per-frame jitter (Halton 2, 3, 5) when `jitter` is on"}};
   d.params = {
+      param_int("tile", 8, 1, 64, "pixels", "froxels are tile × tile pixels of the output"),
       param_int("slices", 64, 1, 512, "", "froxels in view depth"),
       param_number("near", 0.1, 1e-3, 1e5, "m", "view depth where the grid starts"),
       param_number("far", 100, 1e-2, 1e6, "m", "view depth where the grid ends"),
