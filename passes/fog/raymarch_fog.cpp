@@ -87,19 +87,9 @@ class RaymarchFogExecution final : public PassExecution {
   rhi::BindGroupId group_, shadow_group_;
 };
 
-// The media and lights must fit the shader's block.
-std::vector<ParamProblem> check_media(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
-  std::vector<ParamProblem> problems;
-  if (scene.media.volumes.size() > size_t(shading::kMaxMediumVolumes)) {
-    problems.push_back({"", "at most " + std::to_string(shading::kMaxMediumVolumes) + " media volumes are marched, the scene has " +
-                                std::to_string(scene.media.volumes.size())});
-  }
-  return problems;
-}
-
 SlotDecl fog_image(std::string name, std::string doc) {
   return slot_out(std::move(name), ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
-                  SizeSpec::of_output_by_choice("resolution", {{"full", 1.0f}, {"half", 0.5f}}), std::move(doc));
+                  SizeSpec::of_output_divided_by_choice("resolution", {{"full", 1}, {"half", 2}}), std::move(doc));
 }
 
 }  // namespace
@@ -130,7 +120,7 @@ PassDecl raymarch_fog_pass() {
   d.slots[0].format = Format::d32_float;
   d.slots[1].format = Format::d32_float;
   d.needs = feature_bit(SceneFeature::medium);
-  d.check_scene = check_media;
+  d.check_scene = [](const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) { return fog::media_fit_problems(scene, "marched"); };
   d.make_execution = [] { return std::unique_ptr<PassExecution>(new RaymarchFogExecution()); };
   return d;
 }
