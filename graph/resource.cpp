@@ -67,6 +67,13 @@ SizeSpec SizeSpec::of_output_divided(std::string divisor, std::string slices) {
   return s;
 }
 
+SizeSpec SizeSpec::of_output_divided_by_choice(std::string param, std::vector<std::pair<std::string, int64_t>> choices) {
+  SizeSpec s = of_output(1.0f, 1.0f, 1);
+  s.divisor_param = std::move(param);
+  s.divisor_choices = std::move(choices);
+  return s;
+}
+
 SizeSpec SizeSpec::square_of(std::string param_name) {
   SizeSpec s;
   s.mode = Mode::square_param;

@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace volgraph {
 
@@ -57,6 +59,8 @@ struct SizeSpec {
   float scale_y = 1.0f;          // relative
   std::string param;             // square_param: the side; relative: the depth, when set
   std::string divisor_param;     // relative: x and y are also divided by this parameter, when set
+  // divisor_param a choice parameter: each value's divisor (full resolution 1, half 2)
+  std::vector<std::pair<std::string, int64_t>> divisor_choices;
   uint64_t buffer_bytes = 0;     // buffers: absolute size in bytes
 
   static SizeSpec fixed(uint32_t w, uint32_t h = 1, uint32_t d = 1);
@@ -64,6 +68,8 @@ struct SizeSpec {
   // The output divided by integer parameter `divisor` in x and y, as many slices as
   // integer parameter `slices` (froxel grids: pixels per froxel, slices).
   static SizeSpec of_output_divided(std::string divisor, std::string slices);
+  // The output divided in x and y by the divisor `choices` gives choice parameter `param`'s value.
+  static SizeSpec of_output_divided_by_choice(std::string param, std::vector<std::pair<std::string, int64_t>> choices);
   static SizeSpec square_of(std::string param_name);
   static SizeSpec bytes(uint64_t n);
 };

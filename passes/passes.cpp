@@ -15,6 +15,7 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(scatter_integrate_pass());
   registry.add(froxel_apply_pass());
   registry.add(fog_apply_pass());
+  registry.add(raymarch_fog_pass());
 }
 
 }  // namespace volgraph

@@ -3,7 +3,6 @@
 // fog_apply, second draw: the in-scattered radiance in front of the surface (added).
 #include "include/fog_image_lookup.glsl"
 
-layout(set = 0, binding = 3) uniform Frame { vec4 size; } frame;  // xy: the colour's size in pixels
 layout(location = 0) out vec4 radiance;
 
-void main() { radiance = vec4(texture(sampler2D(fog_scattering, bilinear), fog_uv(gl_FragCoord.xy, frame.size.xy)).rgb, 0.0); }
+void main() { radiance = vec4(fog_at_pixel(gl_FragCoord.xy).in_scatter, 0.0); }

@@ -209,6 +209,7 @@ std::string size_text(const SlotDecl& s) {
       break;
     case SizeSpec::Mode::relative:
       out = s.size.scale_x == 1.0f && s.size.scale_y == 1.0f ? "frame" : "frame × " + param_value_text(double(s.size.scale_x));
+      if (!s.size.divisor_param.empty()) out += " / " + s.size.divisor_param;
       break;
     case SizeSpec::Mode::square_param:
       out = s.size.param + "²";

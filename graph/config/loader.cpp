@@ -656,11 +656,20 @@ class Wiring {
     return d;
   }
 
+  // The value of a size's divisor parameter: an integer, or the divisor of a choice.
+  static int64_t divisor_of(const SizeSpec& size, const ParamValue& value) {
+    if (const int64_t* n = std::get_if<int64_t>(&value)) return *n;
+    for (const auto& [choice, divisor] : size.divisor_choices) {
+      if (choice == std::get<std::string>(value)) return divisor;
+    }
+    return 1;
+  }
+
   ResourceDesc output_desc(uint32_t p, const SlotDecl& slot) {
     const PassDecl& decl = *decls_[p];
     int64_t side = 0, divisor = 1;
     if (!slot.size.param.empty()) side = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.param))]);
-    if (!slot.size.divisor_param.empty()) divisor = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.divisor_param))]);
+    if (!slot.size.divisor_param.empty()) divisor = divisor_of(slot.size, params_[p][size_t(decl.param_index(slot.size.divisor_param))]);
     SlotDecl effective = slot;
     if (const OutputOverride* o = overrides_[p][size_t(decl.slot_index(slot.name))]) {
       if (o->format) effective.format = *o->format;

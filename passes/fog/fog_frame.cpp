@@ -48,4 +48,10 @@ GpuFogFrame make_fog_frame(const PassContext& c, const FogFrameInputs& inputs) {
   return f;
 }
 
+std::vector<ParamProblem> media_fit_problems(const Scene& scene, const std::string& what) {
+  if (scene.media.volumes.size() <= size_t(shading::kMaxMediumVolumes)) return {};
+  return {{"", "at most " + std::to_string(shading::kMaxMediumVolumes) + " media volumes are " + what + ", the scene has " +
+                   std::to_string(scene.media.volumes.size())}};
+}
+
 }  // namespace volgraph::fog

@@ -4,8 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "graph/execute/pass_execution.h"
+#include "graph/pass_decl.h"
 #include "passes/shading/froxel.h"
 #include "passes/shading/light_list.h"
 #include "passes/shading/media_field.h"
@@ -39,6 +42,10 @@ struct FogFrameInputs {
 };
 
 GpuFogFrame make_fog_frame(const PassContext& c, const FogFrameInputs& inputs);
+
+// The scene's media must fit the frame block (at most kMaxMediumVolumes local volumes):
+// the problems of a pass that packs them (`what`: how the pass uses them, "voxelized").
+std::vector<ParamProblem> media_fit_problems(const Scene& scene, const std::string& what);
 
 // Sample offset of frame `frame` inside a froxel, each axis within ±0.5: Halton (2, 3, 5)
 // points, centred; frame 0 samples the centre so a single frame is deterministic.

@@ -10,5 +10,6 @@ PassDecl froxel_scatter_pass();
 PassDecl scatter_integrate_pass();
 PassDecl froxel_apply_pass();
 PassDecl fog_apply_pass();
+PassDecl raymarch_fog_pass();
 
 }  // namespace volgraph

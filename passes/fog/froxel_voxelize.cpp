@@ -59,11 +59,7 @@ class FroxelVoxelizeExecution final : public PassExecution {
 // The media must fit the shader's block (at most kMaxMediumVolumes local volumes), and
 // the range must be a range.
 std::vector<ParamProblem> check_media(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params) {
-  std::vector<ParamProblem> problems;
-  if (scene.media.volumes.size() > size_t(shading::kMaxMediumVolumes)) {
-    problems.push_back({"", "at most " + std::to_string(shading::kMaxMediumVolumes) + " media volumes are voxelized, the scene has " +
-                                std::to_string(scene.media.volumes.size())});
-  }
+  std::vector<ParamProblem> problems = fog::media_fit_problems(scene, "voxelized");
   const double near = std::get<double>(params[size_t(decl.param_index("near"))]);
   const double far = std::get<double>(params[size_t(decl.param_index("far"))]);
   if (far <= near) problems.push_back({"far", "far (" + std::to_string(far) + " m) must exceed near (" + std::to_string(near) + " m)"});

@@ -1,0 +1,104 @@
+// raymarch_fog's body: per output pixel, a march from the camera to the scene's surface
+// (or to view depth max_distance where there is none) in `steps` equal steps, each
+// sampled at a per-pixel jittered point inside it; at each sample the media
+// (media_field.glsl), the lights (lighting.glsl) through the medium's Henyey–Greenstein
+// phase, the shadow map's visibility and the volumetric shadow toward each light
+// (light_transmittance.glsl), integrated by Hillaire's step (media.glsl, eq. 14.16). The
+// including shader defines `float light_visibility(int light, vec3 p)` first.
+#ifndef VOLGRAPH_RAYMARCH_FOG_BODY_GLSL
+#define VOLGRAPH_RAYMARCH_FOG_BODY_GLSL
+#include "fog_frame.glsl"
+#include "light_transmittance.glsl"
+#include "phase.glsl"
+
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+layout(set = 0, binding = 0) uniform Frame { FogFrame f; } frame;
+layout(set = 0, binding = 1) uniform texture2D scene_depth;
+layout(set = 0, binding = 2) uniform sampler nearest;
+layout(set = 0, binding = 3, rgba16f) uniform writeonly image2D fog_scattering;
+layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D fog_transmittance;
+layout(set = 0, binding = 5) uniform Params {
+  ivec4 steps;      // x: steps along the view ray, y: steps toward each light (0: no volumetric shadows)
+  vec4 distances;   // x: max_distance (view depth, m) where no surface is, y: shadow_distance (m) toward directional lights
+  vec4 jitter;      // x: 1 jittered samples, 0 each step's midpoint; y: the frame
+} params;
+
+const float FP16_MAX = 65000.0;    // stored values are clamped below rgba16f's largest
+const float SOURCE_MAX = 1e30;     // in-scattering is kept finite (a light at a sample point)
+
+// Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of
+// Duty: Advanced Warfare"), scrolled by 5.588238 pixels a frame: in [0, 1).
+float interleaved_gradient_noise(vec2 pixel, float frame_index) {
+  const vec2 p = pixel + 5.588238 * mod(frame_index, 64.0);
+  return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
+}
+
+// Where inside each step this pixel samples, in [0, 1).
+float step_jitter(ivec2 texel) {
+  if (params.jitter.x < 0.5) return 0.5;
+  return interleaved_gradient_noise(vec2(texel), params.jitter.y);
+}
+
+// The scene's depth-buffer value behind output texel `texel`: the farthest of the depth
+// pixels it covers (one at full resolution, 2×2 at half), so the march reaches the
+// background wherever any of them sees it.
+float covered_depth(ivec2 texel, ivec2 out_size) {
+  const ivec2 depth_size = textureSize(sampler2D(scene_depth, nearest), 0);
+  const ivec2 first = texel * depth_size / out_size;
+  const ivec2 last = max(first, ((texel + 1) * depth_size - 1) / out_size);
+  float farthest = 0.0;
+  for (int y = first.y; y <= last.y; ++y) {
+    for (int x = first.x; x <= last.x; ++x) {
+      farthest = max(farthest, texelFetch(sampler2D(scene_depth, nearest), ivec2(x, y), 0).r);
+    }
+  }
+  return farthest;
+}
+
+// View depth where the march ends: the surface's, or max_distance where there is none.
+float march_end_depth(float depth) {
+  if (depth >= 1.0) return params.distances.x;
+  return view_depth(frame.f, depth);
+}
+
+// Radiance per metre the media send toward the camera at p (DESIGN.md units):
+// σs·(Σ_lights p_HG(g, θ)·E·V·T_light + L_ambient) + emission.
+vec3 in_scattering(MediaSample m, vec3 p, vec3 to_camera, float jitter) {
+  if (all(equal(m.sigma_s, vec3(0.0)))) return m.emission;
+  vec3 light = frame.f.ambient.rgb;
+  for (int i = 0; i < frame.f.light_list.counts.x; ++i) {
+    const Light l = frame.f.light_list.lights[i];
+    vec3 travel;
+    const vec3 e = light_arriving(l, p, travel);
+    const float visible = light_visibility(i, p);
+    if (visible <= 0.0 || all(equal(e, vec3(0.0)))) continue;
+    const vec3 through = transmittance_to_light(frame.f.media, l, p, -travel, params.steps.y, params.distances.y, jitter);
+    light += phase_hg(m.g, dot(travel, to_camera)) * e * (visible * through);
+  }
+  return min(m.sigma_s * light + m.emission, vec3(SOURCE_MAX));
+}
+
+void main() {
+  const ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  const ivec2 out_size = imageSize(fog_scattering);
+  if (any(greaterThanEqual(texel, out_size))) return;
+  const vec3 ray = view_ray(frame.f.view, grid_ndc(vec2(texel), vec2(0.0), vec2(out_size)));
+  const float ray_length = length(ray);
+  const vec3 direction = ray / ray_length;
+  const float dt = march_end_depth(covered_depth(texel, out_size)) * ray_length / float(params.steps.x);
+  const float jitter = step_jitter(texel);
+  const vec3 origin = frame.f.view.position.xyz;
+  vec3 radiance = vec3(0.0), transmittance_so_far = vec3(1.0);
+  // Step k covers [k·dt, (k + 1)·dt] and is sampled at (k + jitter)·dt: the steps tile
+  // the ray exactly whatever the jitter, so a homogeneous medium stays exact.
+  for (int k = 0; k < params.steps.x; ++k) {
+    const vec3 p = origin + (float(k) + jitter) * dt * direction;
+    const MediaSample m = sample_media(frame.f.media, p);
+    integrate_hillaire(radiance, transmittance_so_far, in_scattering(m, p, -direction, jitter), m.sigma_s + m.sigma_a, dt);
+  }
+  imageStore(fog_scattering, texel, vec4(clamp(radiance, vec3(0.0), vec3(FP16_MAX)), 0.0));
+  imageStore(fog_transmittance, texel, vec4(clamp(transmittance_so_far, vec3(0.0), vec3(1.0)), 0.0));
+}
+
+#endif
