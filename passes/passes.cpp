@@ -15,6 +15,9 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(scatter_integrate_pass());
   registry.add(froxel_apply_pass());
   registry.add(fog_apply_pass());
+  registry.add(depth_fog_pass());
+  registry.add(height_fog_pass());
+  registry.add(analytic_fog_pass());
 }
 
 }  // namespace volgraph

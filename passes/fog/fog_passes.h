@@ -10,5 +10,8 @@ PassDecl froxel_scatter_pass();
 PassDecl scatter_integrate_pass();
 PassDecl froxel_apply_pass();
 PassDecl fog_apply_pass();
+PassDecl depth_fog_pass();
+PassDecl height_fog_pass();
+PassDecl analytic_fog_pass();
 
 }  // namespace volgraph
