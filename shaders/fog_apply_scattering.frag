@@ -6,4 +6,4 @@
 layout(set = 0, binding = 3) uniform Frame { vec4 size; } frame;  // xy: the colour's size in pixels
 layout(location = 0) out vec4 radiance;
 
-void main() { radiance = vec4(texture(sampler2D(fog_scattering, bilinear), fog_uv(gl_FragCoord.xy, frame.size.xy)).rgb, 0.0); }
+void main() { radiance = vec4(fog_images(gl_FragCoord.xy, frame.size.xy).scattering, 0.0); }

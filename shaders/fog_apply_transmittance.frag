@@ -7,4 +7,4 @@
 layout(set = 0, binding = 3) uniform Frame { vec4 size; } frame;  // xy: the colour's size in pixels
 layout(location = 0) out vec4 factor;
 
-void main() { factor = vec4(texture(sampler2D(fog_transmittance, bilinear), fog_uv(gl_FragCoord.xy, frame.size.xy)).rgb, 1.0); }
+void main() { factor = vec4(fog_images(gl_FragCoord.xy, frame.size.xy).transmittance, 1.0); }

@@ -67,10 +67,12 @@ AirlightGeometry<Real> airlight_geometry(const std::array<Real, 3>& origin, cons
 }
 
 // ∫₀^length dt / (4π d(t)²): the isotropic airlight without extinction (Sun et al. 2005,
-// σt → 0): (atan((length − t_c)/h) + atan(t_c/h)) / (4π h).
+// σt → 0): (atan((length − t_c)/h) + atan(t_c/h)) / (4π h). The sum of the two atans is the
+// angle the segment subtends at the light, evaluated as one atan2(h·length, h² + t_c(t_c −
+// length)) — the two terms cancel in float when the light is far behind or ahead.
 template <typename Real>
 Real airlight_no_extinction(const AirlightGeometry<Real>& g, Real length) {
-  return (std::atan((length - g.t_c) / g.h) + std::atan(g.t_c / g.h)) * kInvFourPi<Real> / g.h;
+  return std::atan2(g.h * length, g.h * g.h + g.t_c * (g.t_c - length)) * kInvFourPi<Real> / g.h;
 }
 
 // Light travels t + d(t) to reach the camera via the point at t, a length that grows with

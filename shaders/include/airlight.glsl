@@ -23,9 +23,10 @@ AirlightGeometry airlight_geometry(vec3 origin, vec3 direction, vec3 light) {
   return AirlightGeometry(t_c, max(length(to_light - t_c * direction), AIRLIGHT_MIN_DISTANCE));
 }
 
-// ∫₀^len dt / (4π d(t)²) (Sun et al. 2005, σt → 0): (atan((len − t_c)/h) + atan(t_c/h)) / (4π h).
+// ∫₀^len dt / (4π d(t)²) (Sun et al. 2005, σt → 0): (atan((len − t_c)/h) + atan(t_c/h)) / (4π h),
+// the angle evaluated as one atan2 (no cancellation).
 float airlight_no_extinction(AirlightGeometry g, float len) {
-  return (atan((len - g.t_c) / g.h) + atan(g.t_c / g.h)) * INV_FOUR_PI / g.h;
+  return atan(g.h * len, g.h * g.h + g.t_c * (g.t_c - len)) * INV_FOUR_PI / g.h;
 }
 
 // Where the integrand has fallen below e^(−AIRLIGHT_CUTOFF) of its value at the camera.
