@@ -12,28 +12,12 @@
 // transmittance e^(−σt·D). D is the distance along the ray to the surface, or to the far
 // plane where nothing was drawn. Height fog and volumes are ignored (height_fog,
 // the froxel chain). Shader: shaders/analytic_fog.comp.
-#include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_passes.h"
 #include "passes/fog/pixel_fog.h"
 
 namespace volgraph {
 namespace {
-
-class AnalyticFogExecution final : public PassExecution {
- public:
-  void record(PassContext& c) override {
-    if (!dispatch_.prepared()) prepare(c);
-    dispatch_.record(c);
-  }
-
- private:
-  void prepare(PassContext& c) {
-    dispatch_.prepare(c, "analytic_fog.comp", {}, std::get<std::array<double, 3>>(c.param("ambient")));
-  }
-
-  fog::PixelFogDispatch dispatch_;
-};
 
 std::vector<ParamProblem> check_global_fog(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
   if (scene.media.fog) return {};
@@ -54,7 +38,7 @@ PassDecl analytic_fog_pass() {
   d.slots = fog::pixel_fog_slots();
   d.needs = feature_bit(SceneFeature::medium);
   d.check_scene = check_global_fog;
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new AnalyticFogExecution()); };
+  d.make_execution = fog::pixel_fog_execution("analytic_fog.comp", [](const PassContext& c) { return fog::PixelFogInputs{{}, fog::ambient_param(c)}; });
   return d;
 }
 

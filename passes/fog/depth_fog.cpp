@@ -5,7 +5,6 @@
 // depth), to the far plane where nothing was drawn. Not physically based: the fog has one
 // colour and ignores the scene's media and lights (it still needs a medium to run).
 // Shader: shaders/depth_fog.comp (f from shaders/include/media.glsl).
-#include "graph/execute/pass_execution.h"
 #include "passes/fog/fog_passes.h"
 #include "passes/fog/pixel_fog.h"
 
@@ -18,27 +17,15 @@ int32_t variant_code(std::string_view variant) {
   return 1;  // exponential
 }
 
-class DepthFogExecution final : public PassExecution {
- public:
-  void record(PassContext& c) override {
-    if (!dispatch_.prepared()) prepare(c);
-    dispatch_.record(c);
-  }
-
- private:
-  void prepare(PassContext& c) {
-    const auto color = std::get<std::array<double, 3>>(c.param("color"));
-    const struct {
-      float fog[4];
-      float color[4];
-    } params{{float(std::get<double>(c.param("start"))), float(std::get<double>(c.param("end"))),
-              float(std::get<double>(c.param("density"))), float(variant_code(c.variant()))},
-             {float(color[0]), float(color[1]), float(color[2]), 0}};
-    dispatch_.prepare(c, "depth_fog.comp", std::as_bytes(std::span(&params, 1)));
-  }
-
-  fog::PixelFogDispatch dispatch_;
-};
+// The shader's Params block.
+fog::PixelFogInputs depth_fog_inputs(const PassContext& c) {
+  const auto color = std::get<std::array<double, 3>>(c.param("color"));
+  const float params[8] = {float(std::get<double>(c.param("start"))), float(std::get<double>(c.param("end"))),
+                           float(std::get<double>(c.param("density"))), float(variant_code(c.variant())),
+                           float(color[0]), float(color[1]), float(color[2]), 0};
+  const auto bytes = std::as_bytes(std::span(params));
+  return {{bytes.begin(), bytes.end()}, {0, 0, 0}};
+}
 
 }  // namespace
 
@@ -60,7 +47,7 @@ PassDecl depth_fog_pass() {
   };
   d.slots = fog::pixel_fog_slots();
   d.needs = feature_bit(SceneFeature::medium);
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new DepthFogExecution()); };
+  d.make_execution = fog::pixel_fog_execution("depth_fog.comp", depth_fog_inputs);
   return d;
 }
 

@@ -10,28 +10,12 @@
 // shadow, and the sun's light is not dimmed by the fog above the point (the reference
 // dims it). Exact when those hold. Other media of the scene are ignored; pixels hitting
 // nothing integrate to the camera's far plane. Shader: shaders/height_fog.comp.
-#include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_passes.h"
 #include "passes/fog/pixel_fog.h"
 
 namespace volgraph {
 namespace {
-
-class HeightFogExecution final : public PassExecution {
- public:
-  void record(PassContext& c) override {
-    if (!dispatch_.prepared()) prepare(c);
-    dispatch_.record(c);
-  }
-
- private:
-  void prepare(PassContext& c) {
-    dispatch_.prepare(c, "height_fog.comp", {}, std::get<std::array<double, 3>>(c.param("ambient")));
-  }
-
-  fog::PixelFogDispatch dispatch_;
-};
 
 std::vector<ParamProblem> check_height_fog(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
   if (scene.media.height_fog) return {};
@@ -52,7 +36,7 @@ PassDecl height_fog_pass() {
   d.slots = fog::pixel_fog_slots();
   d.needs = feature_bit(SceneFeature::medium);
   d.check_scene = check_height_fog;
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new HeightFogExecution()); };
+  d.make_execution = fog::pixel_fog_execution("height_fog.comp", [](const PassContext& c) { return fog::PixelFogInputs{{}, fog::ambient_param(c)}; });
   return d;
 }
 

@@ -14,24 +14,24 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/pass_decl.h"
 #include "graph/scene/scene.h"
-#include "passes/shading/programs.h"
 
 namespace volgraph::fog {
 
 std::vector<SlotDecl> pixel_fog_slots();
 
-class PixelFogDispatch {
- public:
-  // `params`: the bytes of the shader's Params block (binding 5; empty: it has none); `ambient`: the
-  // radiance the media scatter uniformly (the frame block's ambient).
-  void prepare(PassContext& c, const std::string& shader, std::span<const std::byte> params, const Vec3& ambient = {0, 0, 0});
-  bool prepared() const { return bool(program_.pipeline); }
-  void record(PassContext& c) const;
-
- private:
-  shading::ComputeProgram program_;
-  rhi::BufferId frame_;
-  rhi::BindGroupId group_;
+// What a technique hands its shader: the bytes of its Params block (binding 5; empty: it
+// has none) and the radiance the media scatter uniformly (the frame block's ambient).
+struct PixelFogInputs {
+  std::vector<std::byte> params;
+  Vec3 ambient{0, 0, 0};
 };
+using PixelFogInputsOf = PixelFogInputs (*)(const PassContext& c);
+
+// The technique's execution: `shader` dispatched over the two images, with the inputs
+// `inputs_of` gives on the first frame.
+MakeExecution pixel_fog_execution(std::string shader, PixelFogInputsOf inputs_of);
+
+// The ambient parameter's value, for techniques that declare one.
+Vec3 ambient_param(const PassContext& c);
 
 }  // namespace volgraph::fog
