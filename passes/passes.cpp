@@ -16,6 +16,9 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(froxel_apply_pass());
   registry.add(fog_apply_pass());
   registry.add(raymarch_fog_pass());
+  registry.add(depth_fog_pass());
+  registry.add(height_fog_pass());
+  registry.add(analytic_fog_pass());
 }
 
 }  // namespace volgraph

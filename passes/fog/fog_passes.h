@@ -11,5 +11,8 @@ PassDecl scatter_integrate_pass();
 PassDecl froxel_apply_pass();
 PassDecl fog_apply_pass();
 PassDecl raymarch_fog_pass();
+PassDecl depth_fog_pass();
+PassDecl height_fog_pass();
+PassDecl analytic_fog_pass();
 
 }  // namespace volgraph

@@ -36,6 +36,15 @@ Real transmittance(Real sigma_t, Real distance) {
   return std::exp(-std::min(sigma_t * distance, Real(1e30)));
 }
 
+// ∫₀^length e^(−σt·s) ds = (1 − e^(−σt·length))/σt, stable as σt → 0 (→ length): the
+// radiance per unit source of a source constant along the ray (a directional light in
+// homogeneous fog); with the unit-density optical depth of height fog as `length`, that
+// of a source proportional to the density.
+template <typename Real>
+Real attenuated_length(Real sigma_t, Real length) {
+  return length * one_minus_exp_over_x(sigma_t * length);
+}
+
 // One channel of a front-to-back integration: radiance gathered so far and the
 // transmittance from the eye to the current depth.
 template <typename Real>

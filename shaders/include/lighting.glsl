@@ -13,6 +13,13 @@ struct Light {
   vec4 power_cos_inner;      // rgb irradiance (directional, W/m²) or intensity (point, spot, W/sr); w cos(inner cone)
 };
 
+// A spot light's smooth falloff between its outer and inner cones for light leaving it
+// along `travel` (unit); 1 for other lights.
+float spot_cone(Light light, vec3 travel) {
+  if (int(light.position_type.w) != LIGHT_SPOT) return 1.0;
+  return smoothstep(light.direction_cos_outer.w, light.power_cos_inner.w, dot(travel, light.direction_cos_outer.xyz));
+}
+
 // What one light delivers at `p`, unshadowed: the irradiance E on a surface facing it
 // (directional: E; point and spot: I/d², spot with a smooth falloff between the inner
 // and outer cones), and `travel` the unit direction its light travels at p.
@@ -25,11 +32,7 @@ vec3 light_arriving(Light light, vec3 p, out vec3 travel) {
   const vec3 from_light = p - light.position_type.xyz;
   const float d2 = max(dot(from_light, from_light), 1e-12);
   travel = from_light * inversesqrt(d2);
-  float cone = 1.0;
-  if (type == LIGHT_SPOT) {
-    cone = smoothstep(light.direction_cos_outer.w, light.power_cos_inner.w, dot(travel, light.direction_cos_outer.xyz));
-  }
-  return light.power_cos_inner.rgb * (cone / d2);
+  return light.power_cos_inner.rgb * (spot_cone(light, travel) / d2);
 }
 
 // Irradiance on a surface at `p` with normal `n` from one light, unshadowed: E·cos θ.

@@ -19,6 +19,9 @@ vec3 one_minus_exp_over_x(vec3 x) {
 
 vec3 transmittance(vec3 sigma_t, float distance) { return exp(-min(sigma_t * distance, vec3(1e30))); }
 
+// ∫₀^len e^(−σt·s) ds = (1 − e^(−σt·len))/σt, stable as σt → 0 (→ len).
+vec3 attenuated_length(vec3 sigma_t, float len) { return len * one_minus_exp_over_x(sigma_t * len); }
+
 // Wronski 2014 (eq. 14.15).
 void integrate_wronski(inout vec3 radiance, inout vec3 transmittance_so_far, vec3 in_scatter, vec3 sigma_t, float dz) {
   radiance += transmittance_so_far * in_scatter * dz;

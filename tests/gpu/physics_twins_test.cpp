@@ -1,11 +1,14 @@
-// The shared physics includes (shaders/include/phase.glsl, media.glsl) on lavapipe, on each backend,
-// against their CPU twins in float (passes/shading/phase.h, media.h), over a table that
+// The shared physics includes (shaders/include/phase.glsl, media.glsl, airlight.glsl) on lavapipe, on each backend,
+// against their CPU twins in float (passes/shading/phase.h, media.h, airlight.h), over a table that
 // covers the traps (g → ±1, x → 0, dense and empty media, huge distances): relative
 // error ≤ 2e-5 (GLSL lets exp be off by 3 + 2|x| ULP; our twins use the same formulas).
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
+#include "passes/shading/airlight.h"
 #include "passes/shading/media.h"
 #include "passes/shading/phase.h"
 #include "graph/rhi/spirv_reflect.h"
@@ -16,9 +19,9 @@ namespace volgraph::testing {
 namespace {
 
 struct Case {
-  float g, cos_theta, unused0 = 0, unused1 = 0;
+  float g, cos_theta, t_c, h;
   float x, sigma_t, dz, falloff;
-  float origin_y, direction_y, unused2 = 0, unused3 = 0;
+  float origin_y, direction_y, length, air_sigma_t;
 };
 
 std::vector<Case> cases() {
@@ -29,12 +32,17 @@ std::vector<Case> cases() {
   const float dzs[] = {1e-3f, 0.25f, 3.0f, 1e3f, 1e5f};
   const float falloffs[] = {1e-6f, 0.05f, 0.5f, 3.0f};
   const float directions[] = {-1.0f, -0.3f, 0.0f, 0.2f, 1.0f};
+  // Airlight geometry (t_c, h, length, σt), with σt·(t + d) ≤ ~10 so exp's ULPs stay small.
+  const float t_cs[] = {-3.0f, 0.0f, 0.5f, 5.0f, 30.0f};
+  const float hs[] = {1e-4f, 0.05f, 0.5f, 3.0f};
+  const float lengths[] = {1.0f, 10.0f, 100.0f};
+  const float air_sigmas[] = {0.0f, 0.01f, 0.1f};
   std::vector<Case> out;
   size_t i = 0;
   for (float g : gs) {
     for (float c : cosines) {
-      out.push_back({g, c, 0, 0, xs[i % 10], sigmas[i % 6], dzs[i % 5], falloffs[i % 4], 2.0f - 0.5f * float(i % 7),
-                     directions[i % 5]});
+      out.push_back({g, c, t_cs[i % 5], hs[i % 4], xs[i % 10], sigmas[i % 6], dzs[i % 5], falloffs[i % 4], 2.0f - 0.5f * float(i % 7),
+                     directions[i % 5], lengths[i % 3], air_sigmas[(i / 3) % 3]});
       ++i;
     }
   }
@@ -42,14 +50,23 @@ std::vector<Case> cases() {
 }
 
 // The CPU twins' values for one case, in the shader's order.
-std::array<float, 8> expected(const Case& c) {
+std::array<float, 12> expected(const Case& c) {
   using namespace shading;
   ScatterAccumulator<float> a;
   integrate_hillaire(a, 1.0f, c.sigma_t, c.dz);
+  const AirlightGeometry<float> air{c.t_c, c.h};
   return {phase_hg(c.g, c.cos_theta), phase_schlick(schlick_k(c.g), c.cos_theta), phase_dual_hg(c.g, -0.5f * c.g, 0.7f, c.cos_theta),
           phase_rayleigh(c.cos_theta), one_minus_exp_over_x(c.x), a.radiance, a.transmittance,
-          height_fog_optical_depth(c.sigma_t, c.falloff, 0.0f, c.origin_y, c.direction_y, c.dz)};
+          height_fog_optical_depth(c.sigma_t, c.falloff, 0.0f, c.origin_y, c.direction_y, c.dz),
+          airlight(air, c.length, c.air_sigma_t, std::clamp(c.g, -0.9f, 0.9f)), airlight_no_extinction(air, c.length),
+          attenuated_length(c.sigma_t, c.dz), 0.0f};
 }
+
+// The airlight's two columns get 1e-4: lavapipe's atan is off by up to ~2e-5 relative
+// (Vulkan allows atan 4096 ULP), and the quadrature's panel width is a difference of two
+// logs (asinh) that loses ~|w|·ε relative where the segment subtends a small angle far from
+// the light. Measured: printed by the test.
+float tolerance(size_t column) { return column == 8 || column == 9 ? 1e-4f : 2e-5f; }
 
 class PhysicsTwins : public OnEachBackend<> {
  protected:
@@ -61,7 +78,7 @@ TEST_P(PhysicsTwins, ShadersMatchTheirCpuTwins) {
   {
     rhi::Device& device = this->device();
     const std::vector<Case> table = cases();
-    const uint64_t in_bytes = table.size() * sizeof(Case), out_bytes = table.size() * 32;
+    const uint64_t in_bytes = table.size() * sizeof(Case), out_bytes = table.size() * 48;
     const BufferId input = device.create_buffer({"cases", in_bytes, buffer_usage::storage | buffer_usage::copy_dst});
     const BufferId output = device.create_buffer({"results", out_bytes, buffer_usage::storage | buffer_usage::copy_src});
     const BufferId readback = device.create_buffer({"readback", out_bytes, buffer_usage::copy_dst});
@@ -92,16 +109,19 @@ TEST_P(PhysicsTwins, ShadersMatchTheirCpuTwins) {
     const std::vector<std::byte> bytes = device.read_buffer(readback);
     const auto* results = reinterpret_cast<const float*>(bytes.data());
 
-    const char* names[] = {"hg", "schlick", "dual hg", "rayleigh", "1-exp/x", "hillaire L", "hillaire T", "height depth"};
+    const char* names[] = {"hg", "schlick", "dual hg", "rayleigh", "1-exp/x", "hillaire L", "hillaire T", "height depth", "airlight", "airlight σt=0", "attenuated length", "unused"};
+    float worst_airlight = 0;
     for (size_t i = 0; i < table.size(); ++i) {
-      const std::array<float, 8> want = expected(table[i]);
-      for (size_t k = 0; k < 8; ++k) {
-        const float got = results[8 * i + k];
+      const std::array<float, 12> want = expected(table[i]);
+      for (size_t k = 0; k < 12; ++k) {
+        const float got = results[12 * i + k];
         ASSERT_TRUE(std::isfinite(got)) << names[k] << " case " << i;
-        EXPECT_NEAR(got, want[k], 2e-5f * std::abs(want[k]) + 1e-30f) << names[k] << " case " << i << " g " << table[i].g
+        if (k == 8 || k == 9) worst_airlight = std::max(worst_airlight, std::abs(got - want[k]) / (std::abs(want[k]) + 1e-30f));
+        EXPECT_NEAR(got, want[k], tolerance(k) * std::abs(want[k]) + 1e-30f) << names[k] << " case " << i << " g " << table[i].g
                                                                      << " cos " << table[i].cos_theta << " x " << table[i].x;
       }
     }
+    std::printf("airlight GPU vs CPU twin: %.3g relative at most\n", worst_airlight);
   }
 }
 

@@ -1,0 +1,45 @@
+// analytic_fog: single scattering in the scene's global homogeneous fog, without shadows,
+// per pixel in closed form or by a short fixed quadrature:
+// - point lights: the airlight of Sun, Ramamoorthi, Narasimhan, Nayar 2005 with extinction
+//   and HG phase, σs·I·A (shaders/include/airlight.glsl ↔ passes/shading/airlight.h:
+//   composite Gauss–Legendre, relative error ≤ 3e-5 in float where measured; the ray's
+//   distance to the light is clamped to 1e-4 m, so a light on the ray stays finite);
+// - spot lights: treated as point lights, weighted by their cone's falloff toward the ray's
+//   point nearest the light (clamped to the segment) — exact only when the whole segment
+//   sees the same part of the cone;
+// - directional lights: constant along the ray, σs·p_HG(θ)·E·(1 − e^(−σt·D))/σt;
+// - emission and ambient likewise: (emission + σs·L_ambient)·(1 − e^(−σt·D))/σt;
+// transmittance e^(−σt·D). D is the distance along the ray to the surface, or to the far
+// plane where nothing was drawn. Height fog and volumes are ignored (height_fog,
+// the froxel chain). Shader: shaders/analytic_fog.comp.
+#include "graph/scene/scene.h"
+#include "passes/fog/fog_passes.h"
+#include "passes/fog/pixel_fog.h"
+
+namespace volgraph {
+namespace {
+
+std::vector<ParamProblem> check_global_fog(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
+  if (scene.media.fog) return {};
+  return {{"", "analytic_fog renders the scene's global media.fog, and the scene has none"}};
+}
+
+}  // namespace
+
+PassDecl analytic_fog_pass() {
+  PassDecl d;
+  d.name = "analytic_fog";
+  d.kind = PassKind::compute;
+  d.doc = "Single scattering of point, spot and directional lights in homogeneous global fog, unshadowed (Sun et al. 2005 airlight).";
+  d.variants = {{"airlight", "point and spot lights by the airlight integral with extinction; directional lights in closed form"}};
+  d.params = {
+      param_vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the fog scatters"),
+  };
+  d.slots = fog::pixel_fog_slots();
+  d.needs = feature_bit(SceneFeature::medium);
+  d.check_scene = check_global_fog;
+  d.make_execution = fog::pixel_fog_execution("analytic_fog.comp", [](const PassContext& c) { return fog::PixelFogInputs{{}, fog::ambient_param(c)}; });
+  return d;
+}
+
+}  // namespace volgraph
