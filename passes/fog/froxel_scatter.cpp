@@ -1,6 +1,7 @@
 // froxel_scatter (Wronski 2014, Hillaire 2015): per froxel, the light its medium scatters
-// toward the camera per metre — σs·(Σ_lights p(θ)·E·V + L_ambient) + emission — with the
-// phase function as the variant and V from the shadow map when one is wired.
+// toward the camera per metre — σs·(Σ_lights p(θ)·E·V·T + L_ambient) + emission — with the
+// phase function as the variant, V from the shadow map when one is wired, and T the media's
+// transmittance toward the light by a march of `shadow_steps` (volumetric self-shadowing).
 // Shaders: shaders/froxel_scatter.comp, froxel_scatter_shadowed.comp
 // (shaders/include/froxel_scatter_body.glsl).
 #include "graph/execute/pass_execution.h"
@@ -48,8 +49,10 @@ class FroxelScatterExecution final : public PassExecution {
     struct {
       int32_t phase[4];
       float lobes[4];
+      float volumetric[4];
     } params{{phase_code(c.variant()), 0, 0, 0},
-             {float(std::get<double>(c.param("g_back"))), float(std::get<double>(c.param("w_forward"))), 0, 0}};
+             {float(std::get<double>(c.param("g_back"))), float(std::get<double>(c.param("w_forward"))), 0, 0},
+             {float(std::get<int64_t>(c.param("shadow_steps"))), float(std::get<double>(c.param("shadow_distance"))), 0, 0}};
     params_ = c.device.create_buffer({"froxel_scatter params", sizeof(params), buffer_usage::uniform | buffer_usage::copy_dst});
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const SamplerId nearest = c.device.create_sampler({"nearest"});
@@ -80,6 +83,8 @@ PassDecl froxel_scatter_pass() {
       param_number("g_back", -0.3, -0.999, 0.999, "", "dual_hg: the backward lobe's g"),
       param_number("w_forward", 0.7, 0, 1, "", "dual_hg: the forward lobe's weight"),
       param_bool("shadows", true, "sample the shadow map when one is wired"),
+      param_int("shadow_steps", 0, 0, 256, "", "volumetric self-shadowing: steps of the march through the media toward each light (0: off)"),
+      param_number("shadow_distance", 50, 0.01, 1e5, "m", "how far that march goes toward directional lights"),
   };
   SlotDecl in_scatter = slot_out_like("in_scatter", "media_scattering", Usage::storage_write, "scattered radiance per metre, rgb");
   d.slots = {

@@ -1,10 +1,12 @@
 // froxel_scatter's body (Wronski 2014, Hillaire 2015): per froxel, the light scattered
-// toward the camera per metre, S = σs·(Σ_lights p(θ)·E·V + L_ambient) + emission
+// toward the camera per metre, S = σs·(Σ_lights p(θ)·E·V·T_media + L_ambient) + emission, T_media
+// the media's transmittance toward the light (a march, light_transmittance.glsl; 1 when off)
 // (DESIGN.md units). The including shader defines `float light_visibility(int light,
 // vec3 p)` first (1 when unshadowed).
 #ifndef VOLGRAPH_FROXEL_SCATTER_BODY_GLSL
 #define VOLGRAPH_FROXEL_SCATTER_BODY_GLSL
 #include "fog_frame.glsl"
+#include "light_transmittance.glsl"
 #include "phase.glsl"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
@@ -17,6 +19,7 @@ layout(set = 0, binding = 4, rgba16f) uniform writeonly image3D in_scatter;
 layout(set = 0, binding = 5) uniform Params {
   ivec4 phase;  // x: 0 isotropic, 1 Rayleigh, 2 HG, 3 Schlick, 4 dual-lobe HG
   vec4 lobes;   // dual-lobe HG: x backward g, y forward weight
+  vec4 volumetric;  // volumetric self-shadowing: x steps toward each light (0: off), y distance (m)
 } params;
 
 const int PHASE_ISOTROPIC = 0;
@@ -51,7 +54,9 @@ void main() {
     for (int i = 0; i < frame.f.light_list.counts.x; ++i) {
       vec3 travel;
       const vec3 e = light_arriving(frame.f.light_list.lights[i], p, travel);
-      light += phase(scattering.a, dot(travel, to_camera)) * e * light_visibility(i, p);
+      const vec3 media_shadow = transmittance_to_light(frame.f.media, frame.f.light_list.lights[i], p, -travel,
+                                                       int(params.volumetric.x), params.volumetric.y, 0.5);
+      light += phase(scattering.a, dot(travel, to_camera)) * e * light_visibility(i, p) * media_shadow;
     }
     scattered = scattering.rgb * light;
   }
