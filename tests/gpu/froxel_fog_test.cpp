@@ -24,6 +24,7 @@
 #include "passes/passes.h"
 #include "passes/shading/camera.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/fog_scenes.h"
 
 namespace volgraph::testing {
 namespace {
@@ -215,13 +216,9 @@ TEST_P(FroxelFog, WithoutAMediumTheFogPassesAreCulledAndTheSceneIsUntouched) {
 // beside it stays; without, the box changes nothing.
 FogCase layer_under_box(bool box, int shadow_steps) {
   FogCase c;
-  c.camera = R"({ "position": [0, 1, 5], "target": [0, 1, -1], "fov_y_deg": 50, "near": 0.1, "far": 100 })";
-  const std::string layer = R"({ "shape": "box", "size": [20, 2, 4], "sigma_s": [0.5, 0.5, 0.5], "sigma_a": [0, 0, 0],
-                                 "transform": { "translate": [0, 1, -2] } })";
-  const std::string dense = R"(, { "shape": "box", "size": [10, 10, 40], "sigma_s": [0, 0, 0], "sigma_a": [0.1, 0.1, 0.1],
-                                   "transform": { "translate": [-5, 8, -2] } })";
-  c.media = R"({ "volumes": [ )" + layer + (box ? dense : "") + " ] }";
-  c.lights = R"([ { "type": "directional", "direction": [0, -1, 0], "irradiance": [3, 3, 3], "cast_shadows": false } ])";
+  c.camera = kCameraAtTheLayer;
+  c.media = layer_under_box_media(box);
+  c.lights = kLightFromAbove;
   c.scatter_params = R"({ "shadow_steps": )" + std::to_string(shadow_steps) + R"(, "shadow_distance": 20 })";
   c.grid = R"({ "slices": 64, "near": 0.1, "far": 20, "distribution": "linear", "jitter": false })";
   return c;

@@ -31,6 +31,7 @@
 #include "reference/image_render.h"
 #include "reference/renderer.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/fog_scenes.h"
 
 namespace volgraph::testing {
 namespace {
@@ -205,13 +206,9 @@ TEST_P(RaymarchFog, ConvergesToTheCpuReferenceAsStepsGrow) {
 // layer under it is lit through it.
 MarchCase shadow_case(bool box, int shadow_steps) {
   MarchCase c;
-  c.camera = R"({ "position": [0, 1, 5], "target": [0, 1, -1], "fov_y_deg": 50, "near": 0.1, "far": 100 })";
-  const std::string layer = R"({ "shape": "box", "size": [20, 2, 4], "sigma_s": [0.5, 0.5, 0.5], "sigma_a": [0, 0, 0],
-                                 "transform": { "translate": [0, 1, -2] } })";
-  const std::string dense = R"(, { "shape": "box", "size": [10, 10, 40], "sigma_s": [0, 0, 0], "sigma_a": [0.1, 0.1, 0.1],
-                                   "transform": { "translate": [-5, 8, -2] } })";
-  c.media = R"({ "volumes": [ )" + layer + (box ? dense : "") + " ] }";
-  c.lights = R"([ { "type": "directional", "direction": [0, -1, 0], "irradiance": [3, 3, 3], "cast_shadows": false } ])";
+  c.camera = kCameraAtTheLayer;
+  c.media = layer_under_box_media(box);
+  c.lights = kLightFromAbove;
   c.march = R"({ "steps": 32, "shadow_steps": )" + std::to_string(shadow_steps) + R"(, "max_distance": 30, "shadow_distance": 20 })";
   return c;
 }

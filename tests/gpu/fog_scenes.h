@@ -1,0 +1,21 @@
+// Scene fragments (JSON text) shared by the fog technique tests.
+#pragma once
+
+#include <string>
+
+namespace volgraph::testing {
+
+// A fog layer (y 0–2, σs 0.5) and, with `box`, a dense absorber over x < 0 above it
+// (σa 0.1, 10 m tall: transmittance e^(−1) straight up), lit from straight above.
+inline std::string layer_under_box_media(bool box) {
+  const std::string layer = R"({ "shape": "box", "size": [20, 2, 4], "sigma_s": [0.5, 0.5, 0.5], "sigma_a": [0, 0, 0],
+                                 "transform": { "translate": [0, 1, -2] } })";
+  const std::string dense = R"(, { "shape": "box", "size": [10, 10, 40], "sigma_s": [0, 0, 0], "sigma_a": [0.1, 0.1, 0.1],
+                                   "transform": { "translate": [-5, 8, -2] } })";
+  return R"({ "volumes": [ )" + layer + (box ? dense : "") + " ] }";
+}
+inline const char* kLightFromAbove =
+    R"([ { "type": "directional", "direction": [0, -1, 0], "irradiance": [3, 3, 3], "cast_shadows": false } ])";
+inline const char* kCameraAtTheLayer = R"({ "position": [0, 1, 5], "target": [0, 1, -1], "fov_y_deg": 50, "near": 0.1, "far": 100 })";
+
+}  // namespace volgraph::testing
