@@ -121,7 +121,8 @@ void GraphBuilder::mark_output(ResourceVersion what) {
 
 Graph GraphBuilder::finish() { return std::move(graph_); }
 
-ResourceDesc resolve_slot(const PassDecl&, const SlotDecl& slot, Extent output_size, int64_t size_param, int64_t divisor) {
+ResourceDesc resolve_slot(const PassDecl&, const SlotDecl& slot, Extent output_size, int64_t size_param, int64_t divisor,
+                          int64_t depth) {
   ResourceDesc d;
   d.kind = slot.kind;
   d.format = slot.format;
@@ -143,7 +144,8 @@ ResourceDesc resolve_slot(const PassDecl&, const SlotDecl& slot, Extent output_s
     }
     case SizeSpec::Mode::square_param: {
       const uint32_t side = static_cast<uint32_t>(std::max<int64_t>(1, size_param));
-      d.extent = {side, side, std::max<uint32_t>(1, slot.size.absolute.depth)};
+      const int64_t layers = slot.size.depth_param.empty() ? int64_t{slot.size.absolute.depth} : depth;
+      d.extent = {side, side, uint32_t(std::max<int64_t>(1, layers))};
       break;
     }
   }

@@ -87,8 +87,9 @@ class GraphBuilder {
 // The resource desc an output slot of `decl` gets in a frame of `output_size`
 // (size_param: the value of a square_param size, 0 when unused).
 // `size_param`: the value of the slot's size parameter (SizeSpec::param), `divisor`: of
-// its divisor parameter (SizeSpec::divisor_param), when it has them.
+// its divisor parameter (SizeSpec::divisor_param), `depth`: of its depth parameter
+// (SizeSpec::depth_param), when it has them.
 ResourceDesc resolve_slot(const PassDecl& decl, const SlotDecl& slot, Extent output_size, int64_t size_param,
-                          int64_t divisor = 1);
+                          int64_t divisor = 1, int64_t depth = 1);
 
 }  // namespace volgraph

@@ -81,6 +81,12 @@ SizeSpec SizeSpec::square_of(std::string param_name) {
   return s;
 }
 
+SizeSpec SizeSpec::square_layers_of(std::string side_param, std::string depth_param) {
+  SizeSpec s = square_of(std::move(side_param));
+  s.depth_param = std::move(depth_param);
+  return s;
+}
+
 SizeSpec SizeSpec::bytes(uint64_t n) {
   SizeSpec s;
   s.mode = Mode::absolute;

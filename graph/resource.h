@@ -59,6 +59,7 @@ struct SizeSpec {
   float scale_y = 1.0f;          // relative
   std::string param;             // square_param: the side; relative: the depth, when set
   std::string divisor_param;     // relative: x and y are also divided by this parameter, when set
+  std::string depth_param;       // square_param: the depth (layers), when set
   // divisor_param a choice parameter: each value's divisor (full resolution 1, half 2)
   std::vector<std::pair<std::string, int64_t>> divisor_choices;
   uint64_t buffer_bytes = 0;     // buffers: absolute size in bytes
@@ -71,6 +72,8 @@ struct SizeSpec {
   // The output divided in x and y by the divisor `choices` gives choice parameter `param`'s value.
   static SizeSpec of_output_divided_by_choice(std::string param, std::vector<std::pair<std::string, int64_t>> choices);
   static SizeSpec square_of(std::string param_name);
+  // A volume: square slices of side `side_param`, `depth_param` of them (light-space layers).
+  static SizeSpec square_layers_of(std::string side_param, std::string depth_param);
   static SizeSpec bytes(uint64_t n);
 };
 

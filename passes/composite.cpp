@@ -26,12 +26,7 @@ class CompositeExecution final : public PassExecution {
       int32_t tone_map_op;
     } block{{size.width, size.height}, float(std::get<double>(c.param("exposure"))), int32_t(tone_map_of(c.variant()))};
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&block, 1)));
-    c.encoder.begin_compute_pass(c.graph_pass().name);
-    c.encoder.set_pipeline(program_.pipeline);
-    c.encoder.set_bind_group(0, group_);
-    const auto groups = program_.groups_for(size);
-    c.encoder.dispatch(groups[0], groups[1]);
-    c.encoder.end_compute_pass();
+    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_}, size);
   }
 
  private:

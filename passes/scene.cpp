@@ -84,22 +84,30 @@ class SceneExecution final : public PassExecution {
     const Scene& scene = *c.scene;
     // With a shadow map wired (and shadows on), its light is shadowed (set 2).
     const bool shadowed = c.bound("shadow_map") && c.bound("light_view") && std::get<bool>(c.param("shadows"));
+    const bool media_shadowed = shadowed && c.bound("media_shadow");
     RenderPipelineDesc pd;
     pd.label = "scene";
     pd.vertex_buffers = {shading::SceneGeometry::vertex_layout()};
     pd.colors = {{c.desc("color").format, BlendMode::replace}};
     pd.depth = {Format::d32_float, true, CompareFunction::less};
     pd.cull = CullMode::none;  // planes are seen from both sides
-    program_ = shading::create_render_program(c.device, pd, "scene.vert", shadowed ? "scene_shadowed.frag" : "scene.frag");
+    program_ = shading::create_render_program(c.device, pd, "scene.vert",
+                                              media_shadowed ? "scene_media_shadowed.frag"
+                                              : shadowed     ? "scene_shadowed.frag"
+                                                             : "scene.frag");
 
     frame_ = c.device.create_buffer({"scene frame", sizeof(FrameBlock), buffer_usage::uniform | buffer_usage::copy_dst});
     frame_group_ = c.device.create_bind_group({"scene frame", program_.layouts[0], {BindGroupEntry::of(0, frame_)}});
     geometry_ = std::make_unique<shading::SceneGeometry>(c.device, scene, program_.layout_descs[1], program_.layouts[1]);
     if (!shadowed) return;
-    shadow_group_ = c.device.create_bind_group({"scene shadow", program_.layouts[2],
-                                                {BindGroupEntry::of(0, c.view("shadow_map")),
-                                                 BindGroupEntry::of(1, c.device.create_sampler({"shadow nearest"})),
-                                                 BindGroupEntry::of(2, c.buffer("light_view"))}});
+    std::vector<BindGroupEntry> shadow = {BindGroupEntry::of(0, c.view("shadow_map")),
+                                          BindGroupEntry::of(1, c.device.create_sampler({"shadow nearest"})),
+                                          BindGroupEntry::of(2, c.buffer("light_view"))};
+    if (media_shadowed) {
+      shadow.push_back(BindGroupEntry::of(3, c.view("media_shadow")));
+      shadow.push_back(BindGroupEntry::of(4, c.device.create_sampler({"media shadow", Filter::linear})));
+    }
+    shadow_group_ = c.device.create_bind_group({"scene shadow", program_.layouts[2], shadow});
   }
 
   shading::RenderProgram program_;
@@ -116,7 +124,7 @@ PassDecl scene_pass() {
   d.name = "scene";
   d.kind = PassKind::graphics;
   d.doc = "Opaque surfaces, lit and shadowed, over the background; linear radiance and depth.";
-  d.variants = {{"lambert", "Lambertian reflection of every light, shadowed by the shadow map when wired"}};
+  d.variants = {{"lambert", "Lambertian reflection of every light, shadowed by the shadow map (and the media's opacity shadow map) when wired"}};
   d.params = {
       param_vec3("ambient", {0, 0, 0}, 0, 1e6, "W/m²", "uniform irradiance added to every surface (unshadowed)"),
       param_bool("shadows", true, "sample the shadow map when one is wired"),
@@ -128,6 +136,8 @@ PassDecl scene_pass() {
   d.slots = {
       slot_optional_in("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map"),
       slot_optional_in("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view"),
+      slot_optional_in("media_shadow", ResourceKind::texture3d, Usage::sampled,
+                       "opacity_shadow_map's optical depth over the same light view: the media dim that light"),
       color,
       slot_out("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float, SizeSpec::of_output(),
                "scene depth, for later passes (fog, translucency)"),

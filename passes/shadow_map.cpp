@@ -1,9 +1,11 @@
 // Shadow map: depth of the scene from one light. A directional light gets an orthographic
 // window fitted to the shadow receivers the camera sees (its frustum up to `distance`,
 // clipped to the scene's bounds), snapped to whole texels, with its depth range over the
-// whole scene so that every caster is drawn; a spot light gets a perspective projection
+// whole scene so that every caster is drawn (the scene's geometry and its local media
+// volumes, which volumetric shadows light through); a spot light gets a perspective projection
 // over its outer cone, near and far around the scene's bounds (passes/shading/shadow_fit.h).
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -52,26 +54,28 @@ class ShadowMapExecution final : public PassExecution {
   void record(PassContext& c) override {
     if (!program_.pipeline) prepare(c);
     const int64_t index = std::get<int64_t>(c.param("light"));
-    const bool casts = shadow_light_problem(*c.scene, index).empty() && !geometry_->objects().empty();
+    const std::optional<shading::Box> bounds = shadowed_bounds(c);
+    const bool casts = shadow_light_problem(*c.scene, index).empty() && bounds;
     shading::ShadowViewBlock block{};
     block.params[0] = float(std::get<double>(c.param("depth_bias")));
     block.params[1] = float(std::get<double>(c.param("pcf_radius")));
     block.params[3] = casts ? float(index) : -1.0f;  // −1: no light is shadowed
     block.mode[0] = c.variant() == "pcf" ? 1 : 0;
     if (casts) {
-      const shading::Box scene_bounds{geometry_->bounds_min(), geometry_->bounds_max()};
-      to_floats(light_view_projection(c, c.scene->lights[size_t(index)], scene_bounds), block.light_view_projection);
+      const shading::Mat4 view_projection = light_view_projection(c, c.scene->lights[size_t(index)], *bounds);
+      to_floats(view_projection, block.light_view_projection);
+      to_floats(shading::inverse(view_projection), block.clip_to_world);
     }
     const auto bytes = std::as_bytes(std::span(&block, 1));
     c.device.write_buffer(view_, 0, bytes);           // for this pass's vertex shader
     c.encoder.update_buffer(c.buffer("light_view"), 0, bytes);  // for the passes that sample the map
-    // Without a light to cast shadows (a pass kept by --no-cull) or anything to cast
-    // them, the map stays clear: nothing occludes anything.
+    // Without a light to cast shadows (a pass kept by --no-cull) or anything to cast or
+    // receive them, the map stays clear: nothing occludes anything.
     rhi::RenderPassDesc pass;
     pass.label = c.graph_pass().name;
     pass.depth = {c.view("depth"), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
-    if (casts) {
+    if (casts && !geometry_->objects().empty()) {
       c.encoder.set_pipeline(program_.pipeline);
       c.encoder.set_bind_group(0, view_group_);
       geometry_->draw(c.encoder, 1);
@@ -80,6 +84,13 @@ class ShadowMapExecution final : public PassExecution {
   }
 
  private:
+  // The geometry's box and the media volumes the light's view must hold.
+  std::optional<shading::Box> shadowed_bounds(const PassContext& c) const {
+    std::optional<shading::Box> geometry;
+    if (!geometry_->objects().empty()) geometry = shading::Box{geometry_->bounds_min(), geometry_->bounds_max()};
+    return shading::shadowed_bounds(geometry, c.scene->media);
+  }
+
   void prepare(PassContext& c) {
     using namespace rhi;
     RenderPipelineDesc pd;

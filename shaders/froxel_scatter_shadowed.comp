@@ -12,4 +12,6 @@ float light_visibility(int light, vec3 p) {
   return shadow_visibility(shadow_depth, shadow_sampler, shadow.view, p);
 }
 
+bool media_shadow_mapped(int light) { return false; }
+
 #include "include/froxel_scatter_body.glsl"

@@ -215,8 +215,11 @@ std::string size_text(const SlotDecl& s) {
       out = s.size.param + "²";
       break;
   }
-  if (s.kind == ResourceKind::texture3d) out += " × " + std::to_string(s.size.absolute.depth);
-  return out;
+  if (s.kind != ResourceKind::texture3d) return out;
+  std::string depth = std::to_string(s.size.absolute.depth);
+  if (s.size.mode == SizeSpec::Mode::relative && !s.size.param.empty()) depth = s.size.param;
+  if (s.size.mode == SizeSpec::Mode::square_param && !s.size.depth_param.empty()) depth = s.size.depth_param;
+  return out + " × " + depth;
 }
 
 int print_passes(const PassRegistry& registry) {

@@ -667,8 +667,9 @@ class Wiring {
 
   ResourceDesc output_desc(uint32_t p, const SlotDecl& slot) {
     const PassDecl& decl = *decls_[p];
-    int64_t side = 0, divisor = 1;
+    int64_t side = 0, divisor = 1, depth = 1;
     if (!slot.size.param.empty()) side = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.param))]);
+    if (!slot.size.depth_param.empty()) depth = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.depth_param))]);
     if (!slot.size.divisor_param.empty()) divisor = divisor_of(slot.size, params_[p][size_t(decl.param_index(slot.size.divisor_param))]);
     SlotDecl effective = slot;
     if (const OutputOverride* o = overrides_[p][size_t(decl.slot_index(slot.name))]) {
@@ -676,7 +677,7 @@ class Wiring {
       const auto it = sizes_resolved_.find({config_.passes[p].name, slot.name});
       if (it != sizes_resolved_.end()) effective.size = it->second;
     }
-    return resolve_slot(decl, effective, config_.output_size, side, divisor);
+    return resolve_slot(decl, effective, config_.output_size, side, divisor, depth);
   }
 
   const Config& config_;

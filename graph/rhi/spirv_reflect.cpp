@@ -30,6 +30,9 @@ constexpr uint32_t type_array = 28;          // §3.32.6
 constexpr uint32_t type_runtime_array = 29;  // §3.32.6
 constexpr uint32_t type_struct = 30;         // §3.32.6
 constexpr uint32_t type_pointer = 32;        // §3.32.6
+constexpr uint32_t function = 54;            // §3.32.9 Function Instructions
+constexpr uint32_t function_parameter = 55;  // §3.32.9
+constexpr uint32_t function_call = 57;       // §3.32.9
 constexpr uint32_t variable = 59;            // §3.32.8 Memory Instructions
 constexpr uint32_t load = 61;                // §3.32.8
 constexpr uint32_t sampled_image = 86;       // §3.32.10 Image Instructions
@@ -143,6 +146,12 @@ struct Module {
   std::unordered_map<uint32_t, std::pair<uint32_t, uint32_t>> sampled_images;  // result → image, sampler loads
   std::set<uint32_t> sampled_through;                                          // OpSampledImage results sampled
   std::set<uint32_t> filtered_variables;
+  // Textures and samplers handed to functions (by pointer): each parameter's function and
+  // position, and every call's arguments, to follow a parameter back to its variables.
+  uint32_t current_function = 0;
+  std::unordered_map<uint32_t, std::pair<uint32_t, size_t>> parameters;      // parameter → function, index
+  std::unordered_map<uint32_t, size_t> parameter_counts;                     // function → parameters so far
+  std::unordered_map<uint32_t, std::vector<std::vector<uint32_t>>> calls;    // function → each call's arguments
 };
 
 bool is_type_declaration(uint32_t opcode) {
@@ -199,6 +208,13 @@ void record(Module& module, const Instruction& instruction) {
     case op::member_decorate: record_member_decoration(module, instruction); return;
     case op::variable: module.variables.push_back(instruction); return;
     case op::load: module.loaded_from[operand(instruction, 1)] = operand(instruction, 2); return;  // Result, Pointer
+    case op::function: module.current_function = operand(instruction, 1); return;  // Result Type, Result, …
+    case op::function_parameter:  // Result Type, Result
+      module.parameters[operand(instruction, 1)] = {module.current_function, module.parameter_counts[module.current_function]++};
+      return;
+    case op::function_call:  // Result Type, Result, Function, Arguments…
+      module.calls[operand(instruction, 2)].emplace_back(instruction.operands.begin() + 3, instruction.operands.end());
+      return;
     case op::sampled_image:  // Result Type, Result, Image, Sampler
       module.sampled_images[operand(instruction, 1)] = {operand(instruction, 2), operand(instruction, 3)};
       return;
@@ -206,17 +222,33 @@ void record(Module& module, const Instruction& instruction) {
   }
 }
 
+// The variables a pointer may be: itself, or — a function's parameter — whatever every
+// call passes there, followed through nested calls.
+void add_variables_behind(Module& module, uint32_t pointer, std::set<uint32_t>& visited) {
+  if (!visited.insert(pointer).second) return;
+  const auto parameter = module.parameters.find(pointer);
+  if (parameter == module.parameters.end()) {
+    module.filtered_variables.insert(pointer);
+    return;
+  }
+  const auto [function, index] = parameter->second;
+  for (const std::vector<uint32_t>& arguments : module.calls[function]) {
+    if (index < arguments.size()) add_variables_behind(module, arguments[index], visited);
+  }
+}
+
 // The texture and sampler variables behind every sampled image some instruction samples.
 void find_filtered_variables(Module& module) {
-  auto variable_of = [&](uint32_t loaded) {
+  std::set<uint32_t> visited;
+  auto add_loaded = [&](uint32_t loaded) {
     const auto found = module.loaded_from.find(loaded);
-    return found == module.loaded_from.end() ? 0u : found->second;
+    if (found != module.loaded_from.end()) add_variables_behind(module, found->second, visited);
   };
   for (const uint32_t sampled : module.sampled_through) {
     const auto found = module.sampled_images.find(sampled);
     if (found == module.sampled_images.end()) continue;
-    module.filtered_variables.insert(variable_of(found->second.first));
-    module.filtered_variables.insert(variable_of(found->second.second));
+    add_loaded(found->second.first);
+    add_loaded(found->second.second);
   }
 }
 

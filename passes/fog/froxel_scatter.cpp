@@ -1,9 +1,12 @@
 // froxel_scatter (Wronski 2014, Hillaire 2015): per froxel, the light its medium scatters
 // toward the camera per metre — σs·(Σ_lights p(θ)·E·V·T + L_ambient) + emission — with the
 // phase function as the variant, V from the shadow map when one is wired, and T the media's
-// transmittance toward the light by a march of `shadow_steps` (volumetric self-shadowing).
-// Shaders: shaders/froxel_scatter.comp, froxel_scatter_shadowed.comp
-// (shaders/include/froxel_scatter_body.glsl).
+// transmittance toward the light (volumetric self-shadowing), by either of two methods:
+// a march of `shadow_steps` through the media from every froxel toward every light, or,
+// for the shadow map's light when an opacity_shadow_map is wired to `media_shadow`, one
+// lookup in that map (the other lights keep the march).
+// Shaders: shaders/froxel_scatter.comp, froxel_scatter_shadowed.comp,
+// froxel_scatter_media_shadowed.comp (shaders/include/froxel_scatter_body.glsl).
 #include "graph/execute/pass_execution.h"
 #include "passes/fog/fog_passes.h"
 #include "passes/shading/programs.h"
@@ -32,20 +35,17 @@ class FroxelScatterExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
     if (!program_.pipeline) prepare(c);
-    c.encoder.begin_compute_pass(c.graph_pass().name);
-    c.encoder.set_pipeline(program_.pipeline);
-    c.encoder.set_bind_group(0, group_);
-    if (shadow_group_) c.encoder.set_bind_group(1, shadow_group_);
-    const auto groups = program_.groups_for(c.desc("in_scatter").extent);
-    c.encoder.dispatch(groups[0], groups[1], groups[2]);
-    c.encoder.end_compute_pass();
+    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_, shadow_group_}, c.desc("in_scatter").extent);
   }
 
  private:
   void prepare(PassContext& c) {
     using namespace rhi;
     const bool shadowed = c.bound("shadow_map") && c.bound("light_view") && std::get<bool>(c.param("shadows"));
-    program_ = shading::create_compute_program(c.device, shadowed ? "froxel_scatter_shadowed.comp" : "froxel_scatter.comp");
+    const bool media_shadowed = shadowed && c.bound("media_shadow");
+    program_ = shading::create_compute_program(c.device, media_shadowed ? "froxel_scatter_media_shadowed.comp"
+                                                         : shadowed     ? "froxel_scatter_shadowed.comp"
+                                                                        : "froxel_scatter.comp");
     struct {
       int32_t phase[4];
       float lobes[4];
@@ -61,9 +61,13 @@ class FroxelScatterExecution final : public PassExecution {
                                           BindGroupEntry::of(2, c.view("media_emission")), BindGroupEntry::of(3, nearest),
                                           BindGroupEntry::of(4, c.view("in_scatter")), BindGroupEntry::of(5, params_)}});
     if (!shadowed) return;
-    shadow_group_ = c.device.create_bind_group({"froxel_scatter shadow", program_.layouts[1],
-                                                {BindGroupEntry::of(0, c.view("shadow_map")), BindGroupEntry::of(1, nearest),
-                                                 BindGroupEntry::of(2, c.buffer("light_view"))}});
+    std::vector<BindGroupEntry> shadow = {BindGroupEntry::of(0, c.view("shadow_map")), BindGroupEntry::of(1, nearest),
+                                          BindGroupEntry::of(2, c.buffer("light_view"))};
+    if (media_shadowed) {
+      shadow.push_back(BindGroupEntry::of(3, c.view("media_shadow")));
+      shadow.push_back(BindGroupEntry::of(4, c.device.create_sampler({"media shadow", Filter::linear})));
+    }
+    shadow_group_ = c.device.create_bind_group({"froxel_scatter shadow", program_.layouts[1], shadow});
   }
 
   shading::ComputeProgram program_;
@@ -83,7 +87,7 @@ PassDecl froxel_scatter_pass() {
       param_number("g_back", -0.3, -0.999, 0.999, "", "dual_hg: the backward lobe's g"),
       param_number("w_forward", 0.7, 0, 1, "", "dual_hg: the forward lobe's weight"),
       param_bool("shadows", true, "sample the shadow map when one is wired"),
-      param_int("shadow_steps", 0, 0, 256, "", "volumetric self-shadowing: steps of the march through the media toward each light (0: off)"),
+      param_int("shadow_steps", 0, 0, 256, "", "volumetric self-shadowing: steps of the march through the media toward each light not covered by media_shadow (0: off)"),
       param_number("shadow_distance", 50, 0.01, 1e5, "m", "how far that march goes toward directional lights"),
   };
   SlotDecl in_scatter = slot_out_like("in_scatter", "media_scattering", Usage::storage_write, "scattered radiance per metre, rgb");
@@ -93,6 +97,8 @@ PassDecl froxel_scatter_pass() {
       slot_in("frame", ResourceKind::buffer, Usage::uniform_read, "froxel_voxelize's frame block"),
       slot_optional_in("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map"),
       slot_optional_in("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view"),
+      slot_optional_in("media_shadow", ResourceKind::texture3d, Usage::sampled,
+                       "opacity_shadow_map's optical depth over the same light view (with shadow_map and light_view)"),
       in_scatter,
   };
   d.slots[3].format = Format::d32_float;

@@ -20,12 +20,7 @@ class FroxelVoxelizeExecution final : public PassExecution {
     const auto bytes = std::as_bytes(std::span(&frame, 1));
     c.device.write_buffer(own_frame_, 0, bytes);           // for this pass's shader
     c.encoder.update_buffer(c.buffer("frame"), 0, bytes);  // for the fog passes after it
-    c.encoder.begin_compute_pass(c.graph_pass().name);
-    c.encoder.set_pipeline(program_.pipeline);
-    c.encoder.set_bind_group(0, group_);
-    const auto groups = program_.groups_for(c.desc("media_scattering").extent);
-    c.encoder.dispatch(groups[0], groups[1], groups[2]);
-    c.encoder.end_compute_pass();
+    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_}, c.desc("media_scattering").extent);
   }
 
  private:

@@ -14,12 +14,6 @@ SlotDecl fog_image(std::string name, std::string doc) {
   return s;
 }
 
-rhi::BufferId uniform_buffer(PassContext& c, const std::string& label, std::span<const std::byte> bytes) {
-  const rhi::BufferId b = c.device.create_buffer({label, bytes.size(), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
-  c.device.write_buffer(b, 0, bytes);
-  return b;
-}
-
 }  // namespace
 
 std::vector<SlotDecl> pixel_fog_slots() {
@@ -37,12 +31,7 @@ class PixelFogExecution final : public PassExecution {
 
   void record(PassContext& c) override {
     if (!program_.pipeline) prepare(c);
-    c.encoder.begin_compute_pass(c.graph_pass().name);
-    c.encoder.set_pipeline(program_.pipeline);
-    c.encoder.set_bind_group(0, group_);
-    const auto groups = program_.groups_for(c.desc("fog_scattering").extent);
-    c.encoder.dispatch(groups[0], groups[1]);
-    c.encoder.end_compute_pass();
+    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_}, c.desc("fog_scattering").extent);
   }
 
  private:
@@ -58,10 +47,10 @@ class PixelFogExecution final : public PassExecution {
     frame_inputs.jitter = false;
     const GpuFogFrame frame = make_fog_frame(c, frame_inputs);
     std::vector<BindGroupEntry> entries = {
-        BindGroupEntry::of(0, uniform_buffer(c, name + " frame", std::as_bytes(std::span(&frame, 1)))),
+        BindGroupEntry::of(0, shading::create_uniform_block(c.device, name + " frame", frame)),
         BindGroupEntry::of(1, c.view("depth")), BindGroupEntry::of(2, c.device.create_sampler({"nearest"})),
         BindGroupEntry::of(3, c.view("fog_scattering")), BindGroupEntry::of(4, c.view("fog_transmittance"))};
-    if (!in.params.empty()) entries.push_back(BindGroupEntry::of(5, uniform_buffer(c, name + " params", in.params)));
+    if (!in.params.empty()) entries.push_back(BindGroupEntry::of(5, shading::create_uniform_buffer(c.device, name + " params", in.params)));
     group_ = c.device.create_bind_group({name, program_.layouts[0], entries});
   }
 

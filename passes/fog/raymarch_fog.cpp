@@ -32,13 +32,7 @@ class RaymarchFogExecution final : public PassExecution {
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     const GpuRaymarchParams params = march_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
-    c.encoder.begin_compute_pass(c.graph_pass().name);
-    c.encoder.set_pipeline(program_.pipeline);
-    c.encoder.set_bind_group(0, group_);
-    if (shadow_group_) c.encoder.set_bind_group(1, shadow_group_);
-    const auto groups = program_.groups_for(c.desc("fog_scattering").extent);
-    c.encoder.dispatch(groups[0], groups[1]);
-    c.encoder.end_compute_pass();
+    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_, shadow_group_}, c.desc("fog_scattering").extent);
   }
 
  private:

@@ -15,14 +15,9 @@ class ScatterIntegrateExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
     if (!program_.pipeline) prepare(c);
-    c.encoder.begin_compute_pass(c.graph_pass().name);
-    c.encoder.set_pipeline(program_.pipeline);
-    c.encoder.set_bind_group(0, group_);
     Extent columns = c.desc("in_scatter").extent;
-    columns.depth = 1;
-    const auto groups = program_.groups_for(columns);
-    c.encoder.dispatch(groups[0], groups[1]);
-    c.encoder.end_compute_pass();
+    columns.depth = 1;  // an invocation walks its column front to back
+    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_}, columns);
   }
 
  private:

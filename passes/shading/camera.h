@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "graph/scene/scene.h"
 
@@ -169,6 +170,36 @@ inline Mat4 inverse_affine(const Mat4& m) {
     for (int col = 0; col < 3; ++col) r(row, col) = inverse_transpose(col, row);
   }
   for (int row = 0; row < 3; ++row) r(row, 3) = -(r(row, 0) * m(0, 3) + r(row, 1) * m(1, 3) + r(row, 2) * m(2, 3));
+  return r;
+}
+
+// The inverse of any invertible 4×4 matrix (a projection too): Gauss–Jordan elimination
+// with partial pivoting, in double.
+inline Mat4 inverse(const Mat4& m) {
+  Mat4 a = m, r = Mat4::identity();
+  for (int col = 0; col < 4; ++col) {
+    int pivot = col;
+    for (int row = col + 1; row < 4; ++row) {
+      if (std::abs(a(row, col)) > std::abs(a(pivot, col))) pivot = row;
+    }
+    for (int k = 0; k < 4; ++k) {
+      std::swap(a(col, k), a(pivot, k));
+      std::swap(r(col, k), r(pivot, k));
+    }
+    const double scale = 1.0 / a(col, col);
+    for (int k = 0; k < 4; ++k) {
+      a(col, k) *= scale;
+      r(col, k) *= scale;
+    }
+    for (int row = 0; row < 4; ++row) {
+      if (row == col) continue;
+      const double f = a(row, col);
+      for (int k = 0; k < 4; ++k) {
+        a(row, k) -= f * a(col, k);
+        r(row, k) -= f * r(col, k);
+      }
+    }
+  }
   return r;
 }
 

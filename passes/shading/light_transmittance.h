@@ -7,11 +7,19 @@
 
 #include "graph/scene/scene.h"
 #include "passes/shading/camera.h"
+#include "passes/shading/media_field.h"
 
 namespace volgraph::shading {
 
 // How far the march toward `light` from `p` goes (m).
 double light_march_length(const Light& light, const Vec3& p, double max_distance);
+
+// ∫σt over `length` m from p along unit `direction`, by `steps` equal steps sampled at
+// (k + jitter)·Δ.
+Vec3 optical_depth_along(const MediaField& field, const Vec3& p, const Vec3& direction, double length, int steps, double jitter);
+
+// The media a march toward `light` sees: a directional light's without the global fog.
+Media media_toward_light(const Media& media, const Light& light);
 
 // `steps` ≤ 0: no volumetric shadow (1). `jitter` in [0, 1): where inside each step σt
 // is sampled.

@@ -52,4 +52,24 @@ RenderProgram create_render_program(rhi::Device& device, rhi::RenderPipelineDesc
   return program;
 }
 
+void dispatch(rhi::CommandEncoder& encoder, const std::string& label, const ComputeProgram& program,
+              std::initializer_list<rhi::BindGroupId> groups, Extent invocations) {
+  encoder.begin_compute_pass(label);
+  encoder.set_pipeline(program.pipeline);
+  uint32_t set = 0;
+  for (const rhi::BindGroupId group : groups) {
+    if (group) encoder.set_bind_group(set, group);
+    ++set;
+  }
+  const auto counts = program.groups_for(invocations);
+  encoder.dispatch(counts[0], counts[1], counts[2]);
+  encoder.end_compute_pass();
+}
+
+rhi::BufferId create_uniform_buffer(rhi::Device& device, const std::string& label, std::span<const std::byte> bytes) {
+  const rhi::BufferId buffer = device.create_buffer({label, bytes.size(), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+  device.write_buffer(buffer, 0, bytes);
+  return buffer;
+}
+
 }  // namespace volgraph::shading

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "graph/scene/scene.h"
@@ -57,6 +58,14 @@ std::array<Vec3, 8> frustum_slice_corners(const Camera& camera, double aspect, c
 // The vertices of the convex region a frustum slice (corners as above) and a box share;
 // empty when they do not meet.
 std::vector<Vec3> slice_box_intersection(const std::array<Vec3, 8>& slice, const Box& box);
+
+// The world box around a local media volume (its shape's box, transformed).
+Box volume_bounds(const MediumVolume& volume);
+
+// What a shadow map's view must hold: the geometry's box (casters and receivers) grown
+// over the local media volumes, which the light reaches through volumetric shadows.
+// Empty (nullopt) when there is neither.
+std::optional<Box> shadowed_bounds(const std::optional<Box>& geometry, const Media& media);
 
 // Directional light over the whole scene: a square window around its bounding sphere.
 OrthoFit fit_directional_to_scene(const Vec3& direction, const Box& scene);

@@ -2,7 +2,9 @@
 // toward the camera per metre, S = σs·(Σ_lights p(θ)·E·V·T_media + L_ambient) + emission, T_media
 // the media's transmittance toward the light (a march, light_transmittance.glsl; 1 when off)
 // (DESIGN.md units). The including shader defines `float light_visibility(int light,
-// vec3 p)` first (1 when unshadowed).
+// vec3 p)` first (1 when unshadowed; a vec3 when it also holds the media's transmittance
+// toward that light, from an opacity shadow map) and `bool media_shadow_mapped(int light)`
+// (whether light_visibility holds the media's transmittance: no march for that light).
 #ifndef VOLGRAPH_FROXEL_SCATTER_BODY_GLSL
 #define VOLGRAPH_FROXEL_SCATTER_BODY_GLSL
 #include "fog_frame.glsl"
@@ -54,8 +56,9 @@ void main() {
     for (int i = 0; i < frame.f.light_list.counts.x; ++i) {
       vec3 travel;
       const vec3 e = light_arriving(frame.f.light_list.lights[i], p, travel);
-      const vec3 media_shadow = transmittance_to_light(frame.f.media, frame.f.light_list.lights[i], p, -travel,
-                                                       int(params.volumetric.x), params.volumetric.y, 0.5);
+      const int steps = media_shadow_mapped(i) ? 0 : int(params.volumetric.x);  // a map's light: in light_visibility
+      const vec3 media_shadow = transmittance_to_light(frame.f.media, frame.f.light_list.lights[i], p, -travel, steps,
+                                                       params.volumetric.y, 0.5);
       light += phase(scattering.a, dot(travel, to_camera)) * e * light_visibility(i, p) * media_shadow;
     }
     scattered = scattering.rgb * light;

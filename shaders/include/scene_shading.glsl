@@ -1,5 +1,6 @@
 // The scene pass's fragment body. The including shader defines
-// `float light_visibility(int light, vec3 p)` first (1 when unshadowed).
+// `float light_visibility(int light, vec3 p)` first (1 when unshadowed; a vec3 where the
+// media between the light and p tint it).
 #ifndef VOLGRAPH_SCENE_SHADING_GLSL
 #define VOLGRAPH_SCENE_SHADING_GLSL
 #include "material_textures.glsl"

@@ -15,7 +15,7 @@ const fs::path kConfigs = fs::path(VOLGRAPH_SOURCE_DIR) / "configs";
 
 std::vector<std::string> shipped_configs() {
   std::vector<std::string> names;
-  for (const fs::path folder : {kConfigs, kConfigs / "tests"}) {
+  for (const fs::path& folder : {kConfigs, kConfigs / "tests"}) {
     for (const fs::directory_entry& e : fs::directory_iterator(folder)) {
       if (e.path().extension() == ".json") names.push_back(fs::relative(e.path(), kConfigs).string());
     }

@@ -213,5 +213,55 @@ TEST(ShadowFit, SpotFarHugsTheSceneAndNearHoldsCastersCloseToTheLight) {
   expect_box_in_depth_range(fit_spot(spot, reaching_the_light), reaching_the_light);
 }
 
+// A box of edges 2 × 4 × 6 turned 90° about y and moved to (10, 0, 0) spans x 7–13,
+// y −2–2, z −1–1; a sphere's box is its radius each way; an ellipsoid's its radii.
+TEST(ShadowFit, MediaVolumeBoundsAreTheTransformedShapesBox) {
+  MediumVolume box;
+  box.size = {2, 4, 6};
+  box.transform.rotate_deg = {0, 90, 0};
+  box.transform.translate = {10, 0, 0};
+  const Box b = volume_bounds(box);
+  const Vec3 want_min{7, -2, -1}, want_max{13, 2, 1};
+  for (size_t a = 0; a < 3; ++a) {
+    EXPECT_NEAR(b.min[a], want_min[a], 1e-9) << a;
+    EXPECT_NEAR(b.max[a], want_max[a], 1e-9) << a;
+  }
+  MediumVolume sphere;
+  sphere.shape = Shape::sphere;
+  sphere.size = {3, 0, 0};
+  EXPECT_NEAR(volume_bounds(sphere).max[2], 3, 1e-12);
+  MediumVolume ellipsoid;
+  ellipsoid.shape = Shape::ellipsoid;
+  ellipsoid.size = {1, 2, 3};
+  EXPECT_NEAR(volume_bounds(ellipsoid).min[1], -2, 1e-12);
+}
+
+// The shadow map's view grows over the media volumes, and a scene without geometry is
+// bounded by its volumes alone (none: nothing to bound).
+TEST(ShadowFit, ShadowedBoundsHoldGeometryAndMediaVolumes) {
+  Media media;
+  EXPECT_FALSE(shadowed_bounds(std::nullopt, media));
+  MediumVolume cloud;
+  cloud.transform.translate = {0, 20, 0};
+  media.volumes.push_back(cloud);
+  const std::optional<Box> alone = shadowed_bounds(std::nullopt, media);
+  ASSERT_TRUE(alone);
+  EXPECT_DOUBLE_EQ(alone->max[1], 20.5);
+  const std::optional<Box> both = shadowed_bounds(Box{{-5, -1, -5}, {5, 1, 5}}, media);
+  EXPECT_DOUBLE_EQ(both->min[0], -5);
+  EXPECT_DOUBLE_EQ(both->max[1], 20.5);
+  EXPECT_DOUBLE_EQ(both->min[1], -1);
+}
+
+// The general inverse undoes a perspective projection times a view (the shadow map's
+// clip_to_world): every entry of inverse(M)·M within 1e-12 of the identity.
+TEST(ShadowFit, InverseUndoesAProjection) {
+  const Mat4 m = perspective(40, 1.5, 0.05, 80) * look_at({1, 2, 3}, {0, 0, -4}, {0, 1, 0});
+  const Mat4 product = inverse(m) * m;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(product(r, c), r == c ? 1.0 : 0.0, 1e-12) << r << ", " << c;
+  }
+}
+
 }  // namespace
 }  // namespace volgraph::shading

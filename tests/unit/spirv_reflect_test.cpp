@@ -122,6 +122,19 @@ TEST(SpirvReflect, SceneStagesMergeVisibilityPerBinding) {
                                             {"0 F sampled_texture texture2d fetched", "1 F sampler fetched", "2 F uniform_buffer"}}));
 }
 
+// The opacity shadow map is sampled (trilinear) inside a function that takes the texture
+// and the sampler as parameters: reflection follows the calls back to the variables;
+// the shadow map, fetched in a function too, stays non-filtering.
+TEST(SpirvReflect, SamplingThroughFunctionParametersFilters) {
+  const auto layouts = reflect({{production("scene.vert"), shader_stage::vertex},
+                                {production("scene_media_shadowed.frag"), shader_stage::fragment}},
+                               "scene");
+  ASSERT_EQ(layouts.size(), 3u);
+  EXPECT_EQ(layouts_text(layouts)[2], (std::vector<std::string>{"0 F sampled_texture texture2d fetched", "1 F sampler fetched",
+                                                                  "2 F uniform_buffer", "3 F sampled_texture texture3d filtered",
+                                                                  "4 F sampler filtered"}));
+}
+
 TEST(SpirvReflect, UnshadowedSceneFragmentHasNoShadowSet) {
   const auto layouts = reflect(
       {{production("scene.vert"), shader_stage::vertex}, {production("scene.frag"), shader_stage::fragment}}, "scene");
