@@ -47,10 +47,10 @@ class FroxelScatterExecution final : public PassExecution {
                                                          : shadowed     ? "froxel_scatter_shadowed.comp"
                                                                         : "froxel_scatter.comp");
     struct {
-      int32_t phase[4];
+      int32_t modes[4];
       float lobes[4];
       float volumetric[4];
-    } params{{phase_code(c.variant()), 0, 0, 0},
+    } params{{phase_code(c.variant()), std::get<bool>(c.param("skip_empty")) ? 1 : 0, 0, 0},
              {float(std::get<double>(c.param("g_back"))), float(std::get<double>(c.param("w_forward"))), 0, 0},
              {float(std::get<int64_t>(c.param("shadow_steps"))), float(std::get<double>(c.param("shadow_distance"))), 0, 0}};
     params_ = c.device.create_buffer({"froxel_scatter params", sizeof(params), buffer_usage::uniform | buffer_usage::copy_dst});
@@ -89,6 +89,7 @@ PassDecl froxel_scatter_pass() {
       param_bool("shadows", true, "sample the shadow map when one is wired"),
       param_int("shadow_steps", 0, 0, 256, "", "volumetric self-shadowing: steps of the march through the media toward each light not covered by media_shadow (0: off)"),
       param_number("shadow_distance", 50, 0.01, 1e5, "m", "how far that march goes toward directional lights"),
+      param_bool("skip_empty", true, "froxels without scattering skip the light loop (off: to measure the saving)"),
   };
   SlotDecl in_scatter = slot_out_like("in_scatter", "media_scattering", Usage::storage_write, "scattered radiance per metre, rgb");
   d.slots = {

@@ -52,7 +52,8 @@ class RaymarchFogExecution final : public PassExecution {
     GpuRaymarchParams p{};
     p.steps[0] = int32_t(std::get<int64_t>(c.param("steps")));
     p.steps[1] = int32_t(std::get<int64_t>(c.param("shadow_steps")));
-    p.distances[0] = float(std::get<double>(c.param("max_distance")));
+    // Where no surface is, never past the camera's far plane: the scene ends there (as in the reference).
+    p.distances[0] = float(std::min(std::get<double>(c.param("max_distance")), c.scene->camera.far));
     p.distances[1] = float(std::get<double>(c.param("shadow_distance")));
     p.jitter[0] = std::get<bool>(c.param("jitter")) ? 1.0f : 0.0f;
     p.jitter[1] = float(c.frame % 64);
@@ -97,7 +98,7 @@ PassDecl raymarch_fog_pass() {
   d.params = {
       param_int("steps", 64, 1, 4096, "", "equal steps from the camera to the surface"),
       param_int("shadow_steps", 0, 0, 1024, "", "steps of the march toward each light for volumetric shadows (0: off)"),
-      param_number("max_distance", 100, 1e-3, 1e7, "m", "view depth the march reaches where no surface is"),
+      param_number("max_distance", 100, 1e-3, 1e7, "m", "view depth the march reaches where no surface is (at most the camera's far plane)"),
       param_number("shadow_distance", 50, 1e-3, 1e7, "m", "how far the march toward a directional light goes"),
       param_choice("resolution", "full", {"full", "half"}, "the outputs' size: the frame's or half of it in x and y"),
       param_bool("jitter", true, "sample each step at a per-pixel, per-frame point (interleaved gradient noise); off: its midpoint"),

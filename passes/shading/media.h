@@ -101,6 +101,9 @@ Real depth_fog_exponential_squared(Real z, Real density) {
 // (log 0 = −∞) means "as opaque as this".
 template <typename Real>
 constexpr Real kMinTransmittance = Real(1e-6);
+// Marches stop once every channel's transmittance is below this (media.glsl).
+template <typename Real>
+constexpr Real kNegligibleTransmittance = Real(1e-4);
 
 // σt from the transmittance `colour` seen through `distance` metres (the issue's
 // eq. 14.23): σt = −ln(colour)/distance.

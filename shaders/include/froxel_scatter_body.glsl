@@ -19,7 +19,7 @@ layout(set = 0, binding = 2) uniform texture3D media_emission;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4, rgba16f) uniform writeonly image3D in_scatter;
 layout(set = 0, binding = 5) uniform Params {
-  ivec4 phase;  // x: 0 isotropic, 1 Rayleigh, 2 HG, 3 Schlick, 4 dual-lobe HG
+  ivec4 modes;  // x phase: 0 isotropic, 1 Rayleigh, 2 HG, 3 Schlick, 4 dual-lobe HG; y: 1 skips froxels without scattering
   vec4 lobes;   // dual-lobe HG: x backward g, y forward weight
   vec4 volumetric;  // volumetric self-shadowing: x steps toward each light (0: off), y distance (m)
 } params;
@@ -34,7 +34,7 @@ const float FP16_MAX = 65000.0;
 // g is the medium's (clamped where HG's peak would overflow rgba16f).
 float phase(float g, float cos_theta) {
   g = clamp(g, -HG_MAX_ABS_G_FOR_FP16, HG_MAX_ABS_G_FOR_FP16);
-  switch (params.phase.x) {
+  switch (params.modes.x) {
     case PHASE_ISOTROPIC: return phase_isotropic();
     case PHASE_RAYLEIGH: return phase_rayleigh(cos_theta);
     case PHASE_SCHLICK: return phase_schlick(schlick_k(g), cos_theta);
@@ -49,7 +49,9 @@ void main() {
   const vec4 scattering = texelFetch(sampler3D(media_scattering, nearest), ivec3(id), 0);
   const vec3 emission = texelFetch(sampler3D(media_emission, nearest), ivec3(id), 0).rgb;
   vec3 scattered = vec3(0.0);
-  if (any(greaterThan(scattering.rgb, vec3(0.0)))) {
+  // Froxels the media leave empty (outside every local volume) skip the light loop: whole
+  // workgroups of them cost one texel fetch each.
+  if (params.modes.y == 0 || any(greaterThan(scattering.rgb, vec3(0.0)))) {
     const vec3 p = froxel_position(frame.f, vec3(id), frame.f.jitter.xyz);
     const vec3 to_camera = normalize(frame.f.view.position.xyz - p);
     vec3 light = frame.f.ambient.rgb;

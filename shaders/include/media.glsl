@@ -6,6 +6,9 @@
 const float SERIES_BELOW = 0.01;
 const float MAX_EXPONENT = 80.0;
 const float MIN_TRANSMITTANCE = 1e-6;
+// Marches stop once every channel's transmittance is below this: what lies behind adds at
+// most this fraction of its own radiance.
+const float NEGLIGIBLE_TRANSMITTANCE = 1e-4;
 
 // (1 − e^(−x)) / x, a series below |x| = SERIES_BELOW (the direct form cancels there).
 float one_minus_exp_over_x(float x) {

@@ -96,6 +96,7 @@ void main() {
     const vec3 p = origin + (float(k) + jitter) * dt * direction;
     const MediaSample m = sample_media(frame.f.media, p);
     integrate_hillaire(radiance, transmittance_so_far, in_scattering(m, p, -direction, jitter), m.sigma_s + m.sigma_a, dt);
+    if (all(lessThan(transmittance_so_far, vec3(NEGLIGIBLE_TRANSMITTANCE)))) break;  // nothing behind shows
   }
   imageStore(fog_scattering, texel, vec4(clamp(radiance, vec3(0.0), vec3(FP16_MAX)), 0.0));
   imageStore(fog_transmittance, texel, vec4(clamp(transmittance_so_far, vec3(0.0), vec3(1.0)), 0.0));

@@ -269,6 +269,17 @@ TEST_P(FroxelFog, ADenseBoxShadowsTheFogUnderItOnlyWithShadowSteps) {
   for (size_t k = 0; k < open_unshadowed.rgba.size(); ++k) ASSERT_EQ(unshadowed.rgba[k], open_unshadowed.rgba[k]) << k;
 }
 
+// Skipping the light loop in froxels without scattering (the default) is exact: the image
+// is bit-identical with skip_empty off, on media confined to local volumes.
+TEST_P(FroxelFog, SkippingEmptyFroxelsChangesNothing) {
+  FogCase skipping = layer_under_box(true, 16);
+  FogCase lighting_all = skipping;
+  lighting_all.scatter_params = R"({ "shadow_steps": 16, "shadow_distance": 20, "skip_empty": false })";
+  const Texels a = render(load(skipping)), b = render(load(lighting_all));
+  ASSERT_EQ(a.rgba.size(), b.rgba.size());
+  for (size_t k = 0; k < a.rgba.size(); ++k) ASSERT_EQ(a.rgba[k], b.rgba[k]) << k;
+}
+
 // The same shadow by the other volumetric-shadow variant: light 0 casts shadows, its
 // shadow map's view holds the media volumes, and an opacity shadow map of 64 layers over
 // it replaces the march (shadow_steps 0). The layer's own optical depth toward the light
