@@ -1,10 +1,13 @@
 // fog_apply: a per-pixel fog technique's result on the scene's colour, L = T·L_surface +
 // L_scat, from the two images the technique wrote (in-scattered radiance and
-// transmittance, at the frame's resolution or lower: read bilinearly at each pixel).
-// Shaders: shaders/fog_apply_*.frag (shaders/include/fog_image_lookup.glsl).
+// transmittance, at the frame's resolution or lower: read bilinearly at each pixel, or —
+// variant depth_aware, with the scene's depth wired — by joint bilateral upsampling).
+// Shaders: shaders/fog_apply_*.frag (shaders/include/fog_image_lookup*.glsl).
 #include "graph/execute/pass_execution.h"
+#include "graph/scene/scene.h"
 #include "passes/fog/apply_draws.h"
 #include "passes/fog/fog_passes.h"
+#include "passes/shading/programs.h"
 
 namespace volgraph {
 namespace {
@@ -19,20 +22,28 @@ class FogApplyExecution final : public PassExecution {
  private:
   void prepare(PassContext& c) {
     using namespace rhi;
-    draws_.prepare(c, "fog_apply_transmittance.frag", "fog_apply_scattering.frag");
+    const bool depth_aware = c.variant() == "depth_aware" && c.bound("depth");
+    if (depth_aware) {
+      draws_.prepare(c, "fog_apply_transmittance_depth_aware.frag", "fog_apply_scattering_depth_aware.frag");
+    } else {
+      draws_.prepare(c, "fog_apply_transmittance.frag", "fog_apply_scattering.frag");
+    }
     const Extent size = c.desc("color").extent;
-    const float frame[4] = {float(size.width), float(size.height), 0, 0};
-    frame_ = c.device.create_buffer({"fog_apply frame", sizeof(frame), buffer_usage::uniform | buffer_usage::copy_dst});
-    c.device.write_buffer(frame_, 0, std::as_bytes(std::span(frame)));
-    SamplerDesc bilinear{"bilinear"};
-    bilinear.filter = Filter::linear;
-    group_ = c.device.create_bind_group({"fog_apply", draws_.layout(),
-                                         {BindGroupEntry::of(0, c.view("fog_scattering")), BindGroupEntry::of(1, c.view("fog_transmittance")),
-                                          BindGroupEntry::of(2, c.device.create_sampler(bilinear)), BindGroupEntry::of(3, frame_)}});
+    const Camera& camera = c.scene->camera;
+    const float frame[4] = {float(size.width), float(size.height), float(camera.near), float(camera.far)};
+    const std::string& name = c.graph_pass().name;
+    std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, c.view("fog_scattering")), BindGroupEntry::of(1, c.view("fog_transmittance")),
+                                           BindGroupEntry::of(3, shading::create_uniform_block(c.device, name + " frame", frame))};
+    if (depth_aware) {
+      entries.push_back(BindGroupEntry::of(2, c.device.create_sampler({"nearest"})));
+      entries.push_back(BindGroupEntry::of(4, c.view("depth")));
+    } else {
+      entries.push_back(BindGroupEntry::of(2, c.device.create_sampler({"bilinear", Filter::linear})));
+    }
+    group_ = c.device.create_bind_group({name, draws_.layout(), entries});
   }
 
   fog::ApplyDraws draws_;
-  rhi::BufferId frame_;
   rhi::BindGroupId group_;
 };
 
@@ -43,11 +54,17 @@ PassDecl fog_apply_pass() {
   d.name = "fog_apply";
   d.kind = PassKind::graphics;
   d.doc = "Applies a per-pixel fog technique's in-scattering and transmittance images to the scene's colour.";
-  d.variants = {{"bilinear", "the images read bilinearly at each pixel's centre (upsamples a lower resolution)"}};
+  d.variants = {
+      {"bilinear", "the images read bilinearly at each pixel's centre (upsamples a lower resolution)"},
+      {"depth_aware", "joint bilateral upsampling (Kopf et al. 2007) guided by the scene's `depth` (bilinear without it)"},
+  };
+  SlotDecl depth = slot_optional_in("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth, for depth_aware");
+  depth.format = Format::d32_float;
   d.slots = {
       slot_inout("color", ResourceKind::texture2d, Usage::color_attachment_load, "the scene's linear radiance"),
       slot_in("fog_scattering", ResourceKind::texture2d, Usage::sampled, "in-scattered radiance toward the camera, rgb"),
       slot_in("fog_transmittance", ResourceKind::texture2d, Usage::sampled, "transmittance from the camera to the surface, rgb"),
+      depth,
   };
   d.needs = feature_bit(SceneFeature::medium);
   d.make_execution = [] { return std::unique_ptr<PassExecution>(new FogApplyExecution()); };

@@ -3,6 +3,7 @@
 // frame's sample jitter, ambient radiance, the lights and the media.
 #ifndef VOLGRAPH_FOG_FRAME_GLSL
 #define VOLGRAPH_FOG_FRAME_GLSL
+#include "depth_buffer.glsl"
 #include "froxel.glsl"
 #include "light_list.glsl"
 #include "media_field.glsl"
@@ -17,12 +18,8 @@ struct FogFrame {
   MediaField media;
 };
 
-// View depth of a depth-buffer value of the scene pass's perspective projection
-// (depth 0 at near, 1 at far): near·far / (far − d·(far − near)).
-float view_depth(FogFrame f, float depth) {
-  const float near = f.view.position.w, far = f.view.forward.w;
-  return near * far / (far - depth * (far - near));
-}
+// View depth of a depth-buffer value of the scene pass's camera.
+float view_depth(FogFrame f, float depth) { return linear_view_depth(depth, f.view.position.w, f.view.forward.w); }
 
 // World position of froxel `texel` (plus `offset` froxels) of the grid.
 vec3 froxel_position(FogFrame f, vec3 texel, vec3 offset) {

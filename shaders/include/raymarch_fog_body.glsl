@@ -40,22 +40,6 @@ float step_jitter(ivec2 texel) {
   return interleaved_gradient_noise(vec2(texel), params.jitter.y);
 }
 
-// The scene's depth-buffer value behind output texel `texel`: the farthest of the depth
-// pixels it covers (one at full resolution, 2×2 at half), so the march reaches the
-// background wherever any of them sees it.
-float covered_depth(ivec2 texel, ivec2 out_size) {
-  const ivec2 depth_size = textureSize(sampler2D(scene_depth, nearest), 0);
-  const ivec2 first = texel * depth_size / out_size;
-  const ivec2 last = max(first, ((texel + 1) * depth_size - 1) / out_size);
-  float farthest = 0.0;
-  for (int y = first.y; y <= last.y; ++y) {
-    for (int x = first.x; x <= last.x; ++x) {
-      farthest = max(farthest, texelFetch(sampler2D(scene_depth, nearest), ivec2(x, y), 0).r);
-    }
-  }
-  return farthest;
-}
-
 // View depth where the march ends: the surface's, or max_distance where there is none.
 float march_end_depth(float depth) {
   if (depth >= 1.0) return params.distances.x;
@@ -86,7 +70,7 @@ void main() {
   const vec3 ray = view_ray(frame.f.view, grid_ndc(vec2(texel), vec2(0.0), vec2(out_size)));
   const float ray_length = length(ray);
   const vec3 direction = ray / ray_length;
-  const float dt = march_end_depth(covered_depth(texel, out_size)) * ray_length / float(params.steps.x);
+  const float dt = march_end_depth(covered_depth(scene_depth, nearest, texel, out_size)) * ray_length / float(params.steps.x);
   const float jitter = step_jitter(texel);
   const vec3 origin = frame.f.view.position.xyz;
   vec3 radiance = vec3(0.0), transmittance_so_far = vec3(1.0);

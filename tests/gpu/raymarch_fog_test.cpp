@@ -44,6 +44,8 @@ struct MarchCase {
   std::string background = "[0, 0, 0]";
   std::string camera = R"({ "position": [0, 1, 0], "target": [0, 1, -1], "fov_y_deg": 50, "near": 0.1, "far": 1000 })";
   std::string march = R"({ "steps": 16, "max_distance": 20 })";
+  std::string objects = "[]";
+  std::string apply_variant = "bilinear";
 };
 
 // scene → raymarch_fog → fog_apply → composite (linear); the march's two images are
@@ -52,12 +54,13 @@ std::string config_text(const MarchCase& c) {
   std::ostringstream o;
   o << R"({ "output": { "size": [)" << kWidth << ", " << kHeight << R"(] },
   "scene": { "camera": )" << c.camera << R"(, "background": { "radiance": )" << c.background << R"( },
-             "lights": )" << c.lights << R"(, "media": )" << c.media << R"( },
+             "objects": )" << c.objects << R"(, "lights": )" << c.lights << R"(, "media": )" << c.media << R"( },
   "graph": { "passes": [
     { "name": "lit", "type": "scene" },
     { "name": "fog_march", "type": "raymarch_fog", "params": )" << c.march << R"(, "inputs": { "depth": "lit.depth" } },
-    { "name": "fog_apply", "type": "fog_apply",
-      "inputs": { "color": "lit.color", "fog_scattering": "fog_march.fog_scattering", "fog_transmittance": "fog_march.fog_transmittance" } },
+    { "name": "fog_apply", "type": "fog_apply", "variant": ")" << c.apply_variant << R"(",
+      "inputs": { "color": "lit.color", "depth": "lit.depth", "fog_scattering": "fog_march.fog_scattering",
+                  "fog_transmittance": "fog_march.fog_transmittance" } },
     { "name": "out", "type": "composite", "variant": "none", "inputs": { "color": "fog_apply.color" } } ],
     "outputs": ["out.output", "fog_march.fog_scattering", "fog_march.fog_transmittance"] } })";
   return o.str();
@@ -275,6 +278,63 @@ TEST_P(RaymarchFog, StressLimitsLeaveNoNanOrInfAndTransmittanceInZeroOne) {
       }
     }
   }
+}
+
+// Depth-aware upsampling: a black box 3–5 m away covers the left of a view into lit fog
+// that reaches 20 m, so the fog in front of the box is a fraction of the fog beside it.
+// Marched at half resolution, each texel covers 2×2 pixels; along the box's silhouette
+// bilinear reading blends fog from both sides, while fog_apply's depth_aware variant
+// weights each texel by how close its depth is to the pixel's. Against the same march at
+// full resolution, over the pixels whose 3×3 neighbourhood straddles the silhouette, the
+// mean absolute error must be under a tenth of bilinear's (measured: 9.5e-5 against
+// 0.054), and over the whole image no larger.
+TEST_P(RaymarchFog, DepthAwareUpsamplingKeepsTheFogOnItsSideOfASilhouette) {
+  MarchCase c;
+  c.media = R"({ "fog": { "sigma_s": [0.1, 0.1, 0.1], "sigma_a": [0, 0, 0] } })";
+  c.lights = R"([ { "type": "directional", "direction": [0, -1, 0], "irradiance": [3, 3, 3], "cast_shadows": false } ])";
+  c.objects = R"([ { "name": "wall", "shape": "box", "size": [2, 4, 2], "material": "black", "transform": { "translate": [-1.1, 1, -4] } } ])";
+  c.march = R"({ "steps": 32, "max_distance": 20, "jitter": false, "resolution": "full" })";
+  auto text_with_black = [&](const MarchCase& m) {
+    std::string t = config_text(m);
+    t.replace(t.find(R"("scene": {)"), 10, R"("scene": { "materials": { "black": { "albedo": [0, 0, 0] } },)");
+    return t;
+  };
+  auto final_image = [&](const MarchCase& m) {
+    const LoadedConfig loaded = load_config_text("march.json", text_with_black(m), registry_);
+    return render(loaded)[0];
+  };
+  const Texels full = final_image(c);
+  c.march = R"({ "steps": 32, "max_distance": 20, "jitter": false, "resolution": "half" })";
+  const Texels bilinear = final_image(c);
+  c.apply_variant = "depth_aware";
+  const Texels depth_aware = final_image(c);
+  // Silhouette pixels: the 3×3 neighbourhood has both the box (its fog is dimmer) and the background.
+  auto on_box = [&](int i, int j) { return channel(full, uint32_t(i), uint32_t(j), 0) < 0.5 * channel(full, kWidth - 1, uint32_t(j), 0); };
+  double edge_error[2] = {0, 0}, all_error[2] = {0, 0};
+  size_t edge_pixels = 0;
+  for (int j = 0; j < int(kHeight); ++j) {
+    for (int i = 0; i < int(kWidth); ++i) {
+      bool box = false, open = false;
+      for (int dj = -1; dj <= 1; ++dj) {
+        for (int di = -1; di <= 1; ++di) {
+          const int x = std::clamp(i + di, 0, int(kWidth) - 1), y = std::clamp(j + dj, 0, int(kHeight) - 1);
+          (on_box(x, y) ? box : open) = true;
+        }
+      }
+      const double want = channel(full, uint32_t(i), uint32_t(j), 0);
+      const double errors[2] = {std::abs(channel(bilinear, uint32_t(i), uint32_t(j), 0) - want),
+                                std::abs(channel(depth_aware, uint32_t(i), uint32_t(j), 0) - want)};
+      for (int v = 0; v < 2; ++v) all_error[v] += errors[v];
+      if (!(box && open)) continue;
+      ++edge_pixels;
+      for (int v = 0; v < 2; ++v) edge_error[v] += errors[v];
+    }
+  }
+  ASSERT_GT(edge_pixels, 20u);
+  std::printf("  silhouette (%zu px): bilinear %.4g, depth_aware %.4g; whole image: %.4g, %.4g (mean absolute error)\n", edge_pixels,
+              edge_error[0] / edge_pixels, edge_error[1] / edge_pixels, all_error[0] / (kWidth * kHeight), all_error[1] / (kWidth * kHeight));
+  EXPECT_LT(edge_error[1], 0.1 * edge_error[0]);
+  EXPECT_LE(all_error[1], all_error[0]);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, RaymarchFog, ::testing::ValuesIn(gpu_backends()), backend_test_name);
