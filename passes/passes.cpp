@@ -19,6 +19,7 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(depth_fog_pass());
   registry.add(height_fog_pass());
   registry.add(analytic_fog_pass());
+  registry.add(light_volume_pass());
 }
 
 }  // namespace volgraph

@@ -14,5 +14,6 @@ PassDecl raymarch_fog_pass();
 PassDecl depth_fog_pass();
 PassDecl height_fog_pass();
 PassDecl analytic_fog_pass();
+PassDecl light_volume_pass();
 
 }  // namespace volgraph
