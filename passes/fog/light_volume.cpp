@@ -15,11 +15,16 @@
 // The shadow volume is what the shadow map's hard lookup (shadow_lookup.glsl) calls
 // shadowed: per cell of a `grid`×`grid` grid over the map, the light's rays through the
 // cell from the cell's depth (+ the map's bias) to the map's far plane; a cell takes the
-// depth of the texel under its centre, so with `grid` ≥ the map's resolution the volume
-// is exact with respect to the map (one cell per texel), and coarser grids see the map
-// at the grid's resolution. Each cell is a flat cap with walls to its neighbours over the
-// depths where one is shadowed and the other not (light_volume_faces.vert): the map's
-// texels are steps, not a smooth height field, so the volume is what the lookup sees.
+// depth of the texel under its centre (coarser grids see the map at the grid's
+// resolution). Two meshes (variants):
+// - height_field (default; Billeter et al. §4): one vertex per cell at its centre and
+//   depth, the surface interpolated between cells, walls on the map's edges, a far cap
+//   (light_volume_surface.vert, an index buffer): N² vertices, 2N² triangles. Between two
+//   cells of different depth it is a slope where the lookup has a step, so it is off by
+//   up to a cell at depth edges (measured in tests/gpu/light_volume_test.cpp);
+// - texel_steps: each cell a flat cap, walls to its neighbours over the depths where one
+//   is shadowed and the other not (light_volume_faces.vert): the volume the lookup sees,
+//   exact with respect to the map when `grid` ≥ its resolution; 48 vertices a cell.
 // The faces are drawn from the camera with depth test off, both faces, additively into
 // an rgba32f image (blendable on both backends: Vulkan, and Dawn's float32-blendable).
 //
@@ -90,6 +95,44 @@ const AccessState kRendered = access_state(Usage::color_attachment, PassKind::gr
 const AccessState kBlended = access_state(Usage::color_attachment_load, PassKind::graphics, ResourceKind::texture2d);
 const AccessState kReadByFaces = {stage::vertex_shader | stage::fragment_shader, access::shader_sampled_read, Layout::shader_read_only};
 
+// The height_field variant's triangles over light_volume_surface.vert's vertices (n ≥ 2
+// cells per side), each wound with its normal out of the shadowed region in light clip
+// space (x right, y up, z away from the light): the surface (normal −z), the walls on the
+// map's edges (outward), and the far cap (+z) as a fan from its top-left corner through
+// every far vertex on the border, so no edge ends in the middle of another.
+std::vector<uint32_t> height_field_indices(uint32_t n) {
+  const auto surface = [n](uint32_t k, uint32_t l) { return l * n + k; };
+  const auto far_top = [n](uint32_t k) { return n * n + k; };
+  const auto far_bottom = [n](uint32_t k) { return n * n + n + k; };
+  const auto far_left = [n](uint32_t l) { return n * n + 2 * n + l; };
+  const auto far_right = [n](uint32_t l) { return n * n + 3 * n + l; };
+  std::vector<uint32_t> i;
+  auto triangle = [&i](uint32_t a, uint32_t b, uint32_t c) { i.insert(i.end(), {a, b, c}); };
+  for (uint32_t l = 0; l + 1 < n; ++l) {
+    for (uint32_t k = 0; k + 1 < n; ++k) {
+      triangle(surface(k, l), surface(k + 1, l), surface(k + 1, l + 1));
+      triangle(surface(k, l), surface(k + 1, l + 1), surface(k, l + 1));
+    }
+  }
+  for (uint32_t k = 0; k + 1 < n; ++k) {
+    triangle(surface(k, 0), far_top(k), far_top(k + 1));  // top edge (NDC y = +1): normal +y
+    triangle(surface(k, 0), far_top(k + 1), surface(k + 1, 0));
+    triangle(surface(k, n - 1), far_bottom(k + 1), far_bottom(k));  // bottom: −y
+    triangle(surface(k, n - 1), surface(k + 1, n - 1), far_bottom(k + 1));
+    triangle(surface(0, k), far_left(k + 1), far_left(k));  // left (x = −1): −x
+    triangle(surface(0, k), surface(0, k + 1), far_left(k + 1));
+    triangle(surface(n - 1, k), far_right(k), far_right(k + 1));  // right: +x
+    triangle(surface(n - 1, k), far_right(k + 1), surface(n - 1, k + 1));
+  }
+  std::vector<uint32_t> border;  // counter-clockwise from the top-left corner
+  for (uint32_t l = 0; l < n; ++l) border.push_back(far_left(l));
+  for (uint32_t k = 1; k < n; ++k) border.push_back(far_bottom(k));
+  for (uint32_t l = n - 1; l-- > 0;) border.push_back(far_right(l));
+  for (uint32_t k = n - 1; k-- > 1;) border.push_back(far_top(k));
+  for (size_t b = 1; b + 1 < border.size(); ++b) triangle(border[0], border[b], border[b + 1]);
+  return i;
+}
+
 class LightVolumeExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
@@ -144,7 +187,12 @@ class LightVolumeExecution final : public PassExecution {
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(faces_.pipeline);
     c.encoder.set_bind_group(0, faces_group_);
-    c.encoder.draw(face_vertices_);
+    if (indices_) {
+      c.encoder.set_index_buffer(indices_, rhi::IndexFormat::uint32);
+      c.encoder.draw_indexed(face_vertices_);
+    } else {
+      c.encoder.draw(face_vertices_);
+    }
     c.encoder.end_render_pass();
   }
 
@@ -156,8 +204,9 @@ class LightVolumeExecution final : public PassExecution {
     return shading::create_render_program(c.device, pd, vertex, fragment);
   }
 
-  rhi::BufferId uniform(PassContext& c, const std::string& label, std::span<const std::byte> bytes) const {
-    const rhi::BufferId b = c.device.create_buffer({c.graph_pass().name + " " + label, bytes.size(), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+  rhi::BufferId uniform(PassContext& c, const std::string& label, std::span<const std::byte> bytes,
+                        uint32_t usage = rhi::buffer_usage::uniform) const {
+    const rhi::BufferId b = c.device.create_buffer({c.graph_pass().name + " " + label, bytes.size(), usage | rhi::buffer_usage::copy_dst});
     c.device.write_buffer(b, 0, bytes);
     return b;
   }
@@ -177,8 +226,14 @@ class LightVolumeExecution final : public PassExecution {
     const Extent size = c.desc("fog_scattering").extent;
     const Extent out = c.graph.output_size;
     const uint32_t resolution = shadowed_ ? c.desc("shadow_map").extent.width : 1;
-    const uint32_t grid = uint32_t(std::min<int64_t>(std::get<int64_t>(c.param("grid")), resolution));
+    const uint32_t grid = std::max(2u, uint32_t(std::min<int64_t>(std::get<int64_t>(c.param("grid")), resolution)));
+    const bool steps = c.variant() == "texel_steps";
     face_vertices_ = (grid + 1) * (grid + 1) * kVerticesPerCell;
+    if (shadowed_ && !steps) {
+      const std::vector<uint32_t> indices = height_field_indices(grid);
+      face_vertices_ = uint32_t(indices.size());
+      indices_ = uniform(c, "indices", std::as_bytes(std::span(indices)), rhi::buffer_usage::index);
+    }
 
     GpuLightVolumeParams params{};
     shading::to_floats(faces_clip(c.scene->camera, double(out.width) / double(out.height)), params.camera_clip);
@@ -219,7 +274,8 @@ class LightVolumeExecution final : public PassExecution {
     cells_group_ = c.device.create_bind_group({name + " cells", cells_program_.layouts[0],
                                                {BindGroupEntry::of(0, c.view("shadow_map")), BindGroupEntry::of(1, nearest),
                                                 BindGroupEntry::of(2, view), BindGroupEntry::of(3, params_buffer)}});
-    faces_ = program(c, {{Format::rgba32_float, rhi::BlendMode::additive}}, "light_volume_faces.vert", "light_volume_faces.frag");
+    faces_ = program(c, {{Format::rgba32_float, rhi::BlendMode::additive}}, steps ? "light_volume_faces.vert" : "light_volume_surface.vert",
+                     "light_volume_faces.frag");
     faces_group_ = c.device.create_bind_group({name + " faces", faces_.layouts[0],
                                                {BindGroupEntry::of(0, params_buffer), BindGroupEntry::of(1, cells_.view),
                                                 BindGroupEntry::of(2, light_frame_.view), BindGroupEntry::of(3, nearest),
@@ -228,6 +284,7 @@ class LightVolumeExecution final : public PassExecution {
 
   bool shadowed_ = false;
   uint32_t face_vertices_ = 0;
+  rhi::BufferId indices_;  // height_field: the surface's triangles
   Image light_frame_, cells_, ends_, sums_;
   shading::RenderProgram unproject_, cells_program_, ends_program_, faces_, resolve_;
   rhi::BindGroupId unproject_group_, cells_group_, ends_group_, faces_group_, resolve_group_;
@@ -258,9 +315,12 @@ PassDecl light_volume_pass() {
   d.kind = PassKind::graphics;
   d.doc = "Volumetric shadows of the shadow map's light in homogeneous fog by polygonal light volumes (Billeter et al. 2010): "
           "the shadow volume's faces add the analytic in-scattering integral, exact with respect to the shadow map.";
-  d.variants = {{"texel_steps", "one flat cap per grid cell with walls between cells: the lit region exactly as the hard shadow lookup sees it"}};
+  d.variants = {
+      {"height_field", "Billeter et al.'s mesh: one vertex per cell, the surface interpolated between cells (fast; approximate at depth edges)"},
+      {"texel_steps", "one flat cap per cell with walls between cells: the shadowed region exactly as the hard shadow lookup sees it"},
+  };
   d.params = {
-      param_int("grid", 256, 1, 8192, "cells", "cells per side of the grid over the shadow map (at most its resolution: then exact)"),
+      param_int("grid", 256, 2, 8192, "cells", "cells per side of the grid over the shadow map (at most its resolution; texel_steps at its resolution: exact)"),
       param_vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the fog scatters (unshadowed)"),
   };
   SlotDecl depth = slot_in("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth (d32; 1 where nothing was drawn)");
