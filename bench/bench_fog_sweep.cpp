@@ -11,11 +11,19 @@
 // the fog ball's edge fade is removed (the reference's volumes are hard-edged), and the
 // camera's far plane is brought to the froxel grid's far end (the reference integrates
 // the media to the far plane, the grid stops at its `far`).
-//   bench_fog_sweep [FRAMES] [WxH]     default 5 frames at 320x180, after one warm-up frame
+// The light_volume sweep runs configs/demo_light_volume.json (homogeneous fog, a spot
+// light's 512² shadow map) instead: light_volume at each variant and grid against
+// raymarch_fog at 50 … 400 midpoint steps (jitter off, the light dimmed by the fog as
+// light_volume does), the camera's far plane (and the march's max_distance) at 20 m; its
+// rows are also compared with a 1000-step march over every pixel (the same shadow map,
+// so what is left is each technique's own error).
+//   bench_fog_sweep [FRAMES] [WxH] [froxel|light_volume]
+//     default 5 frames at 320x180, after one warm-up frame, the froxel sweep
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,12 +35,24 @@ namespace volgraph {
 namespace {
 
 const std::string kDemo = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_fog.json";
+const std::string kLightVolumeDemo = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_light_volume.json";
+constexpr double kLightVolumeFar = 20;  // m: the camera's far plane and the march's max_distance
 
-// One row of the sweep: a technique at one quality setting, as overrides of the demo.
+// One row of the sweep: a technique at one quality setting, as overrides of the demo,
+// or (`fog_pass` not empty) the demo with its fog_volume pass replaced by this one.
 struct Setting {
   std::string technique;
   std::string label;
   Overrides overrides;
+  std::string fog_pass;
+};
+
+// A sweep: the demo, its settings, and (optionally) the setting whose image every row is
+// also compared with over all pixels.
+struct Sweep {
+  std::string demo;
+  std::vector<Setting> settings;
+  std::optional<Setting> gpu_reference;
 };
 
 struct Row {
@@ -40,6 +60,7 @@ struct Row {
   double frame_ms = 0;
   accuracy::FogComparison fog_only;  // the fog-only pixels (the figure the front is taken on)
   accuracy::FogComparison all;       // every pixel, surfaces too (differences outside the technique included)
+  std::optional<accuracy::FogComparison> against_gpu;  // every pixel, against the sweep's GPU reference
   bool pareto = false;
 };
 
@@ -51,11 +72,34 @@ std::vector<Setting> froxel_settings() {
         Overrides o;
         o.sets = {"fog_media.slices=" + std::to_string(slices), "sun_shadow.resolution=" + std::to_string(shadow)};
         o.variants = {"fog_integral=" + std::string(integration)};
-        out.push_back({"froxel", std::string(integration) + ", " + std::to_string(slices) + " slices, shadow " + std::to_string(shadow), o});
+        out.push_back({"froxel", std::string(integration) + ", " + std::to_string(slices) + " slices, shadow " + std::to_string(shadow), o, ""});
       }
     }
   }
   return out;
+}
+
+// raymarch_fog in light_volume's place, as the demo wires it.
+Setting march_setting(int steps) {
+  const std::string params = R"({ "steps": )" + std::to_string(steps) + R"(, "shadow_steps": 1, "jitter": false, "max_distance": )" +
+                             std::to_string(kLightVolumeFar) + " }";
+  return {"raymarch", std::to_string(steps) + " steps", {},
+          R"({ "name": "fog_volume", "type": "raymarch_fog", "params": )" + params +
+              R"(, "inputs": { "depth": "lit.depth", "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view" } })"};
+}
+
+Sweep light_volume_sweep() {
+  Sweep sweep{kLightVolumeDemo, {}, march_setting(1000)};
+  for (const char* variant : {"height_field", "texel_steps"}) {
+    for (int grid : {64, 128, 256, 512}) {
+      Overrides o;
+      o.sets = {"fog_volume.grid=" + std::to_string(grid)};
+      o.variants = {"fog_volume=" + std::string(variant)};
+      sweep.settings.push_back({"light_vol", std::string(variant) + ", grid " + std::to_string(grid), o, ""});
+    }
+  }
+  for (int steps : {50, 100, 200, 400}) sweep.settings.push_back(march_setting(steps));
+  return sweep;
 }
 
 double median(std::vector<double> values) {
@@ -78,11 +122,26 @@ void make_comparable(LoadedConfig& loaded) {
   loaded.config.scene.camera.far = grid_far(loaded);
 }
 
-LoadedConfig load_setting(const PassRegistry& registry, Extent size, Overrides overrides) {
+LoadedConfig load_setting(const PassRegistry& registry, const std::string& demo, Extent size, const Setting& setting) {
+  Overrides overrides = setting.overrides;
   overrides.size = size;
-  LoadedConfig loaded = accuracy::load_linear(kDemo, registry, overrides);
+  LoadedConfig loaded = setting.fog_pass.empty()
+                            ? accuracy::load_linear(demo, registry, overrides)
+                            : accuracy::load_linear_text(setting.label, R"({ "include": ")" + demo + R"(", "graph": { "passes": [ )" +
+                                                                            setting.fog_pass + " ] } }",
+                                                         registry, overrides);
   make_comparable(loaded);
+  if (demo == kLightVolumeDemo) loaded.config.scene.camera.far = kLightVolumeFar;
   return loaded;
+}
+
+// A GPU image in the reference's form, to compare other images with it.
+reference::ReferenceImage as_reference(const Texels& t) {
+  reference::ReferenceImage r;
+  r.width = t.width;
+  r.height = t.height;
+  for (size_t i = 0; i < t.rgba.size(); i += 4) r.rgb.insert(r.rgb.end(), {double(t.rgba[i]), double(t.rgba[i + 1]), double(t.rgba[i + 2])});
+  return r;
 }
 
 // A setting's executor and its frame times so far.
@@ -95,7 +154,8 @@ struct Running {
 // reference, then `frames` rounds of one frame per setting in turn, so that the
 // machine's load changes every setting's times alike.
 std::vector<Row> measure(rhi::Device& device, const std::vector<LoadedConfig>& configs, const std::vector<Setting>& settings,
-                         const reference::ReferenceImage& ref, const std::vector<bool>& fog_only, int frames) {
+                         const reference::ReferenceImage& ref, const std::vector<bool>& fog_only, const std::optional<Texels>& gpu_ref,
+                         int frames) {
   std::vector<Row> rows;
   std::vector<Running> running;
   for (size_t i = 0; i < settings.size(); ++i) {
@@ -103,8 +163,9 @@ std::vector<Row> measure(rhi::Device& device, const std::vector<LoadedConfig>& c
     running.back().executor->set_gpu_timing(false);
     running.back().executor->run_frame();
     const Texels first = running.back().executor->read_output(0);
-    rows.push_back({settings[i], 0, accuracy::compare_fog(first, ref, fog_only),
-                    accuracy::compare_fog(first, ref, std::vector<bool>(fog_only.size(), true))});
+    const std::vector<bool> every(fog_only.size(), true);
+    rows.push_back({settings[i], 0, accuracy::compare_fog(first, ref, fog_only), accuracy::compare_fog(first, ref, every)});
+    if (gpu_ref) rows.back().against_gpu = accuracy::compare_fog(first, as_reference(*gpu_ref), every);
   }
   for (int f = 0; f < frames; ++f) {
     for (Running& r : running) {
@@ -131,29 +192,35 @@ void print(const std::vector<Row>& rows, const accuracy::FogComparison& coverage
   std::printf("\nerror: relative mean absolute error against the reference over the %zu of %zu fog-only pixels "
               "(all pixels in brackets); * Pareto-optimal on time and fog-only error\n",
               coverage.compared_pixels, coverage.pixels);
-  std::printf("%-10s %-36s %10s %8s %12s %12s %s\n", "technique", "setting", "frame ms", "ratio", "error", "(all px)", "front");
+  const bool against_gpu = rows.front().against_gpu.has_value();
+  if (against_gpu) std::printf("vs 1000-step march: the same error against a 1000-step raymarch_fog (same shadow map), every pixel\n");
+  std::printf("%-10s %-36s %10s %8s %12s %12s %s%s\n", "technique", "setting", "frame ms", "ratio", "error", "(all px)",
+              against_gpu ? "vs march1000 " : "", "front");
   for (const Row& r : rows) {
-    std::printf("%-10s %-36s %10.2f %8.2f %12.4f %12.4f %s\n", r.setting.technique.c_str(), r.setting.label.c_str(), r.frame_ms,
-                r.frame_ms / fastest, r.fog_only.difference.relative_mean_error, r.all.difference.relative_mean_error,
-                r.pareto ? "*" : "");
+    std::printf("%-10s %-36s %10.2f %8.2f %12.4f %12.4f ", r.setting.technique.c_str(), r.setting.label.c_str(), r.frame_ms,
+                r.frame_ms / fastest, r.fog_only.difference.relative_mean_error, r.all.difference.relative_mean_error);
+    if (r.against_gpu) std::printf("%12.5f ", r.against_gpu->difference.relative_mean_error);
+    std::printf("%s\n", r.pareto ? "*" : "");
   }
 }
 
-int run(int frames, Extent size) {
+int run(int frames, Extent size, const Sweep& sweep) {
   PassRegistry registry;
   register_builtin_passes(registry);
   auto context = vulkan::Context::create({});
   vulkan::VulkanDevice device(*context);
-  std::printf("bench_fog_sweep: configs/demo_fog.json at %ux%u, %d frames after one warm-up, median frame wall time; "
+  std::printf("bench_fog_sweep: %s at %ux%u, %d frames after one warm-up, median frame wall time; "
               "lavapipe (CPU): its \"GPU\" is this CPU (%s)\n",
-              size.width, size.height, frames, device.info().device.c_str());
-  const std::vector<Setting> settings = froxel_settings();
-  const LoadedConfig base = load_setting(registry, size, settings.front().overrides);
+              sweep.demo.c_str(), size.width, size.height, frames, device.info().device.c_str());
+  const std::vector<Setting>& settings = sweep.settings;
+  const LoadedConfig base = load_setting(registry, sweep.demo, size, settings.front());
   const reference::ReferenceImage ref = accuracy::render_reference(base);
   const std::vector<bool> fog_only = accuracy::fog_only_pixels(base.config.scene, size.width, size.height);
+  std::optional<Texels> gpu_ref;
+  if (sweep.gpu_reference) gpu_ref = accuracy::render_gpu(device, load_setting(registry, sweep.demo, size, *sweep.gpu_reference));
   std::vector<LoadedConfig> configs;
-  for (const Setting& setting : settings) configs.push_back(load_setting(registry, size, setting.overrides));
-  std::vector<Row> rows = measure(device, configs, settings, ref, fog_only, frames);
+  for (const Setting& setting : settings) configs.push_back(load_setting(registry, sweep.demo, size, setting));
+  std::vector<Row> rows = measure(device, configs, settings, ref, fog_only, gpu_ref, frames);
   mark_pareto(rows);
   print(rows, rows.front().fog_only);
   return 0;
@@ -165,12 +232,15 @@ int run(int frames, Extent size) {
 int main(int argc, char** argv) {
   const int frames = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
   volgraph::Extent size{320, 180, 1};
-  if (argc > 2 && std::sscanf(argv[2], "%ux%u", &size.width, &size.height) != 2) {
-    std::fprintf(stderr, "usage: bench_fog_sweep [FRAMES] [WxH]\n");
+  const std::string which = argc > 3 ? argv[3] : "froxel";
+  if ((argc > 2 && std::sscanf(argv[2], "%ux%u", &size.width, &size.height) != 2) || (which != "froxel" && which != "light_volume")) {
+    std::fprintf(stderr, "usage: bench_fog_sweep [FRAMES] [WxH] [froxel|light_volume]\n");
     return 2;
   }
   try {
-    return volgraph::run(frames, size);
+    const volgraph::Sweep sweep = which == "froxel" ? volgraph::Sweep{volgraph::kDemo, volgraph::froxel_settings(), std::nullopt}
+                                                    : volgraph::light_volume_sweep();
+    return volgraph::run(frames, size, sweep);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_fog_sweep: %s\n", e.what());
     return 1;

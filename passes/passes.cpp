@@ -20,6 +20,7 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(height_fog_pass());
   registry.add(analytic_fog_pass());
   registry.add(opacity_shadow_map_pass());
+  registry.add(light_volume_pass());
 }
 
 }  // namespace volgraph

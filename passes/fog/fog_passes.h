@@ -15,5 +15,6 @@ PassDecl depth_fog_pass();
 PassDecl height_fog_pass();
 PassDecl analytic_fog_pass();
 PassDecl opacity_shadow_map_pass();
+PassDecl light_volume_pass();
 
 }  // namespace volgraph

@@ -21,6 +21,21 @@ struct FogFrame {
 // View depth of a depth-buffer value of the scene pass's camera.
 float view_depth(FogFrame f, float depth) { return linear_view_depth(depth, f.view.position.w, f.view.forward.w); }
 
+// A camera ray up to the scene's surface (or the far plane where nothing was drawn).
+struct PixelRay {
+  vec3 origin;
+  vec3 direction;  // unit
+  float len;       // m, along the ray to the surface or the far plane
+};
+
+// The ray through image coordinate `uv` ([0, 1]², row 0 at the top) that ends at the
+// scene depth-buffer value `depth`.
+PixelRay camera_ray(FogFrame f, vec2 uv, float depth) {
+  const vec3 through = view_ray(f.view, vec2(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0));
+  const float ray_scale = length(through);
+  return PixelRay(f.view.position.xyz, through / ray_scale, view_depth(f, depth) * ray_scale);
+}
+
 // World position of froxel `texel` (plus `offset` froxels) of the grid.
 vec3 froxel_position(FogFrame f, vec3 texel, vec3 offset) {
   const vec3 size = vec3(f.grid.size.xyz);

@@ -16,12 +16,6 @@ layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D fog_transmittanc
 
 const float FP16_MAX = 65000.0;  // stored values are clamped below rgba16f's largest
 
-struct PixelRay {
-  vec3 origin;
-  vec3 direction;  // unit
-  float len;       // m, along the ray to the surface or the far plane
-};
-
 // The ray of output texel `texel` (false outside the image). A lower-resolution image
 // reads the depth of the frame pixel under its texel's centre.
 bool pixel_ray(uvec2 texel, out PixelRay ray) {
@@ -30,12 +24,7 @@ bool pixel_ray(uvec2 texel, out PixelRay ray) {
   const ivec2 depth_size = textureSize(sampler2D(scene_depth, nearest), 0);
   const vec2 uv = (vec2(texel) + 0.5) / vec2(size);
   const ivec2 pixel = min(ivec2(uv * vec2(depth_size)), depth_size - 1);
-  const float depth = texelFetch(sampler2D(scene_depth, nearest), pixel, 0).r;
-  const vec3 through = view_ray(frame.f.view, vec2(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0));
-  const float ray_scale = length(through);
-  ray.origin = frame.f.view.position.xyz;
-  ray.direction = through / ray_scale;
-  ray.len = view_depth(frame.f, depth) * ray_scale;
+  ray = camera_ray(frame.f, uv, texelFetch(sampler2D(scene_depth, nearest), pixel, 0).r);
   return true;
 }
 

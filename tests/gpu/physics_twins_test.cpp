@@ -1,5 +1,6 @@
-// The shared physics includes (shaders/include/phase.glsl, media.glsl, airlight.glsl) on lavapipe, on each backend,
-// against their CPU twins in float (passes/shading/phase.h, media.h, airlight.h), over a table that
+// The shared physics includes (shaders/include/phase.glsl, media.glsl, airlight.glsl,
+// light_volume_integral.glsl) on lavapipe, on each backend, against their CPU twins in
+// float (passes/shading/phase.h, media.h, airlight.h, light_volume_integral.h), over a table that
 // covers the traps (g → ±1, x → 0, dense and empty media, huge distances): relative
 // error ≤ 2e-5 (GLSL lets exp be off by 3 + 2|x| ULP; our twins use the same formulas).
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "passes/shading/airlight.h"
+#include "passes/shading/light_volume_integral.h"
 #include "passes/shading/media.h"
 #include "passes/shading/phase.h"
 #include "graph/rhi/spirv_reflect.h"
@@ -49,6 +51,19 @@ std::vector<Case> cases() {
   return out;
 }
 
+// light_volume's I(t) for one case, as physics_twins.comp builds it.
+float light_volume_integral(const Case& c) {
+  shading::RayLight<float> spot;
+  spot.type = shading::kLightTypeSpot;
+  spot.position = {0, 3, 0};
+  spot.direction = {0, -1, 0};
+  spot.cos_outer = 0.8191520443f;
+  spot.cos_inner = 0.9063077870f;
+  const float y = 0.3f * c.direction_y, norm = std::sqrt(1 + y * y + 0.01f);
+  return shading::light_scattering_to(spot, {-4.0f, c.origin_y, 0.0f}, {1 / norm, y / norm, 0.1f / norm}, c.length, c.air_sigma_t,
+                                      std::clamp(c.g, -0.9f, 0.9f));
+}
+
 // The CPU twins' values for one case, in the shader's order.
 std::array<float, 12> expected(const Case& c) {
   using namespace shading;
@@ -59,14 +74,16 @@ std::array<float, 12> expected(const Case& c) {
           phase_rayleigh(c.cos_theta), one_minus_exp_over_x(c.x), a.radiance, a.transmittance,
           height_fog_optical_depth(c.sigma_t, c.falloff, 0.0f, c.origin_y, c.direction_y, c.dz),
           airlight(air, c.length, c.air_sigma_t, std::clamp(c.g, -0.9f, 0.9f)), airlight_no_extinction(air, c.length),
-          attenuated_length(c.sigma_t, c.dz), 0.0f};
+          attenuated_length(c.sigma_t, c.dz), light_volume_integral(c)};
 }
 
 // The airlight's two columns get 1e-4: lavapipe's atan is off by up to ~2e-5 relative
 // (Vulkan allows atan 4096 ULP), and the quadrature's panel width is a difference of two
 // logs (asinh) that loses ~|w|·ε relative where the segment subtends a small angle far from
 // the light. Measured: printed by the test.
-float tolerance(size_t column) { return column == 8 || column == 9 ? 1e-4f : 2e-5f; }
+// light_volume's I(t) (column 11) shares the airlight's quadrature in w, and lavapipe's
+// sinh/cosh: the same 1e-4.
+float tolerance(size_t column) { return column == 8 || column == 9 || column == 11 ? 1e-4f : 2e-5f; }
 
 class PhysicsTwins : public OnEachBackend<> {
  protected:
@@ -109,19 +126,19 @@ TEST_P(PhysicsTwins, ShadersMatchTheirCpuTwins) {
     const std::vector<std::byte> bytes = device.read_buffer(readback);
     const auto* results = reinterpret_cast<const float*>(bytes.data());
 
-    const char* names[] = {"hg", "schlick", "dual hg", "rayleigh", "1-exp/x", "hillaire L", "hillaire T", "height depth", "airlight", "airlight σt=0", "attenuated length", "unused"};
+    const char* names[] = {"hg", "schlick", "dual hg", "rayleigh", "1-exp/x", "hillaire L", "hillaire T", "height depth", "airlight", "airlight σt=0", "attenuated length", "light_volume I"};
     float worst_airlight = 0;
     for (size_t i = 0; i < table.size(); ++i) {
       const std::array<float, 12> want = expected(table[i]);
       for (size_t k = 0; k < 12; ++k) {
         const float got = results[12 * i + k];
         ASSERT_TRUE(std::isfinite(got)) << names[k] << " case " << i;
-        if (k == 8 || k == 9) worst_airlight = std::max(worst_airlight, std::abs(got - want[k]) / (std::abs(want[k]) + 1e-30f));
+        if (k == 8 || k == 9 || k == 11) worst_airlight = std::max(worst_airlight, std::abs(got - want[k]) / (std::abs(want[k]) + 1e-30f));
         EXPECT_NEAR(got, want[k], tolerance(k) * std::abs(want[k]) + 1e-30f) << names[k] << " case " << i << " g " << table[i].g
                                                                      << " cos " << table[i].cos_theta << " x " << table[i].x;
       }
     }
-    std::printf("airlight GPU vs CPU twin: %.3g relative at most\n", worst_airlight);
+    std::printf("airlight and light_volume I(t) GPU vs CPU twin: %.3g relative at most\n", worst_airlight);
   }
 }
 
