@@ -411,10 +411,6 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
   if (!image_format_for(args.output)) {
     throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
   }
-  if (const std::string why = reference::unsupported(loaded.config.scene.media); !why.empty()) {
-    std::cerr << "volgraph reference: " << why << "\n";
-    return kFailure;
-  }
   const auto start = std::chrono::steady_clock::now();
   std::optional<reference::Renderer> renderer;
   try {

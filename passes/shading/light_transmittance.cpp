@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "passes/shading/lighting.h"
 #include "passes/shading/media.h"
@@ -19,7 +20,7 @@ Vec3 transmittance_to_light(const Media& media, const Light& light, const Vec3& 
   if (steps <= 0) return {1, 1, 1};
   Media marched = media;
   if (light.type == LightType::directional) marched.fog.reset();
-  const MediaField field(marched);
+  const MediaField field(std::move(marched));
   const Vec3 to_light = scaled(light_arriving(light, p).travel, -1);
   const double step_length = light_march_length(light, p, max_distance) / steps;
   Vec3 optical_depth{0, 0, 0};
