@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "passes/shading/media.h"
 #include "passes/shading/phase.h"
@@ -16,6 +17,11 @@ using shading::Mat4;
 using shading::scaled;
 
 constexpr double kInfiniteDepth = 1e300;
+// A volume's chord is integrated on at most this many panels and a camera ray cut at most
+// this many times through it: noise finer than that is under-resolved (under_resolved()
+// says so) rather than making a pixel take minutes.
+constexpr double kMaxPanelsPerChord = 256;
+constexpr double kMaxSegmentsPerChord = 64;
 // e^(−this) is below double's resolution of 1: height fog beyond it adds nothing.
 constexpr double kNegligibleExponent = 50;
 Vec3 transform_vector(const Mat4& m, const Vec3& v) {
@@ -74,8 +80,8 @@ Mat4 unit_shape_to_volume(const MediumVolume& v) {
 // radius less the fade, the ellipsoid's radii by 1 − fade / smallest radius. 0: no core.
 Vec3 core_scale(const MediumVolume& v) {
   const double fade = v.noise.edge_fade;
-  if (fade == 0) return {1, 1, 1};
   const Vec3 size = unit_shape_size(v);
+  if (fade == 0 || std::min({size[0], size[1], size[2]}) <= 0) return {1, 1, 1};
   if (v.shape == Shape::box) {
     const Vec3 s{1 - 2 * fade / size[0], 1 - 2 * fade / size[1], 1 - 2 * fade / size[2]};
     return std::min({s[0], s[1], s[2]}) > 0 ? s : Vec3{0, 0, 0};
@@ -110,8 +116,28 @@ SceneMedia::SceneMedia(const Media& media, const MediaQuadrature& quadrature) : 
   for (const MediumVolume& v : media.volumes) {
     const Mat4 model = shading::model_matrix(v.transform) * unit_shape_to_volume(v);
     const bool uniform = v.noise.edge_fade == 0 && v.noise.octaves == 0;
-    volumes_.push_back({v.shape, shading::inverse_affine(model), core_scale(v), uniform});
+    const Vec3 size = unit_shape_size(v);
+    const bool flat = std::min({size[0], size[1], size[2]}) <= 0;  // no inside: nothing along any ray
+    volumes_.push_back({v.shape, flat ? Mat4::identity() : shading::inverse_affine(model), core_scale(v), uniform, flat});
   }
+}
+
+std::string SceneMedia::under_resolved() const {
+  const Media& media = field_.media();
+  for (size_t i = 0; i < media.volumes.size(); ++i) {
+    const MediumVolume& v = media.volumes[i];
+    if (v.noise.octaves == 0 || volumes_[i].flat) continue;
+    // The longest chord, in local units: the box's diagonal, twice the largest radius.
+    const Vec3 size = unit_shape_size(v);
+    const double longest = v.shape == Shape::box ? std::sqrt(shading::dot(size, size)) : 2 * std::max({size[0], size[1], size[2]});
+    const double cells = longest / (v.noise.scale / std::ldexp(1.0, v.noise.octaves - 1));
+    if (cells * quadrature_.panels_per_noise_cell > kMaxPanelsPerChord) {
+      return "volume " + std::to_string(i) + ": its finest noise octave has up to " + std::to_string(int64_t(cells)) +
+             " cells along a ray, more than the reference integrates (" + std::to_string(int(kMaxPanelsPerChord)) +
+             " panels a chord): the noise is under-resolved there";
+    }
+  }
+  return "";
 }
 
 bool SceneMedia::empty() const {
@@ -130,6 +156,7 @@ Vec3 SceneMedia::scattering(const Vec3& p, double cos_theta) const {
 
 std::optional<SceneMedia::VolumeChord> SceneMedia::chord(size_t i, const Vec3& origin, const Vec3& direction) const {
   const Volume& v = volumes_[i];
+  if (v.flat) return std::nullopt;
   const Vec3 o = shading::transform_point(v.inverse, origin), d = transform_vector(v.inverse, direction);
   const std::optional<Interval> shape = unit_shape_interval(v.shape, o, d);
   if (!shape) return std::nullopt;
@@ -148,6 +175,9 @@ std::optional<SceneMedia::VolumeChord> SceneMedia::chord(size_t i, const Vec3& o
     c.panel = std::min(c.panel, cell / quadrature_.panels_per_noise_cell);
     c.segment = cell / quadrature_.segments_per_noise_cell;
   }
+  const double length = c.shape.exit - c.shape.enter;
+  c.panel = std::max(c.panel, length / kMaxPanelsPerChord);
+  if (c.segment > 0) c.segment = std::max(c.segment, length / kMaxSegmentsPerChord);
   return c;
 }
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "graph/scene/scene.h"
@@ -49,6 +50,9 @@ class SceneMedia {
   explicit SceneMedia(const Media& media, const MediaQuadrature& quadrature = {});
 
   bool empty() const;
+  // Why the reference under-resolves some noisy volume ("" when it resolves them all): its
+  // finest octave has more cells along a ray than a chord's panels (MediaQuadrature).
+  std::string under_resolved() const;
 
   // σs, σa, emission and the σs-weighted g of every medium at p (the twin's sample).
   shading::MediaSample at(const Vec3& p) const { return field_.sample(p); }
@@ -89,6 +93,7 @@ class SceneMedia {
     shading::Mat4 inverse;  // world to the unit shape (affine)
     Vec3 core_scale;        // the core as a scale of the unit shape (0: no core)
     bool uniform;           // no edge fade, no noise
+    bool flat;              // a size of 0: no inside
   };
   std::optional<VolumeChord> chord(size_t i, const Vec3& origin, const Vec3& direction) const;
   Vec3 volume_optical_depth(size_t i, const VolumeChord& c, const Vec3& origin, const Vec3& direction, double t0,

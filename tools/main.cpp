@@ -417,6 +417,7 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
     reference::IntegrationSettings integration;
     integration.relative_tolerance = args.tolerance;
     renderer.emplace(loaded.config.scene, integration);
+    if (const std::string why = renderer->media().under_resolved(); !why.empty()) std::cerr << "volgraph reference: warning: " << why << "\n";
   } catch (const std::runtime_error& e) {  // a model or texture the loader accepted but cannot be read now
     throw ConfigError({{{args.config, "/scene", 0}, e.what()}});
   }

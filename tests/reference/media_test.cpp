@@ -339,6 +339,23 @@ TEST(ReferenceMedia, NoisyOpticalDepthMatchesABruteForceSumOfTheTwin) {
   }
 }
 
+// Noise far finer than the volume (1 mm, 8 octaves, in a 2 m box) is integrated on a
+// bounded number of panels, and the reference says it under-resolves it; a volume of size
+// 0 has no inside.
+TEST(ReferenceMedia, FineNoiseIsUnderResolvedInBoundedTimeAndFlatVolumesAreEmpty) {
+  Media media;
+  media.volumes.push_back(noisy_volume(Shape::box));
+  EXPECT_EQ(SceneMedia(media).under_resolved(), "");
+  media.volumes[0].noise = {.octaves = 8, .scale = 1e-3, .coverage = 1, .edge_fade = 0};
+  const SceneMedia fine(media);
+  EXPECT_NE(fine.under_resolved().find("volume 0"), std::string::npos);
+  const Vec3 depth = fine.optical_depth({0.3, 0.1, 0}, {0, 0, -1}, 0, 10);
+  EXPECT_TRUE(std::isfinite(depth[0]) && depth[0] > 0);
+  media.volumes[0].size = {0, 1, 1};
+  media.volumes[0].noise.edge_fade = 0.2;
+  EXPECT_EQ(SceneMedia(media).optical_depth({0.3, 0.1, 0}, {0, 0, -1}, 0, 10), (Vec3{0, 0, 0}));
+}
+
 // Seen through a noisy absorber (no lights), the background arrives × e^(−τ) with τ the
 // brute-force sum of the twin's σt: the camera ray's segments and transmittance agree.
 TEST(ReferenceMedia, ANoisyAbsorberAttenuatesTheBackgroundByTheTwinsOpticalDepth) {
