@@ -8,6 +8,7 @@
 // - on dense fog (optical depth 8.75) Hillaire's integration step errs less than
 //   Wronski's at equal slices;
 // - a negative control: a sun 5 % dimmer on the GPU fails the global fog's bound.
+// - a heterogeneous (noisy) volume: raymarch_fog and the froxel chain against the reference.
 // A technique is one row of kTechniques (its graph and its bound per scene); the oracle
 // scenes are the rows of kOracles.
 #include <algorithm>
@@ -175,7 +176,7 @@ TEST_F(FogAccuracy, ASunFivePercentDimmerOnTheGpuFailsTheBound) {
 //   change none of them: each column blends the medium trilinearly across the volume's
 //   silhouette and the noise's features, which is what limits it) — within 5 % at 2 pixels
 //   and 0.5 % at 1;
-// - negative control: the volume without its noise on the GPU is far off (measured 43 %).
+// - negative control: the volume without its noise on the GPU is far off (measured 42 %).
 TEST_F(FogAccuracy, NoisyVolumeRaymarchedAndFroxelizedAgainstTheReference) {
   const Reference ref = reference_of(froxel_oracle("oracle_noise_volume.json", {}));
   const Technique raymarch{"raymarch_noise", "../graphs/raymarch_fog.json",
