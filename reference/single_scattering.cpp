@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reference/gauss_legendre.h"
 
 namespace volgraph::reference {
 namespace {
@@ -46,6 +47,13 @@ class Segment {
       (max_channel(transmittance(mid)) < floor ? hi : lo) = mid;
     }
     return hi;
+  }
+
+  // ∫ f over [a, end] on Gauss–Legendre panels of at most `panel` m (noisy media).
+  Vec3 integrate_on_panels(double end, double panel) const {
+    if (!(end > a_)) return {0, 0, 0};
+    return gauss_legendre(a_, end, panel, Vec3{0, 0, 0}, [&](double t) { return integrand(t); },
+                          [](const Vec3& x, const Vec3& y) { return add(x, y); }, [](const Vec3& x, double s) { return scaled(x, s); });
   }
 
   Vec3 integrate(double end) const {
@@ -141,7 +149,8 @@ RayScattering integrate_single_scattering(const SceneMedia& media, const Vec3& o
     if (gathering) {
       const bool falls_below = max_channel(t_b) < settings.min_transmittance;
       const double end = falls_below ? segment.where_transmittance_reaches(b, settings.min_transmittance) : b;
-      out.radiance = add(out.radiance, segment.integrate(end));
+      const double panel = media.noisy_panel(origin, direction, a, end);
+      out.radiance = add(out.radiance, panel > 0 ? segment.integrate_on_panels(end, panel) : segment.integrate(end));
       gathering = !falls_below;
     }
     out.transmittance = t_b;

@@ -5,7 +5,8 @@
 // is taken segment by segment between media boundaries and any breaks the caller adds
 // (where J peaks, e.g. a point light's closest approach), each segment by adaptive
 // Simpson quadrature (Lyness 1969, "Notes on the adaptive Simpson quadrature routine")
-// from a grid of initial panels.
+// from a grid of initial panels — or, through noisy volumes, by Gauss–Legendre on the
+// fixed panels SceneMedia::noisy_panel gives.
 #pragma once
 
 #include <cstdint>

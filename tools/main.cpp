@@ -414,16 +414,13 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
   if (!image_format_for(args.output)) {
     throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
   }
-  if (const std::string why = reference::unsupported(loaded.config.scene.media); !why.empty()) {
-    std::cerr << "volgraph reference: " << why << "\n";
-    return kFailure;
-  }
   const auto start = std::chrono::steady_clock::now();
   std::optional<reference::Renderer> renderer;
   try {
     reference::IntegrationSettings integration;
     integration.relative_tolerance = args.tolerance;
     renderer.emplace(loaded.config.scene, integration);
+    if (const std::string why = renderer->media().under_resolved(); !why.empty()) std::cerr << "volgraph reference: warning: " << why << "\n";
   } catch (const std::runtime_error& e) {  // a model or texture the loader accepted but cannot be read now
     throw ConfigError({{{args.config, "/scene", 0}, e.what()}});
   }

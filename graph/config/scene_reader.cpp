@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "passes/shading/media.h"  // header-only: sigma from a transmittance colour
+#include "passes/shading/noise.h"  // header-only: the octave limit
 
 namespace volgraph::config {
 namespace {
@@ -184,13 +185,20 @@ void read_medium(const Node& n, Medium& m, std::initializer_list<const char*> ex
   read(n, "emission", m.emission, 0, kMaxRadiance);
 }
 
+// A volume's "noise": fractal noise (octaves 1 … 8, scale, coverage) and the edge fade,
+// which also applies without noise.
 void read_noise(const Node& n, Noise& noise) {
-  if (!n.object({"octaves", "scale", "edge_fade"})) return;
+  if (!n.object({"octaves", "scale", "coverage", "edge_fade"})) return;
   if (auto o = n.member("octaves")) {
-    if (auto v = o->integer(0, 8)) noise.octaves = int(*v);
+    if (auto v = o->integer(1, shading::kMaxNoiseOctaves)) noise.octaves = int(*v);
   }
   read(n, "scale", noise.scale, 1e-3, kHuge);
+  read(n, "coverage", noise.coverage, 0.01, 1);
   read(n, "edge_fade", noise.edge_fade, 0, kHuge);
+  if (n.member("octaves")) return;
+  for (const char* key : {"scale", "coverage"}) {
+    if (auto m = n.member(key)) m->error("\"" + std::string(key) + "\" needs \"octaves\" (1 … 8) beside it: without octaves the volume has no noise");
+  }
 }
 
 void read_media(const Node& n, Media& media) {

@@ -80,11 +80,14 @@ struct HeightFog {
 };
 
 // Procedural density inside a local volume: fractal gradient noise (octaves summed at
-// doubling frequency and halving amplitude) scaling the medium's σ, faded to 0 at the
-// shape's surface.
+// doubling frequency and halving amplitude, passes/shading/noise.h defines it exactly)
+// mapped to a density multiplier in [0, 1] by `coverage`, times the edge fade; the
+// multiplier scales the medium's σs, σa and emission alike. The noise lives in the
+// volume's local space (it moves, turns and scales with the volume's transform).
 struct Noise {
-  int octaves = 0;         // 0: no noise (uniform density)
-  double scale = 1;        // m: the size of the largest features
+  int octaves = 0;         // 0: no noise (uniform density); else 1 … 8
+  double scale = 1;        // local units (m without a transform scale): the size of the largest features
+  double coverage = 1;     // (0, 1]: 1 keeps the whole fBm range; less empties the thin parts
   double edge_fade = 0;    // m: density ramps from 0 at the surface to full this far inside
 };
 

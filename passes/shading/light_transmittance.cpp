@@ -34,8 +34,7 @@ Media media_toward_light(const Media& media, const Light& light) {
 
 Vec3 transmittance_to_light(const Media& media, const Light& light, const Vec3& p, int steps, double max_distance, double jitter) {
   if (steps <= 0) return {1, 1, 1};
-  const Media marched = media_toward_light(media, light);  // MediaField keeps a reference
-  const MediaField field(marched);
+  const MediaField field(media_toward_light(media, light));
   const Vec3 to_light = scaled(light_arriving(light, p).travel, -1);
   const Vec3 optical_depth = optical_depth_along(field, p, to_light, light_march_length(light, p, max_distance), steps, jitter);
   Vec3 t;

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "graph/rhi/device_error.h"
 #include "passes/shading/media.h"
+#include "passes/shading/noise.h"
 
 namespace volgraph::shading {
 namespace {
@@ -42,13 +44,16 @@ GpuMediumCoefficients gpu_coefficients(const Medium& m) {
 
 }  // namespace
 
-MediaField::MediaField(const Media& media) : media_(media) {
-  for (const MediumVolume& v : media.volumes) world_to_local_.push_back(inverse_affine(model_matrix(v.transform)));
+MediaField::MediaField(Media media) : media_(std::move(media)) {
+  for (const MediumVolume& v : media_.volumes) world_to_local_.push_back(inverse_affine(model_matrix(v.transform)));
 }
 
 double MediaField::inside_distance(size_t i, const Vec3& p) const {
+  return inside_distance_local(i, transform_point(world_to_local_[i], p));
+}
+
+double MediaField::inside_distance_local(size_t i, const Vec3& local) const {
   const MediumVolume& v = media_.volumes[i];
-  const Vec3 local = transform_point(world_to_local_[i], p);
   switch (v.shape) {
     case Shape::box: {
       double d = 1e300;
@@ -64,20 +69,26 @@ double MediaField::inside_distance(size_t i, const Vec3& p) const {
   }
 }
 
+double MediaField::height_fog_density(const Vec3& p) const {
+  const HeightFog& h = *media_.height_fog;
+  return std::exp(std::min(-h.falloff * (p[1] - h.base_height), kMaxExponent<double>));
+}
+
+double MediaField::volume_density(size_t i, const Vec3& p) const {
+  const Vec3 local = transform_point(world_to_local_[i], p);
+  const double d = inside_distance_local(i, local);
+  if (d < 0) return 0;
+  const Noise& noise = media_.volumes[i].noise;
+  const double fade = noise.edge_fade > 0 ? std::clamp(d / noise.edge_fade, 0.0, 1.0) : 1.0;
+  if (noise.octaves == 0 || fade == 0) return fade;
+  const Vec3 q = scaled(local, 1 / noise.scale);
+  return fade * noise_density(q[0], q[1], q[2], noise.octaves, noise.coverage);
+}
+
 MediaSample MediaField::sample(const Vec3& p) const {
   MediaSample s;
   double g_weight = 0;
-  if (media_.fog) add_medium(s, g_weight, *media_.fog, 1.0);
-  if (media_.height_fog) {
-    const HeightFog& h = *media_.height_fog;
-    add_medium(s, g_weight, h.medium, std::exp(std::min(-h.falloff * (p[1] - h.base_height), kMaxExponent<double>)));
-  }
-  for (size_t i = 0; i < media_.volumes.size(); ++i) {
-    const double d = inside_distance(i, p);
-    if (d < 0) continue;
-    const double fade = media_.volumes[i].noise.edge_fade;
-    add_medium(s, g_weight, media_.volumes[i].medium, fade > 0 ? std::clamp(d / fade, 0.0, 1.0) : 1.0);
-  }
+  visit(p, [&](const Medium& m, double density) { add_medium(s, g_weight, m, density); });
   s.g = g_weight > 0 ? s.g / g_weight : 0;
   return s;
 }
@@ -103,6 +114,9 @@ GpuMediaField pack_media(const Media& media) {
     for (size_t k = 0; k < 3; ++k) g.size_shape[k] = float(v.size[k]);
     g.size_shape[3] = float(shape_code(v.shape));
     g.fade[0] = float(v.noise.edge_fade);
+    g.noise[0] = float(v.noise.octaves);
+    g.noise[1] = float(1 / v.noise.scale);
+    g.noise[2] = float(v.noise.coverage);
     g.medium = gpu_coefficients(v.medium);
   }
   return f;

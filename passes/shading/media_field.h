@@ -1,7 +1,9 @@
 // The scene's participating media at a world-space point (CPU twin of
 // shaders/include/media_field.glsl), and their packing into that include's MediaField
-// block. Global fog, exponential height fog and local volumes with an edge fade add up;
-// g is the σs-weighted mean. Noise density is not sampled yet.
+// block. Global fog, exponential height fog and local volumes add up, each medium's σs,
+// σa and emission scaled by its density there (height fog: e^(−falloff·(y − base));
+// a volume: its edge fade times its noise density, shading/noise.h); g is the σs-weighted
+// mean. Double precision; the CPU reference evaluates its media through visit().
 #pragma once
 
 #include <vector>
@@ -20,13 +22,34 @@ struct MediaSample {
 // The media with each volume's world-to-local transform computed once.
 class MediaField {
  public:
-  explicit MediaField(const Media& media);
+  explicit MediaField(Media media);
   MediaSample sample(const Vec3& p) const;
+
+  // Calls medium_with_density(medium, density) for every medium present at p with its
+  // density there (> 0), in the order sample() sums them: the global fog (1), the
+  // height fog, then each volume.
+  template <typename Visitor>
+  void visit(const Vec3& p, Visitor&& medium_with_density) const {
+    if (media_.fog) medium_with_density(*media_.fog, 1.0);
+    if (media_.height_fog) medium_with_density(media_.height_fog->medium, height_fog_density(p));
+    for (size_t i = 0; i < media_.volumes.size(); ++i) {
+      const double density = volume_density(i, p);
+      if (density > 0) medium_with_density(media_.volumes[i].medium, density);
+    }
+  }
+
+  double height_fog_density(const Vec3& p) const;
+  // Volume `i`'s density at p: 0 outside, else edge fade × noise density, in [0, 1].
+  double volume_density(size_t i, const Vec3& p) const;
   // Distance inside volume `i`'s surface at p, in its local units (negative outside).
   double inside_distance(size_t i, const Vec3& p) const;
 
+  const Media& media() const { return media_; }
+
  private:
-  const Media& media_;
+  double inside_distance_local(size_t i, const Vec3& local) const;
+
+  Media media_;
   std::vector<Mat4> world_to_local_;
 };
 
@@ -40,6 +63,7 @@ struct GpuMediumVolume {
   float world_to_local[16];
   float size_shape[4];
   float fade[4];
+  float noise[4];
   GpuMediumCoefficients medium;
 };
 struct GpuMediaField {
@@ -48,7 +72,7 @@ struct GpuMediaField {
   float height[4];
   GpuMediumVolume volumes[kMaxMediumVolumes];
 };
-static_assert(sizeof(GpuMediaField) == 16 + 2 * 48 + 16 + kMaxMediumVolumes * 144);
+static_assert(sizeof(GpuMediaField) == 16 + 2 * 48 + 16 + kMaxMediumVolumes * 160);
 
 // Throws DeviceError (unsupported) past kMaxMediumVolumes volumes.
 GpuMediaField pack_media(const Media& media);

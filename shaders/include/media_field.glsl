@@ -1,11 +1,12 @@
 // The scene's participating media at a world-space point: global homogeneous fog,
-// exponential height fog and local volumes (box, sphere, ellipsoid) with an edge fade,
-// summed; g is the σs-weighted mean of the media's. Packed by passes/shading/
-// media_field.cpp (std140); CPU twin: passes/shading/media_field.h. Noise density is not
-// sampled yet.
+// exponential height fog and local volumes (box, sphere, ellipsoid) whose density is an
+// edge fade times procedural noise (noise.glsl), summed; each medium's σs, σa and
+// emission scale by its density; g is the σs-weighted mean of the media's. Packed by
+// passes/shading/media_field.cpp (std140); CPU twin: passes/shading/media_field.h.
 #ifndef VOLGRAPH_MEDIA_FIELD_GLSL
 #define VOLGRAPH_MEDIA_FIELD_GLSL
 #include "media.glsl"
+#include "noise.glsl"
 
 const int MAX_MEDIUM_VOLUMES = 8;
 const int SHAPE_BOX = 1;
@@ -22,6 +23,7 @@ struct MediumVolume {
   mat4 world_to_local;
   vec4 size_shape;  // xyz size (box edges, sphere radius in x, ellipsoid radii), w shape
   vec4 fade;        // x edge fade (m)
+  vec4 noise;       // x octaves (0: none), y 1 / scale (per local unit), z coverage
   MediumCoefficients medium;
 };
 
@@ -53,11 +55,16 @@ float inside_distance(MediumVolume v, vec3 local) {
   return (1.0 - length(local / radii)) * min(radii.x, min(radii.y, radii.z));
 }
 
+// Edge fade (0 at the surface, 1 from `fade` inside) times the noise density, in the
+// volume's local space.
 float volume_density(MediumVolume v, vec3 p) {
   const vec3 local = (v.world_to_local * vec4(p, 1.0)).xyz;
   const float d = inside_distance(v, local);
   if (d < 0.0) return 0.0;
-  return v.fade.x > 0.0 ? clamp(d / v.fade.x, 0.0, 1.0) : 1.0;
+  const float fade = v.fade.x > 0.0 ? clamp(d / v.fade.x, 0.0, 1.0) : 1.0;
+  const int octaves = int(v.noise.x);
+  if (octaves == 0 || fade == 0.0) return fade;
+  return fade * noise_density(local * v.noise.y, octaves, v.noise.z);
 }
 
 void add_medium(inout MediaSample s, inout float g_weight, MediumCoefficients m, float density) {

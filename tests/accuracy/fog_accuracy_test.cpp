@@ -8,6 +8,7 @@
 // - on dense fog (optical depth 8.75) Hillaire's integration step errs less than
 //   Wronski's at equal slices;
 // - a negative control: a sun 5 % dimmer on the GPU fails the global fog's bound.
+// - a heterogeneous (noisy) volume: raymarch_fog and the froxel chain against the reference.
 // A technique is one row of kTechniques (its graph and its bound per scene; the closed
 // forms only on the scenes they model); the oracle scenes are the rows of kOracles.
 #include <algorithm>
@@ -182,6 +183,42 @@ TEST_F(FogAccuracy, ASunFivePercentDimmerOnTheGpuFailsTheBound) {
   EXPECT_GT(error, froxel.bound[0]);
 }
 
+// A heterogeneous medium (oracle_noise_volume: fBm noise with coverage and an edge fade,
+// scattering, absorbing and emitting, the light attenuated through it): the noise reaches
+// every technique through media_field.glsl, the reference through its CPU twin.
+// - raymarch_fog, full resolution, 256 unjittered steps (3.5 cm, a third of the finest
+//   octave's cell), 64 steps toward the light: within 0.5 % (measured 0.04 %);
+// - the froxel chain (128 linear slices of 3.9 cm, 64 shadow steps) converges as its
+//   columns shrink — 4, 2, 1 pixels a column (measured 9.4 %, 3.2 %, 0.09 %; 256 slices
+//   change none of them: each column blends the medium trilinearly across the volume's
+//   silhouette and the noise's features, which is what limits it) — within 5 % at 2 pixels
+//   and 0.5 % at 1;
+// - negative control: the volume without its noise on the GPU is far off (measured 42 %).
+TEST_F(FogAccuracy, NoisyVolumeRaymarchedAndFroxelizedAgainstTheReference) {
+  const Reference ref = reference_of(froxel_oracle("oracle_noise_volume.json", {}));
+  const Technique raymarch{"raymarch_noise", "../graphs/raymarch_fog.json",
+                           {.sets = {"fog_march.steps=256", "fog_march.shadow_steps=64", "fog_march.max_distance=9",
+                                     "fog_march.shadow_distance=5", "fog_march.jitter=false", "fog_march.resolution=full"}},
+                           {}, "per-pixel march"};
+  const double raymarch_error = error_of(load_oracle("oracle_noise_volume.json", raymarch, registry_), ref,
+                                         "noisy volume, raymarch_fog 256 steps");
+  EXPECT_LT(raymarch_error, 0.005) << "raymarch_fog on the noisy volume: relative mean error";
+
+  double previous = 1;
+  for (const auto& [tile, bound] : {std::pair{4, 1.0}, {2, 0.05}, {1, 0.005}}) {
+    const Overrides overrides{.sets = {"fog_media.tile=" + std::to_string(tile)}};
+    const double error = error_of(froxel_oracle("oracle_noise_volume.json", overrides), ref,
+                                  "noisy volume, froxel chain, " + std::to_string(tile) + "-pixel columns");
+    EXPECT_LT(error, previous) << tile << "-pixel columns: relative mean error must fall as columns shrink";
+    EXPECT_LT(error, bound) << tile << "-pixel columns: relative mean error";
+    previous = error;
+  }
+
+  LoadedConfig uniform = froxel_oracle("oracle_noise_volume.json", {});
+  uniform.config.scene.media.volumes[0].noise.octaves = 0;
+  EXPECT_GT(error_of(uniform, ref, "the volume without its noise on the GPU"), 0.2);
+}
+
 TEST(FogAccuracyHarness, PixelsSeeingASurfaceAndTheirNeighboursAreNotCompared) {
   PassRegistry registry;
   register_builtin_passes(registry);
@@ -192,14 +229,6 @@ TEST(FogAccuracyHarness, PixelsSeeingASurfaceAndTheirNeighboursAreNotCompared) {
   sky.objects.clear();
   const std::vector<bool> all = accuracy::fog_only_pixels(sky, 8, 8);
   EXPECT_EQ(std::count(all.begin(), all.end(), true), 64) << "nothing but background";
-}
-
-TEST(FogAccuracyHarness, ScenesTheReferenceRendersDifferentlyAreRefused) {
-  Scene scene;
-  scene.media.volumes.push_back({});
-  EXPECT_EQ(accuracy::reference_gap(scene), "");
-  scene.media.volumes[0].noise.edge_fade = 0.5;
-  EXPECT_NE(accuracy::reference_gap(scene), "");
 }
 
 }  // namespace

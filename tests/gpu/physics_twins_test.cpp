@@ -3,19 +3,27 @@
 // float (passes/shading/phase.h, media.h, airlight.h, light_volume_integral.h), over a table that
 // covers the traps (g → ±1, x → 0, dense and empty media, huge distances): relative
 // error ≤ 2e-5 (GLSL lets exp be off by 3 + 2|x| ULP; our twins use the same formulas).
+// The noise (noise.glsl ↔ noise.h in float, same inputs) and the media field
+// (media_field.glsl ↔ media_field.h in double, noisy volumes) at many points: bounds at
+// NoiseAndMediaFieldMatchTheirCpuTwins.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <span>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "passes/shading/airlight.h"
 #include "passes/shading/light_volume_integral.h"
+#include "passes/shading/media_field.h"
+#include "passes/shading/noise.h"
 #include "passes/shading/media.h"
 #include "passes/shading/phase.h"
 #include "graph/rhi/spirv_reflect.h"
 #include "tests/gpu/shaders/gpu_test_shaders.h"
 #include "tests/gpu/backends.h"
+#include "tests/support/random_graph.h"
 
 namespace volgraph::testing {
 namespace {
@@ -85,61 +93,182 @@ std::array<float, 12> expected(const Case& c) {
 // sinh/cosh: the same 1e-4.
 float tolerance(size_t column) { return column == 8 || column == 9 || column == 11 ? 1e-4f : 2e-5f; }
 
+// A buffer bound to a test shader, in binding order.
+struct TwinInput {
+  std::span<const std::byte> bytes;
+  uint32_t usage;  // buffer_usage::uniform or storage
+};
+
+// Runs test shader `shader` over `rows` rows (64 invocations a workgroup) with `inputs`
+// at bindings 0 … n − 1 and a storage buffer of `result_bytes` after them; returns it.
+std::vector<std::byte> run_twin_shader(rhi::Device& device, const char* shader, const std::vector<TwinInput>& inputs,
+                                       size_t rows, uint64_t result_bytes) {
+  using namespace rhi;
+  std::vector<BindGroupEntry> entries;
+  for (const TwinInput& in : inputs) {
+    const BufferId buffer = device.create_buffer({"twin input", in.bytes.size(), in.usage | buffer_usage::copy_dst});
+    device.write_buffer(buffer, 0, in.bytes);
+    entries.push_back(BindGroupEntry::of(uint32_t(entries.size()), buffer));
+  }
+  const BufferId output = device.create_buffer({"results", result_bytes, buffer_usage::storage | buffer_usage::copy_src});
+  const BufferId readback = device.create_buffer({"readback", result_bytes, buffer_usage::copy_dst});
+  entries.push_back(BindGroupEntry::of(uint32_t(entries.size()), output));
+
+  const auto spirv = gpu_test_shader_spirv(shader);
+  const rhi::ShaderStageCode stage{spirv, shader_stage::compute};
+  const auto layouts = reflect_bind_group_layouts({&stage, 1}, shader);
+  const BindGroupLayoutId layout = device.create_bind_group_layout(layouts[0]);
+  const ComputePipelineId pipeline = device.create_compute_pipeline({shader, device.create_shader_module(shader, spirv), "main", {layout}});
+  const BindGroupId group = device.create_bind_group({shader, layout, entries});
+
+  auto encoder = device.create_command_encoder(shader);
+  const AccessState written = access_state(Usage::storage_write, PassKind::compute, ResourceKind::buffer);
+  const AccessState copied = access_state(Usage::copy_src, PassKind::transfer, ResourceKind::buffer);
+  const ResourceBarrier before{{}, output, {}, written}, after{{}, output, written, copied};
+  encoder->barrier({&before, 1});
+  encoder->begin_compute_pass(shader);
+  encoder->set_pipeline(pipeline);
+  encoder->set_bind_group(0, group);
+  encoder->dispatch(uint32_t((rows + 63) / 64));
+  encoder->end_compute_pass();
+  encoder->barrier({&after, 1});
+  encoder->copy_buffer_to_buffer(output, readback, result_bytes);
+  device.submit(std::move(encoder));
+  return device.read_buffer(readback);
+}
+
 class PhysicsTwins : public OnEachBackend<> {
  protected:
   Backend backend() const override { return GetParam(); }
 };
 
 TEST_P(PhysicsTwins, ShadersMatchTheirCpuTwins) {
-  using namespace rhi;
-  {
-    rhi::Device& device = this->device();
-    const std::vector<Case> table = cases();
-    const uint64_t in_bytes = table.size() * sizeof(Case), out_bytes = table.size() * 48;
-    const BufferId input = device.create_buffer({"cases", in_bytes, buffer_usage::storage | buffer_usage::copy_dst});
-    const BufferId output = device.create_buffer({"results", out_bytes, buffer_usage::storage | buffer_usage::copy_src});
-    const BufferId readback = device.create_buffer({"readback", out_bytes, buffer_usage::copy_dst});
-    device.write_buffer(input, 0, std::as_bytes(std::span(table)));
-
-    const auto spirv = gpu_test_shader_spirv("physics_twins.comp");
-    const rhi::ShaderStageCode stage{spirv, shader_stage::compute};
-    const auto layouts = reflect_bind_group_layouts({&stage, 1}, "physics twins");
-    const BindGroupLayoutId layout = device.create_bind_group_layout(layouts[0]);
-    const ComputePipelineId pipeline =
-        device.create_compute_pipeline({"physics twins", device.create_shader_module("physics_twins.comp", spirv), "main", {layout}});
-    const BindGroupId group =
-        device.create_bind_group({"physics twins", layout, {BindGroupEntry::of(0, input), BindGroupEntry::of(1, output)}});
-
-    auto encoder = device.create_command_encoder("physics twins");
-    const AccessState written = access_state(Usage::storage_write, PassKind::compute, ResourceKind::buffer);
-    const AccessState copied = access_state(Usage::copy_src, PassKind::transfer, ResourceKind::buffer);
-    const ResourceBarrier before{{}, output, {}, written}, after{{}, output, written, copied};
-    encoder->barrier({&before, 1});
-    encoder->begin_compute_pass("physics twins");
-    encoder->set_pipeline(pipeline);
-    encoder->set_bind_group(0, group);
-    encoder->dispatch(uint32_t((table.size() + 63) / 64));
-    encoder->end_compute_pass();
-    encoder->barrier({&after, 1});
-    encoder->copy_buffer_to_buffer(output, readback, out_bytes);
-    device.submit(std::move(encoder));
-    const std::vector<std::byte> bytes = device.read_buffer(readback);
-    const auto* results = reinterpret_cast<const float*>(bytes.data());
-
-    const char* names[] = {"hg", "schlick", "dual hg", "rayleigh", "1-exp/x", "hillaire L", "hillaire T", "height depth", "airlight", "airlight σt=0", "attenuated length", "light_volume I"};
-    float worst_airlight = 0;
-    for (size_t i = 0; i < table.size(); ++i) {
-      const std::array<float, 12> want = expected(table[i]);
-      for (size_t k = 0; k < 12; ++k) {
-        const float got = results[12 * i + k];
-        ASSERT_TRUE(std::isfinite(got)) << names[k] << " case " << i;
-        if (k == 8 || k == 9 || k == 11) worst_airlight = std::max(worst_airlight, std::abs(got - want[k]) / (std::abs(want[k]) + 1e-30f));
-        EXPECT_NEAR(got, want[k], tolerance(k) * std::abs(want[k]) + 1e-30f) << names[k] << " case " << i << " g " << table[i].g
-                                                                     << " cos " << table[i].cos_theta << " x " << table[i].x;
-      }
+  const std::vector<Case> table = cases();
+  const std::vector<std::byte> bytes = run_twin_shader(device(), "physics_twins.comp",
+                                                       {{std::as_bytes(std::span(table)), rhi::buffer_usage::storage}},
+                                                       table.size(), table.size() * 48);
+  const auto* results = reinterpret_cast<const float*>(bytes.data());
+  const char* names[] = {"hg", "schlick", "dual hg", "rayleigh", "1-exp/x", "hillaire L", "hillaire T", "height depth", "airlight", "airlight σt=0", "attenuated length", "light_volume I"};
+  float worst_airlight = 0;
+  for (size_t i = 0; i < table.size(); ++i) {
+    const std::array<float, 12> want = expected(table[i]);
+    for (size_t k = 0; k < 12; ++k) {
+      const float got = results[12 * i + k];
+      ASSERT_TRUE(std::isfinite(got)) << names[k] << " case " << i;
+      if (k == 8 || k == 9 || k == 11) worst_airlight = std::max(worst_airlight, std::abs(got - want[k]) / (std::abs(want[k]) + 1e-30f));
+      EXPECT_NEAR(got, want[k], tolerance(k) * std::abs(want[k]) + 1e-30f) << names[k] << " case " << i << " g " << table[i].g
+                                                                   << " cos " << table[i].cos_theta << " x " << table[i].x;
     }
-    std::printf("airlight and light_volume I(t) GPU vs CPU twin: %.3g relative at most\n", worst_airlight);
   }
+  std::printf("airlight and light_volume I(t) GPU vs CPU twin: %.3g relative at most\n", worst_airlight);
+}
+
+// std430 mirror of media_twins.comp's Point.
+struct NoisePoint {
+  float position[4];  // xyz, w octaves
+  float noise[4];     // x coverage, y octave of the single gradient noise
+};
+
+// Media with every kind of medium and noisy volumes of each shape, turned and scaled.
+Media noisy_media() {
+  Media media;
+  media.fog = Medium{.sigma_s = {0.02, 0.03, 0.04}, .sigma_a = {0.01, 0.01, 0.01}, .g = 0.2};
+  media.height_fog = HeightFog{.medium = {.sigma_s = {0.05, 0.05, 0.05}, .g = -0.3}, .base_height = 0, .falloff = 0.3};
+  const Shape shapes[] = {Shape::box, Shape::sphere, Shape::ellipsoid, Shape::box};
+  for (size_t i = 0; i < std::size(shapes); ++i) {
+    MediumVolume v{.shape = shapes[i], .size = {2.0, 1.5, 1.2}};
+    v.transform.translate = {-3.0 + 2.0 * double(i), 1.0, -4.0};
+    v.transform.rotate_deg = {15.0 * double(i), 30, 0};
+    v.transform.scale = {1, 1.0 + 0.25 * double(i), 1};
+    v.medium = {.sigma_s = {2, 3, 4}, .sigma_a = {1, 0.5, 0.25}, .g = 0.6, .emission = {0.5, 0.25, 0.125}};
+    v.noise = {.octaves = int(2 * i + 1), .scale = 0.5 + 0.25 * double(i), .coverage = 1.0 - 0.2 * double(i), .edge_fade = 0.1 * double(i)};
+    if (i == 3) v.noise.octaves = 0;  // an edge fade without noise
+    media.volumes.push_back(v);
+  }
+  return media;
+}
+
+// Noise (noise.glsl against noise.h<float>, the same float inputs; values in about
+// [−1, 1]): the hash is exact, so only rounding differs (the fade polynomial, the lerps,
+// fused or not): |Δ| ≤ 2e-6 for the gradient noise and the fBm, 2e-6 / coverage for
+// the density (the coverage remap divides by it). Lattice positions up to ±40 cells
+// (×128 at the eighth octave) and past the ±2^30 clamp.
+// Media field (media_field.glsl in float against media_field.h in double), at points in
+// and around the volumes: |Δσ| ≤ 2e-5 × the σ of the media there at full density (the
+// height fog's at max(its density, 1)), summed (the world-to-local transform in float moves the local point by ~1e-7 × |p|, and the
+// fBm's slope, ~octaves / (scale · coverage), turns that into density); |Δg| ≤ 1e-4.
+TEST_P(PhysicsTwins, NoiseAndMediaFieldMatchTheirCpuTwins) {
+  const Media media = noisy_media();
+  const shading::GpuMediaField packed = shading::pack_media(media);
+  const shading::MediaField field(media);
+  test::Rng rng(5);
+  std::vector<NoisePoint> points;
+  const float coverages[] = {1.0f, 0.7f, 0.3f, 0.01f};
+  for (size_t i = 0; i < 4096; ++i) {
+    const float spread = i % 512 == 7 ? 3e9f : 80.0f;
+    NoisePoint p{};
+    for (size_t k = 0; k < 3; ++k) p.position[k] = float(i % 2 ? (rng.unit() - 0.5) * spread : 0.0);
+    if (i % 2 == 0) {  // around the volumes
+      p.position[0] = float(-5.0 + 8.0 * rng.unit());
+      p.position[1] = float(-0.5 + 3.0 * rng.unit());
+      p.position[2] = float(-6.0 + 4.0 * rng.unit());
+    }
+    p.position[3] = float(1 + i % shading::kMaxNoiseOctaves);
+    p.noise[0] = coverages[i % 4];
+    p.noise[1] = float(i % 7);
+    points.push_back(p);
+  }
+  const std::vector<std::byte> bytes =
+      run_twin_shader(device(), "media_twins.comp",
+                      {{std::as_bytes(std::span(&packed, 1)), rhi::buffer_usage::uniform},
+                       {std::as_bytes(std::span(points)), rhi::buffer_usage::storage}},
+                      points.size(), points.size() * 64);
+  const auto* results = reinterpret_cast<const float*>(bytes.data());
+  float worst_noise = 0, worst_density = 0;
+  double worst_sigma = 0, worst_g = 0;
+  size_t inside_partial = 0, noise_away_from_zero = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const NoisePoint& q = points[i];
+    const float* got = results + 16 * i;
+    const int octaves = int(q.position[3]);
+    const float px = q.position[0], py = q.position[1], pz = q.position[2], coverage = q.noise[0];
+    const float noise = shading::gradient_noise(px, py, pz, uint32_t(q.noise[1]));
+    const float fbm = shading::fbm(px, py, pz, octaves);
+    const float density = shading::noise_density(px, py, pz, octaves, coverage);
+    for (size_t k = 0; k < 16; ++k) ASSERT_TRUE(std::isfinite(got[k])) << "point " << i << " value " << k;
+    EXPECT_NEAR(got[0], noise, 2e-6f) << "gradient noise at point " << i;
+    EXPECT_NEAR(got[1], fbm, 2e-6f) << "fbm at point " << i << ", " << octaves << " octaves";
+    EXPECT_NEAR(got[2], density, 2e-6f / coverage) << "noise density at point " << i << ", coverage " << coverage;
+    noise_away_from_zero += std::abs(fbm) > 0.1f;
+    worst_noise = std::max({worst_noise, std::abs(got[0] - noise), std::abs(got[1] - fbm)});
+    worst_density = std::max(worst_density, std::abs(got[2] - density) * coverage);
+
+    const Vec3 p{px, py, pz};
+    const shading::MediaSample want = field.sample(p);
+    Vec3 full_sigma_s{0, 0, 0}, full_sigma_a{0, 0, 0}, full_emission{0, 0, 0};
+    field.visit(p, [&](const Medium& m, double density_there) {
+      const double at_least_full = std::max(density_there, 1.0);  // the height fog's exceeds 1 below its base
+      full_sigma_s = shading::add(full_sigma_s, shading::scaled(m.sigma_s, at_least_full));
+      full_sigma_a = shading::add(full_sigma_a, shading::scaled(m.sigma_a, at_least_full));
+      full_emission = shading::add(full_emission, shading::scaled(m.emission, at_least_full));
+      inside_partial += density_there < 1 && m.g == 0.6;  // a volume, faded or noisy here
+    });
+    for (size_t c = 0; c < 3; ++c) {
+      const double ds = std::abs(got[4 + c] - want.sigma_s[c]), da = std::abs(got[8 + c] - want.sigma_a[c]);
+      const double de = std::abs(got[12 + c] - want.emission[c]);
+      EXPECT_LE(ds, 2e-5 * full_sigma_s[c]) << "σs channel " << c << " at point " << i;
+      EXPECT_LE(da, 2e-5 * full_sigma_a[c]) << "σa channel " << c << " at point " << i;
+      EXPECT_LE(de, 2e-5 * full_emission[c]) << "emission channel " << c << " at point " << i;
+      if (full_sigma_s[c] > 0) worst_sigma = std::max(worst_sigma, ds / full_sigma_s[c]);
+    }
+    EXPECT_NEAR(got[7], want.g, 1e-4) << "g at point " << i;
+    worst_g = std::max(worst_g, std::abs(got[7] - want.g));
+  }
+  EXPECT_GT(noise_away_from_zero, points.size() / 4) << "the noise varies";
+  EXPECT_GT(inside_partial, 500u) << "points where a volume's density is between 0 and 1";
+  std::printf("noise GPU vs CPU twin (float): %.3g absolute at most, density %.3g × coverage; media field vs double twin: "
+              "σ %.3g of the full σ, g %.3g (%zu points of partial density)\n",
+              worst_noise, worst_density, worst_sigma, worst_g, inside_partial);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, PhysicsTwins, ::testing::ValuesIn(gpu_backends()), backend_test_name);

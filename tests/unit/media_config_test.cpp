@@ -65,12 +65,13 @@ TEST_F(MediaConfig, AlbedoAndExtinction) {
 
 TEST_F(MediaConfig, VolumesHaveASizeAndNoise) {
   const Scene s = scene(R"({ "volumes": [ { "shape": "ellipsoid", "size": [2, 1, 3], "sigma_s": [1, 1, 1],
-                                            "noise": { "octaves": 4, "scale": 0.5, "edge_fade": 0.2 } } ] })");
+                                            "noise": { "octaves": 4, "scale": 0.5, "coverage": 0.6, "edge_fade": 0.2 } } ] })");
   ASSERT_EQ(s.media.volumes.size(), 1u);
   EXPECT_EQ(s.media.volumes[0].shape, Shape::ellipsoid);
   EXPECT_EQ(s.media.volumes[0].size, (Vec3{2, 1, 3}));
   EXPECT_EQ(s.media.volumes[0].noise.octaves, 4);
   EXPECT_EQ(s.media.volumes[0].noise.scale, 0.5);
+  EXPECT_EQ(s.media.volumes[0].noise.coverage, 0.6);
   EXPECT_EQ(s.media.volumes[0].noise.edge_fade, 0.2);
   EXPECT_TRUE(s.features() & feature_bit(SceneFeature::local_volumes));
 }
@@ -86,6 +87,23 @@ TEST_F(MediaConfig, EachMisuseGetsOneClearError) {
   EXPECT_NE(error(R"({ "volumes": [ { "sigma_s": [1, 1, 1], "noise": { "octaves": 9 } } ] })").find("/scene/media/volumes/0/noise/octaves"),
             std::string::npos);
   EXPECT_NE(error(R"({ "fog": { "transmittance": { "colour": [0.5, 0.5, 0.5] } } })").find("did you mean"), std::string::npos);
+}
+
+TEST_F(MediaConfig, NoiseParametersAreCheckedWhereTheyAre) {
+  auto noise_error = [&](const std::string& noise) {
+    return error(R"({ "volumes": [ { "sigma_s": [1, 1, 1], "noise": )" + noise + " } ] }");
+  };
+  EXPECT_NE(noise_error(R"({ "octaves": 0 })").find("/scene/media/volumes/0/noise/octaves: expected an integer in [1, 8], got 0"),
+            std::string::npos);
+  EXPECT_NE(noise_error(R"({ "octaves": 2.5 })").find("/scene/media/volumes/0/noise/octaves"), std::string::npos);
+  EXPECT_NE(noise_error(R"({ "octaves": 3, "scale": 0 })").find("/scene/media/volumes/0/noise/scale: expected a number in"),
+            std::string::npos);
+  EXPECT_NE(noise_error(R"({ "octaves": 3, "coverage": 0 })").find("/scene/media/volumes/0/noise/coverage"), std::string::npos);
+  EXPECT_NE(noise_error(R"({ "octaves": 3, "coverage": 1.5 })").find("/scene/media/volumes/0/noise/coverage"), std::string::npos);
+  EXPECT_NE(noise_error(R"({ "scale": 2 })").find("/scene/media/volumes/0/noise/scale: \"scale\" needs \"octaves\""),
+            std::string::npos);
+  const Scene faded = scene(R"({ "volumes": [ { "sigma_s": [1, 1, 1], "noise": { "edge_fade": 0.3 } } ] })");
+  EXPECT_EQ(faded.media.volumes[0].noise.octaves, 0) << "an edge fade alone: no noise";
 }
 
 }  // namespace
