@@ -3,7 +3,8 @@
 // clipped to the scene's bounds), snapped to whole texels, with its depth range over the
 // whole scene so that every caster is drawn (the scene's geometry and its local media
 // volumes, which volumetric shadows light through); a spot light gets a perspective projection
-// over its outer cone, near and far around the scene's bounds (passes/shading/shadow_fit.h).
+// over its outer cone, near and far around the scene's bounds — and, in global or height fog,
+// the camera's view to its far plane (passes/shading/shadow_fit.h).
 #include <memory>
 #include <optional>
 #include <span>
@@ -25,8 +26,17 @@ namespace {
 // aspect is the graph's output size (what the scene pass renders unless its color size is
 // overridden); with no output size known, fitted to the whole scene.
 shading::Mat4 light_view_projection(const PassContext& c, const Light& light, const shading::Box& scene) {
-  if (light.type == LightType::spot) return shading::fit_spot(light, scene);
   const Extent frame = c.graph.output_size;
+  if (light.type == LightType::spot) {
+    // Global or height fog is lit wherever the camera looks: the spot's depth range reaches
+    // the camera's far plane, or fog behind a caster but beyond the scene's box would count as lit.
+    const Media& media = c.scene->media;
+    if (!media.fog && !media.height_fog) return shading::fit_spot(light, scene);
+    const double aspect = frame.width && frame.height ? double(frame.width) / frame.height : 1.0;
+    const Camera& camera = c.scene->camera;
+    const auto corners = shading::frustum_slice_corners(camera, aspect, {camera.near, camera.far});
+    return shading::fit_spot(light, shading::including(scene, corners));
+  }
   if (frame.width == 0 || frame.height == 0) return shading::fit_directional_to_scene(light.direction, scene).view_projection();
   const Extent map = c.desc("depth").extent;
   const shading::ReceiverView view{c.scene->camera, double(frame.width) / frame.height,

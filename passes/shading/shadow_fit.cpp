@@ -282,34 +282,35 @@ Mat4 fit_spot(const Light& light, const Box& scene) {
   return perspective(2 * light.outer_cone_deg, 1.0, near, far) * view;
 }
 
+Box including(const Box& box, std::span<const Vec3> points) {
+  Box grown = box;
+  for (const Vec3& p : points) {
+    for (size_t a = 0; a < 3; ++a) {
+      grown.min[a] = std::min(grown.min[a], p[a]);
+      grown.max[a] = std::max(grown.max[a], p[a]);
+    }
+  }
+  return grown;
+}
+
 Box volume_bounds(const MediumVolume& volume) {
   const double r = volume.size[0];
   const Vec3 half = volume.shape == Shape::box ? scaled(volume.size, 0.5) : volume.shape == Shape::sphere ? Vec3{r, r, r} : volume.size;
   const Mat4 to_world = model_matrix(volume.transform);
-  Box box{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
+  std::array<Vec3, 8> corners;
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3 local{corner & 1 ? half[0] : -half[0], corner & 2 ? half[1] : -half[1], corner & 4 ? half[2] : -half[2]};
-    const Vec3 p = transform_point(to_world, local);
-    for (size_t a = 0; a < 3; ++a) {
-      box.min[a] = std::min(box.min[a], p[a]);
-      box.max[a] = std::max(box.max[a], p[a]);
-    }
+    corners[size_t(corner)] = transform_point(to_world, local);
   }
-  return box;
+  return including(Box{corners[0], corners[0]}, corners);
 }
 
 std::optional<Box> shadowed_bounds(const std::optional<Box>& geometry, const Media& media) {
   std::optional<Box> bounds = geometry;
   for (const MediumVolume& volume : media.volumes) {
     const Box v = volume_bounds(volume);
-    if (!bounds) {
-      bounds = v;
-      continue;
-    }
-    for (size_t a = 0; a < 3; ++a) {
-      bounds->min[a] = std::min(bounds->min[a], v.min[a]);
-      bounds->max[a] = std::max(bounds->max[a], v.max[a]);
-    }
+    const std::array<Vec3, 2> extremes{v.min, v.max};
+    bounds = bounds ? including(*bounds, extremes) : v;
   }
   return bounds;
 }

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "graph/scene/scene.h"
@@ -58,6 +59,9 @@ std::array<Vec3, 8> frustum_slice_corners(const Camera& camera, double aspect, c
 // The vertices of the convex region a frustum slice (corners as above) and a box share;
 // empty when they do not meet.
 std::vector<Vec3> slice_box_intersection(const std::array<Vec3, 8>& slice, const Box& box);
+
+// `box` grown to hold `points`.
+Box including(const Box& box, std::span<const Vec3> points);
 
 // The world box around a local media volume (its shape's box, transformed).
 Box volume_bounds(const MediumVolume& volume);

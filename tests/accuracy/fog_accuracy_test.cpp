@@ -29,7 +29,7 @@ namespace {
 const std::string kTestConfigs = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/";
 
 const char* const kOracles[] = {"oracle_global_fog.json", "oracle_height_fog.json", "oracle_fog_sphere.json",
-                                "oracle_dense_fog.json", "oracle_point_fog.json"};
+                                "oracle_dense_fog.json", "oracle_point_fog.json", "oracle_shadowed_fog.json"};
 constexpr size_t kOracleCount = std::size(kOracles);
 
 constexpr double kNotApplicable = -1;  // a technique's bound on a scene it cannot render
@@ -47,23 +47,27 @@ struct Technique {
 };
 
 const Technique kTechniques[] = {
-    {"froxel_hillaire", "", {.variants = {"fog_integral=hillaire"}}, {0.02, 0.05, 0.2, 0.02, 0.2},
+    {"froxel_hillaire", "", {.variants = {"fog_integral=hillaire"}}, {0.02, 0.05, 0.2, 0.02, 0.2, 0.25},
      "x, y: one froxel column per 8×8 pixels, blended bilinearly — smooth in homogeneous fog (the phase function "
      "varies across a column), coarse where the height fog's density changes with the ray's elevation, coarsest at "
      "the hard-edged sphere's silhouette and across the point light's glow, which peaks inside a column (12×8 columns "
-     "there: 10 %); z: 64 slices, exact per homogeneous slice; the sun toward a froxel not attenuated by the height "
+     "there: 10 %) and across the spot's shadow shaft (13 %: the shaft is about a column wide); z: 64 slices, exact per homogeneous slice; the sun toward a froxel not attenuated by the height "
      "fog (≈1 %); fp16 volumes"},
     {"raymarch_fog", "../graphs/raymarch_fog.json",
      {.sets = {"fog_march.resolution=full", "fog_march.steps=256", "fog_march.shadow_steps=64", "fog_march.max_distance=1000",
                "fog_march.jitter=false"}},
-     {0.005, 0.005, 0.02, 0.005, 0.01},
+     {0.005, 0.005, 0.02, 0.005, 0.01, 0.02},
      "256 midpoint steps to the far plane per pixel, 64 toward the light: the reference's adaptive integral to "
      "quadrature error, except across the sphere's hard edges (a step straddles them) and the point light's peak; "
-     "fp16 outputs"},
-    {"analytic_fog", "../graphs/analytic_fog.json", {}, {0.005, kNotApplicable, kNotApplicable, 0.005, 0.005},
+     "fp16 outputs; with shadows, the 2048² shadow map against exact rays (0.6 %)"},
+    {"analytic_fog", "../graphs/analytic_fog.json", {}, {0.005, kNotApplicable, kNotApplicable, 0.005, 0.005, kNotApplicable},
      "closed form for a directional light in homogeneous fog (exact); the point light's airlight integral by "
      "Gauss–Legendre quadrature (8 panels × 8 nodes); fp16 outputs. Needs a global fog"},
-    {"height_fog", "../graphs/height_fog.json", {}, {kNotApplicable, 0.01, kNotApplicable, kNotApplicable, kNotApplicable},
+    {"light_volume", "../graphs/light_volume_fog.json", {}, {0.01, kNotApplicable, kNotApplicable, 0.01, 0.01, 0.005},
+     "without shadows no volume is drawn: each pixel's closed-form (directional) or Gauss–Legendre (point, spot) "
+     "integral to the far plane; with the spot's shadow, the 512² hard shadow map against exact rays (0.14 %); fp16 "
+     "outputs. Needs a homogeneous global fog"},
+    {"height_fog", "../graphs/height_fog.json", {}, {kNotApplicable, 0.01, kNotApplicable, kNotApplicable, kNotApplicable, kNotApplicable},
      "closed-form optical depth along the view ray, exact; but the sun reaches each point undimmed by the fog "
      "above it, which the reference dims (optical depth ≈ 0.01·e^(−y)/0.9 straight toward this sun). Needs height fog"},
 };
