@@ -2,6 +2,8 @@
 // L_scat, from the two images the technique wrote (in-scattered radiance and
 // transmittance, at the frame's resolution or lower: read bilinearly at each pixel).
 // Shaders: shaders/fog_apply_*.frag (shaders/include/fog_image_lookup.glsl).
+#include <array>
+
 #include "graph/execute/pass_execution.h"
 #include "passes/fog/apply_draws.h"
 #include "passes/fog/fog_passes.h"
@@ -13,7 +15,9 @@ class FogApplyExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
     if (!draws_.prepared()) prepare(c);
-    draws_.record(c, group_);
+    rhi::BindGroupId& group = groups_[c.parity()];  // the images may be history pairs' (pixel_temporal)
+    if (!group) group = make_group(c);
+    draws_.record(c, group);
   }
 
  private:
@@ -26,14 +30,20 @@ class FogApplyExecution final : public PassExecution {
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(frame)));
     SamplerDesc bilinear{"bilinear"};
     bilinear.filter = Filter::linear;
-    group_ = c.device.create_bind_group({"fog_apply", draws_.layout(),
-                                         {BindGroupEntry::of(0, c.view("fog_scattering")), BindGroupEntry::of(1, c.view("fog_transmittance")),
-                                          BindGroupEntry::of(2, c.device.create_sampler(bilinear)), BindGroupEntry::of(3, frame_)}});
+    bilinear_ = c.device.create_sampler(bilinear);
+  }
+
+  rhi::BindGroupId make_group(PassContext& c) {
+    using rhi::BindGroupEntry;
+    return c.device.create_bind_group({"fog_apply", draws_.layout(),
+                                       {BindGroupEntry::of(0, c.view("fog_scattering")), BindGroupEntry::of(1, c.view("fog_transmittance")),
+                                        BindGroupEntry::of(2, bilinear_), BindGroupEntry::of(3, frame_)}});
   }
 
   fog::ApplyDraws draws_;
   rhi::BufferId frame_;
-  rhi::BindGroupId group_;
+  rhi::SamplerId bilinear_;
+  std::array<rhi::BindGroupId, 2> groups_;
 };
 
 }  // namespace
@@ -51,6 +61,7 @@ PassDecl fog_apply_pass() {
   };
   d.needs = feature_bit(SceneFeature::medium);
   d.make_execution = [] { return std::unique_ptr<PassExecution>(new FogApplyExecution()); };
+  d.parity_bind_groups = true;
   return d;
 }
 
