@@ -99,6 +99,10 @@ ResourceVersion GraphBuilder::modify(uint32_t pass, uint16_t slot, ResourceVersi
                          "'; chain the modifications (wire this slot to '" + other + "')");
   }
   check_not_read_and_modified(pass, slot, what, SlotDirection::inout);
+  if (r.previous != kNone) {
+    throw GraphError(pass, slot,
+                     "'" + r.desc.name + "' is kept as next frame's history by its pass; read it instead of modifying it");
+  }
   GraphPass& p = graph_.passes[pass];
   const SlotDecl& s = p.decl->slots[slot];
   p.uses.push_back({what.resource, what.version, slot, s.usage, SlotDirection::inout, false});
@@ -117,6 +121,39 @@ void GraphBuilder::mark_output(ResourceVersion what) {
   if (std::find(graph_.outputs.begin(), graph_.outputs.end(), what) == graph_.outputs.end()) {
     graph_.outputs.push_back(what);
   }
+}
+
+ResourceVersion GraphBuilder::read_history(uint32_t pass, uint16_t slot, ResourceVersion current) {
+  check_slot(pass, slot, SlotDirection::history, nullptr);
+  const GraphPass& p = graph_.passes[pass];
+  const SlotDecl& s = p.decl->slots[slot];
+  const int output = p.decl->slot_index(s.history_of);
+  if (current.resource >= graph_.resources.size() || output < 0 || graph_.resources[current.resource].creator != pass ||
+      std::none_of(p.uses.begin(), p.uses.end(), [&](const ResourceUse& u) {
+        return u.resource == current.resource && u.slot == uint16_t(output) && u.direction == SlotDirection::output;
+      })) {
+    throw GraphError(pass, slot, "history slot '" + s.name + "' follows output '" + s.history_of + "' of its own pass");
+  }
+  GraphResource& followed = graph_.resources[current.resource];
+  if (followed.version_writers.size() > 1) {
+    throw GraphError(pass, slot, "'" + followed.desc.name + "' is modified by pass '" +
+                                     graph_.passes[followed.version_writers[1]].name + "'; a history must be the pass's own output");
+  }
+  if (!usage_fits_kind(s.usage, followed.desc.kind)) {
+    throw GraphError(pass, slot, "history slot '" + s.name + "' cannot read a " + std::string(kind_name(followed.desc.kind)) +
+                                     " as " + std::string(usage_name(s.usage)));
+  }
+  followed.desc.persistent = true;
+  GraphResource previous;
+  previous.desc = followed.desc;
+  previous.desc.name = p.name + "." + s.name;
+  previous.version_writers.push_back(kNone);
+  previous.previous_of = current.resource;
+  graph_.resources.push_back(std::move(previous));
+  const uint32_t id = static_cast<uint32_t>(graph_.resources.size() - 1);
+  graph_.resources[current.resource].previous = id;
+  graph_.passes[pass].uses.push_back({id, 0, slot, s.usage, SlotDirection::history, false});
+  return {id, 0};
 }
 
 Graph GraphBuilder::finish() { return std::move(graph_); }

@@ -40,10 +40,16 @@ struct GraphPass {
   std::vector<ParamValue> params;  // as the decl's params; empty: the defaults
 };
 
+// A history pair: an output a history slot follows (`previous` set) and the resource
+// that slot reads (`previous_of` set), last frame's content of the output — made by no
+// pass of this frame (creator and version 0's writer kNone). Both are persistent; the
+// executor swaps their physical objects every frame.
 struct GraphResource {
   ResourceDesc desc;
-  uint32_t creator = kNone;              // pass that makes version 0
+  uint32_t creator = kNone;              // pass that makes version 0 (kNone: made by the last frame)
   std::vector<uint32_t> version_writers;  // pass that made version v (v = 0: creator)
+  uint32_t previous = kNone;             // an output with a history: the resource holding its last frame
+  uint32_t previous_of = kNone;          // a history: the output whose last frame it holds
 };
 
 struct Graph {
@@ -74,6 +80,9 @@ class GraphBuilder {
   // An inout slot: reads `what` and makes the next version of the same resource.
   ResourceVersion modify(uint32_t pass, uint16_t slot, ResourceVersion what);
   void mark_output(ResourceVersion what);
+  // A history slot of `pass` following `current`, the output the pass creates through
+  // the slot's history_of: makes the previous-frame resource and reads it.
+  ResourceVersion read_history(uint32_t pass, uint16_t slot, ResourceVersion current);
 
   Graph& graph() { return graph_; }
   Graph finish();

@@ -90,6 +90,16 @@ SlotDecl slot_inout(std::string name, ResourceKind kind, Usage usage, std::strin
   return s;
 }
 
+SlotDecl slot_history(std::string name, std::string output_slot, std::string doc) {
+  SlotDecl s;
+  s.name = std::move(name);
+  s.direction = SlotDirection::history;
+  s.usage = Usage::sampled;
+  s.history_of = std::move(output_slot);
+  s.doc = std::move(doc);
+  return s;
+}
+
 std::string_view pass_kind_name(PassKind kind) {
   switch (kind) {
     case PassKind::compute: return "compute";

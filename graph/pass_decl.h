@@ -45,6 +45,8 @@ enum class SlotDirection : uint8_t {
   input,   // reads a resource another pass made
   output,  // creates a resource
   inout,   // modifies a resource another pass made; downstream sees the new version
+  history, // reads the previous frame's content of one of the pass's own outputs (its
+           // `history_of`); bound by the graph, never wired (see slot_history)
 };
 
 struct SlotDecl {
@@ -59,6 +61,7 @@ struct SlotDecl {
   bool format_overridable = false;    // outputs: config may choose another format
   bool size_overridable = false;      // outputs: config may choose another size
   std::string like;                   // outputs: take kind, format and size from this input slot
+  std::string history_of;             // history: the output slot whose previous frame it reads
   std::string doc;
 };
 
@@ -89,6 +92,10 @@ struct PassDecl {
   SceneFeatures needs = 0;
   SceneCheck check_scene = nullptr;      // optional
   MakeExecution make_execution = nullptr;  // none: the pass cannot run yet
+  // Its execution keeps a bind group per PassContext::parity(), so it may bind the
+  // resources of a history pair, whose objects swap every frame (the executor refuses
+  // to run other passes on them: they would keep binding frame 0's objects).
+  bool parity_bind_groups = false;
 
   int variant_index(std::string_view variant) const;  // -1 when unknown
   int param_index(std::string_view param) const;
@@ -108,6 +115,12 @@ SlotDecl slot_optional_in(std::string name, ResourceKind kind, Usage usage, std:
 SlotDecl slot_out(std::string name, ResourceKind kind, Usage usage, Format format, SizeSpec size, std::string doc);
 SlotDecl slot_out_like(std::string name, std::string input_slot, Usage usage, std::string doc);
 SlotDecl slot_inout(std::string name, ResourceKind kind, Usage usage, std::string doc);
+// Last frame's content of the pass's output `output_slot`, read (sampled) while this
+// frame's is written: the output becomes persistent, and the graph gives it a twin
+// resource of the same shape for the previous frame; the executor swaps the two
+// physical objects every frame (a history pair). On the first frame the history holds
+// nothing valid: the pass must know (PassContext::history_valid) and not read it.
+SlotDecl slot_history(std::string name, std::string output_slot, std::string doc);
 
 std::string_view pass_kind_name(PassKind kind);
 std::string_view param_type_name(ParamType type);

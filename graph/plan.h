@@ -111,6 +111,10 @@ struct Plan {
   std::vector<Heap> heaps;
   std::vector<Handover> handovers;
   std::vector<Barrier> barriers;
+  // Recorded once, before the first frame: each persistent texture from undefined
+  // contents to the state `barriers` assume every frame starts in (the steady state of
+  // repeated frames, history pairs swapping their objects between frames).
+  std::vector<Barrier> initial_barriers;
   MemoryStats memory{};
 };
 

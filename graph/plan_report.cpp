@@ -46,6 +46,32 @@ std::string dot_escape(const std::string& s) {
   return out;
 }
 
+// ", history pair with X (its last frame)" / ", history pair with X (the output it follows)".
+std::string history_text(const Graph& g, uint32_t r) {
+  const GraphResource& res = g.resources[r];
+  if (res.previous != kNone) return ", history pair with " + g.resources[res.previous].desc.name + " (its last frame)";
+  if (res.previous_of != kNone) return ", history pair with " + g.resources[res.previous_of].desc.name + " (the output it follows)";
+  return "";
+}
+
+// Bytes of the used history pairs (both objects): part of the persistent bytes.
+uint64_t history_bytes(const Graph& g, const Plan& plan) {
+  uint64_t bytes = 0;
+  for (uint32_t r = 0; r < g.resources.size(); ++r) {
+    const GraphResource& res = g.resources[r];
+    const bool paired = res.previous != kNone || res.previous_of != kNone;
+    if (paired && plan.lifetimes[r].first != kNone) bytes += plan.placements[r].requirements.size;
+  }
+  return bytes;
+}
+
+Json barrier_json(const Graph& g, const Barrier& br) {
+  return {{"resource", br.resource == kNone ? Json(nullptr) : Json(resource_name(g, br.resource))},
+          {"from", state_json(br.from)},
+          {"to", state_json(br.to)},
+          {"aliasing", br.aliasing}};
+}
+
 }  // namespace
 
 std::string bytes_text(uint64_t bytes) {
@@ -88,9 +114,11 @@ std::string plan_text(const Graph& g, const Plan& plan, const PlanReportContext&
     }
     const Placement& pl = plan.placements[r];
     o << "  [" << l.first << ", " << l.last << "]  " << bytes_text(pl.requirements.size);
-    if (pl.heap == kNone) o << "  persistent, own memory\n";
+    if (pl.heap == kNone) o << "  persistent, own memory" << history_text(g, r) << "\n";
     else o << "  heap " << pl.heap << " @ " << pl.offset << "\n";
   }
+  o << "\nbefore the first frame:" << (plan.initial_barriers.empty() ? " nothing\n" : "\n");
+  for (const Barrier& b : plan.initial_barriers) o << "  barrier " << barrier_text(g, b) << "\n";
   o << "\nhand-overs (aliasing):" << (plan.handovers.empty() ? " none\n" : "\n");
   for (const Handover& h : plan.handovers) {
     o << "  " << resource_name(g, h.resource) << " takes over bytes of " << resource_name(g, h.previous) << "\n";
@@ -98,7 +126,8 @@ std::string plan_text(const Graph& g, const Plan& plan, const PlanReportContext&
   const MemoryStats& m = plan.memory;
   o << "\nmemory: " << m.transient_count << " transient resources; unaliased " << bytes_text(m.unaliased_bytes)
     << ", aliased " << bytes_text(m.aliased_bytes) << ", lower bound " << bytes_text(m.lower_bound_bytes)
-    << "; persistent " << bytes_text(m.persistent_bytes) << "; placement " << placement_method_name(m.method) << "\n";
+    << "; persistent " << bytes_text(m.persistent_bytes) << " (history " << bytes_text(history_bytes(g, plan))
+    << "); placement " << placement_method_name(m.method) << "\n";
   const ResourcePool pool = pool_resources(g, plan);
   o << "pooled (WebGPU, no placed memory): " << pool.transient_objects << " objects for " << m.transient_count
     << " transient resources, " << bytes_text(pool.transient_bytes) << "\n";
@@ -117,16 +146,15 @@ std::string plan_json(const Graph& g, const Plan& plan, const PlanReportContext&
     const GraphPass& p = g.passes[pp.pass];
     Json barriers = Json::array();
     for (uint32_t b = pp.barrier_begin; b < pp.barrier_begin + pp.barrier_count; ++b) {
-      const Barrier& br = plan.barriers[b];
-      barriers.push_back({{"resource", br.resource == kNone ? Json(nullptr) : Json(resource_name(g, br.resource))},
-                          {"from", state_json(br.from)},
-                          {"to", state_json(br.to)},
-                          {"aliasing", br.aliasing}});
+      barriers.push_back(barrier_json(g, plan.barriers[b]));
     }
     order.push_back({{"pass", p.name}, {"type", p.decl->name}, {"variant", variant_of(p)},
                      {"kind", pass_kind_name(p.kind)}, {"barriers", barriers}});
   }
   j["order"] = order;
+  Json initial = Json::array();
+  for (const Barrier& b : plan.initial_barriers) initial.push_back(barrier_json(g, b));
+  j["initial_barriers"] = initial;
   Json culled = Json::array();
   for (const CulledPass& c : plan.culled) {
     culled.push_back({{"pass", g.passes[c.pass].name}, {"reason", cull_reason_name(c.reason)}, {"detail", cull_detail(g, c)}});
@@ -138,6 +166,9 @@ std::string plan_json(const Graph& g, const Plan& plan, const PlanReportContext&
     const Lifetime& l = plan.lifetimes[r];
     const Placement& pl = plan.placements[r];
     Json res = {{"name", d.name}, {"kind", kind_name(d.kind)}, {"persistent", d.persistent}};
+    const GraphResource& gr = g.resources[r];
+    if (gr.previous != kNone) res["history"] = {{"role", "current"}, {"pair", g.resources[gr.previous].desc.name}};
+    if (gr.previous_of != kNone) res["history"] = {{"role", "previous"}, {"pair", g.resources[gr.previous_of].desc.name}};
     if (d.kind == ResourceKind::buffer) res["bytes"] = d.buffer_bytes;
     else res["format"] = format_info(d.format).name, res["extent"] = {d.extent.width, d.extent.height, d.extent.depth};
     if (l.first == kNone) {
@@ -164,7 +195,8 @@ std::string plan_json(const Graph& g, const Plan& plan, const PlanReportContext&
   const MemoryStats& m = plan.memory;
   j["memory"] = {{"transient_resources", m.transient_count}, {"unaliased_bytes", m.unaliased_bytes},
                  {"aliased_bytes", m.aliased_bytes}, {"lower_bound_bytes", m.lower_bound_bytes},
-                 {"persistent_bytes", m.persistent_bytes}, {"placement", placement_method_name(m.method)}};
+                 {"persistent_bytes", m.persistent_bytes}, {"history_bytes", history_bytes(g, plan)},
+                 {"placement", placement_method_name(m.method)}};
   const ResourcePool pool = pool_resources(g, plan);
   j["memory"]["pooled_objects"] = pool.transient_objects;
   j["memory"]["pooled_bytes"] = pool.transient_bytes;
@@ -192,6 +224,11 @@ std::string plan_dot(const Graph& g, const Plan& plan, const PlanReportContext& 
   for (uint32_t p = 0; p < g.passes.size(); ++p) {
     for (const ResourceUse& u : g.passes[p].uses) {
       if (u.direction == SlotDirection::output) continue;
+      if (u.direction == SlotDirection::history) {  // from the pass itself, a frame earlier
+        o << "  p" << p << " -> p" << p << " [label=\"" << dot_escape(g.resources[u.resource].desc.name)
+          << " (last frame)\", style=dotted];\n";
+        continue;
+      }
       const uint32_t from = g.resources[u.resource].version_writers[u.version];
       const bool dead = plan.position[p] == kNone || plan.position[from] == kNone;
       o << "  p" << from << " -> p" << p << " [label=\"" << dot_escape(g.resources[u.resource].desc.name) << "\""
@@ -199,9 +236,10 @@ std::string plan_dot(const Graph& g, const Plan& plan, const PlanReportContext& 
     }
   }
   for (size_t i = 0; i < g.outputs.size(); ++i) {
-    const uint32_t from = g.resources[g.outputs[i].resource].version_writers[g.outputs[i].version];
-    o << "  out" << i << " [shape=oval, fillcolor=\"#d9f2d9\", label=\"" << dot_escape(g.resources[g.outputs[i].resource].desc.name)
-      << "\"];\n  p" << from << " -> out" << i << ";\n";
+    const GraphResource& r = g.resources[g.outputs[i].resource];
+    const uint32_t from = r.version_writers[g.outputs[i].version];
+    o << "  out" << i << " [shape=oval, fillcolor=\"#d9f2d9\", label=\"" << dot_escape(r.desc.name) << "\"];\n";
+    if (from != kNone) o << "  p" << from << " -> out" << i << ";\n";  // kNone: a history, made by the last frame
   }
   o << "}\n";
   return o.str();

@@ -12,10 +12,12 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(copy_pass());
   registry.add(froxel_voxelize_pass());
   registry.add(froxel_scatter_pass());
+  registry.add(froxel_temporal_pass());
   registry.add(scatter_integrate_pass());
   registry.add(froxel_apply_pass());
   registry.add(fog_apply_pass());
   registry.add(raymarch_fog_pass());
+  registry.add(pixel_temporal_pass());
   registry.add(depth_fog_pass());
   registry.add(height_fog_pass());
   registry.add(analytic_fog_pass());

@@ -233,8 +233,13 @@ int print_passes(const PassRegistry& registry) {
                 << p.doc << "\n";
     }
     for (const SlotDecl& s : d->slots) {
-      const char* dir = s.direction == SlotDirection::input ? "in" : s.direction == SlotDirection::output ? "out" : "inout";
-      std::cout << "  " << dir << " " << s.name << ": " << kind_name(s.kind) << ", " << usage_name(s.usage);
+      const char* dir = s.direction == SlotDirection::input    ? "in"
+                        : s.direction == SlotDirection::output  ? "out"
+                        : s.direction == SlotDirection::history ? "history"
+                                                                : "inout";
+      std::cout << "  " << dir << " " << s.name << ": ";
+      if (s.direction == SlotDirection::history) std::cout << "last frame of output " << s.history_of << ", " << usage_name(s.usage);
+      else std::cout << kind_name(s.kind) << ", " << usage_name(s.usage);
       if (s.direction == SlotDirection::output) {
         if (s.kind != ResourceKind::buffer && s.like.empty()) std::cout << ", " << format_info(s.format).name;
         std::cout << ", " << size_text(s);

@@ -74,24 +74,31 @@ struct Tracker {
   uint32_t visible_access = 0;
 };
 
-// The reads from `i` on that one barrier can serve: same layout, until a write.
-AccessState read_run(std::span<const Use> uses, size_t i) {
+// The reads from `i` on that one barrier can serve: same layout, until a write. They
+// run on into `next`, the uses the resource's object has next (a history pair's output
+// is read as history the next frame).
+AccessState read_run(std::span<const Use> uses, size_t i, std::span<const Use> next) {
   AccessState run = uses[i].state;
-  for (size_t j = i + 1; j < uses.size() && !is_write(uses[j].state) && uses[j].state.layout == run.layout; ++j) {
-    run.stages |= uses[j].state.stages;
-    run.access |= uses[j].state.access;
+  bool open = true;
+  for (const std::span<const Use> list : {uses.subspan(i + 1), next}) {
+    for (size_t j = 0; open && j < list.size(); ++j) {
+      open = !is_write(list[j].state) && list[j].state.layout == run.layout;
+      if (!open) break;
+      run.stages |= list[j].state.stages;
+      run.access |= list[j].state.access;
+    }
   }
   return run;
 }
 
 // Replays one resource's uses from state `t`, appending the barriers it needs (and
 // their positions) when `out` is given; returns the state after the last use.
-Tracker replay(uint32_t resource, std::span<const Use> uses, Tracker t, bool fresh, bool handed_over,
-               std::vector<Barrier>* out, std::vector<uint32_t>* positions) {
+Tracker replay(uint32_t resource, std::span<const Use> uses, std::span<const Use> next, Tracker t, bool fresh,
+               bool handed_over, std::vector<Barrier>* out, std::vector<uint32_t>* positions) {
   for (size_t i = 0; i < uses.size(); ++i) {
     const AccessState& s = uses[i].state;
     const bool writes = is_write(s);
-    const AccessState dst = writes ? s : read_run(uses, i);
+    const AccessState dst = writes ? s : read_run(uses, i, next);
     Barrier b{resource, {t.write_stages | t.read_stages, t.write_access, t.layout}, dst, false};
     bool needed;
     if (fresh && i == 0) {
@@ -130,6 +137,36 @@ Tracker replay(uint32_t resource, std::span<const Use> uses, Tracker t, bool fre
   return t;
 }
 
+// A history pair's other resource (kNone for any other resource).
+uint32_t partner_of(const GraphResource& r) { return r.previous != kNone ? r.previous : r.previous_of; }
+
+// What resource r's object is used for after this frame's uses: an output with a history
+// is read as that history the next frame.
+std::span<const Use> next_uses(const Graph& graph, const UsesByResource& uses, uint32_t r) {
+  const uint32_t previous = graph.resources[r].previous;
+  return previous == kNone ? std::span<const Use>{} : uses.of(previous);
+}
+
+// The state persistent resource `r`'s physical object starts a frame in: where the
+// last frame left it. A history pair's two objects swap every frame, so r's object was
+// its partner's the frame before, and r's the frame before that.
+Tracker frame_start(const Graph& graph, const UsesByResource& uses, uint32_t r) {
+  const uint32_t partner = partner_of(graph.resources[r]);
+  const Tracker own = replay(r, uses.of(r), next_uses(graph, uses, r), Tracker{}, false, false, nullptr, nullptr);
+  if (partner == kNone || uses.of(partner).empty()) return own;
+  return replay(partner, uses.of(partner), next_uses(graph, uses, partner), own, false, false, nullptr, nullptr);
+}
+
+// Before the first frame: the texture from undefined contents into the state the plan
+// expects every frame to start in — its layout, visible where the plan assumes the last
+// write visible, and ordered before the stages its first barrier waits on.
+Barrier initial_barrier(uint32_t r, const Tracker& start) {
+  const AccessState undefined{stage::none, access::none, Layout::undefined};
+  const AccessState to{start.write_stages | start.read_stages | start.visible_stages, start.write_access | start.visible_access,
+                       start.layout};
+  return {r, undefined, to, false};
+}
+
 }  // namespace
 
 BarrierPlan plan_barriers(const FlatGraph& g, const Schedule& schedule, const std::vector<Handover>& handovers,
@@ -145,14 +182,16 @@ BarrierPlan plan_barriers(const FlatGraph& g, const Schedule& schedule, const st
   positions.reserve(uses.uses.size());
   std::vector<uint32_t> first_barrier(graph.resources.size(), kNone);
   std::vector<Tracker> last_state(graph.resources.size());
+  std::vector<Barrier> initial;
   for (uint32_t r = 0; r < graph.resources.size(); ++r) {
     const std::span<const Use> list = uses.of(r);
     if (list.empty()) continue;
     const bool persistent = graph.resources[r].desc.persistent;
     // A persistent resource starts each frame as the previous frame left it.
-    const Tracker start = persistent ? replay(r, list, Tracker{}, false, false, nullptr, nullptr) : Tracker{};
+    const Tracker start = persistent ? frame_start(graph, uses, r) : Tracker{};
+    if (persistent && start.layout != Layout::none) initial.push_back(initial_barrier(r, start));
     first_barrier[r] = uint32_t(barriers.size());
-    last_state[r] = replay(r, list, start, !persistent, handed_over[r], &barriers, &positions);
+    last_state[r] = replay(r, list, next_uses(graph, uses, r), start, !persistent, handed_over[r], &barriers, &positions);
   }
   // The first use after a hand-over waits for every previous occupant's last accesses.
   for (const Handover& h : handovers) {
@@ -179,6 +218,7 @@ BarrierPlan plan_barriers(const FlatGraph& g, const Schedule& schedule, const st
     for (uint32_t pos = 1; pos < n; ++pos) plan.barriers[fill[pos]++] = {kNone, everything_before, everything_after, false};
   }
   for (size_t i = 0; i < barriers.size(); ++i) plan.barriers[fill[positions[i]]++] = barriers[i];
+  plan.initial = std::move(initial);
   return plan;
 }
 

@@ -59,6 +59,7 @@ Plan compile(const Graph& graph, const CompileOptions& options, const Requiremen
   plan.handovers = std::move(memory.handovers);
   plan.memory = memory.stats;
   plan.barriers = std::move(barriers.barriers);
+  plan.initial_barriers = std::move(barriers.initial);
   return plan;
 }
 

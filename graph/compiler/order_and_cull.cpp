@@ -17,13 +17,14 @@ struct Edges {
 };
 
 // Read-after-write: producer of the version read → reader. Write-after-read: a
-// reader of version v → the pass that makes version v + 1.
+// reader of version v → the pass that makes version v + 1. A history slot reads what
+// the last frame made: no dependency inside the frame.
 template <typename Visit>
 void for_each_dependency(const FlatGraph& g, Visit&& visit) {
   for (uint32_t p = 0; p < g.pass_count(); ++p) {
     for (uint32_t k = g.use_begin[p]; k < g.use_begin[p + 1]; ++k) {
       const ResourceUse& u = g.uses[k];
-      if (u.direction == SlotDirection::output) continue;
+      if (u.direction == SlotDirection::output || u.direction == SlotDirection::history) continue;
       visit(g.writer(u.resource, u.version), p);
       if (u.direction == SlotDirection::input && u.version + 1 < g.version_count(u.resource)) {
         visit(p, g.writer(u.resource, u.version + 1));
@@ -142,7 +143,7 @@ std::vector<uint8_t> cull_for_needs(const FlatGraph& g, const std::vector<uint32
     if (!dead[p]) continue;
     for (uint32_t k = g.use_begin[p]; k < g.use_begin[p + 1]; ++k) {
       const ResourceUse& u = g.uses[k];
-      if (u.direction == SlotDirection::input) continue;
+      if (u.direction == SlotDirection::input || u.direction == SlotDirection::history) continue;
       if (u.direction == SlotDirection::output) {
         versions.exists[g.version_index(u.resource, 0)] = 0;
         continue;
@@ -165,6 +166,7 @@ std::vector<uint8_t> reach_from_outputs(const FlatGraph& g, const Versions& vers
     const uint32_t i = g.version_index(r, v);
     if (!versions.exists[i]) return false;
     const uint32_t producer = g.writer(r, versions.seen[i]);
+    if (producer == kNone) return true;  // a history: made by the last frame
     if (dead[producer]) return false;
     if (!live[producer]) {
       live[producer] = 1;
@@ -181,7 +183,7 @@ std::vector<uint8_t> reach_from_outputs(const FlatGraph& g, const Versions& vers
     work.pop_back();
     for (uint32_t k = g.use_begin[p]; k < g.use_begin[p + 1]; ++k) {
       const ResourceUse& u = g.uses[k];
-      if (u.direction != SlotDirection::output) reach(u.resource, u.version);
+      if (u.direction != SlotDirection::output && u.direction != SlotDirection::history) reach(u.resource, u.version);
     }
   }
   return live;

@@ -53,6 +53,7 @@ MemoryLayout place_memory(const Graph& graph, const std::vector<Lifetime>& lifet
 struct BarrierPlan {
   std::vector<Barrier> barriers;              // sorted by position
   std::vector<uint32_t> begin, count;         // per position
+  std::vector<Barrier> initial;               // Plan::initial_barriers
 };
 
 BarrierPlan plan_barriers(const FlatGraph& graph, const Schedule& schedule, const std::vector<Handover>& handovers,

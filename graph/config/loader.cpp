@@ -524,11 +524,12 @@ class Wiring {
     const PassDecl* decl = decls_[it->second];
     if (!decl) return std::nullopt;
     std::vector<std::string> outputs;
+    auto is_source = [](const SlotDecl& s) { return s.direction == SlotDirection::output || s.direction == SlotDirection::inout; };
     for (const SlotDecl& s : decl->slots) {
-      if (s.direction != SlotDirection::input) outputs.push_back(s.name);
+      if (is_source(s)) outputs.push_back(s.name);
     }
     const int i = decl->slot_index(slot);
-    if (i < 0 || decl->slots[size_t(i)].direction == SlotDirection::input) {
+    if (i < 0 || !is_source(decl->slots[size_t(i)])) {
       diags_.error(where, "pass \"" + pass + "\" (" + decl->name + ") has no output \"" + slot + "\"" +
                               did_you_mean(slot, outputs) + "; expected " + one_of(outputs));
       return std::nullopt;
@@ -549,12 +550,17 @@ class Wiring {
         diags_.error(w.where, "slot \"" + w.slot + "\" of \"" + decl.name + "\" is an output; it cannot be wired to an input");
         continue;
       }
+      if (decl.slots[size_t(i)].direction == SlotDirection::history) {
+        diags_.error(w.where, "slot \"" + w.slot + "\" of \"" + decl.name + "\" is the previous frame of its output \"" +
+                                  decl.slots[size_t(i)].history_of + "\"; the graph binds it, it cannot be wired");
+        continue;
+      }
       inputs_[p][size_t(i)] = resolve_source(w.source, w.where);
       wiring_where_[p][size_t(i)] = w.where;
     }
     for (size_t i = 0; i < decl.slots.size(); ++i) {
       const SlotDecl& s = decl.slots[i];
-      if (s.direction == SlotDirection::output || s.optional || inputs_[p][i]) continue;
+      if (s.direction == SlotDirection::output || s.direction == SlotDirection::history || s.optional || inputs_[p][i]) continue;
       if (std::any_of(node.inputs.begin(), node.inputs.end(), [&](const InputWiring& w) { return w.slot == s.name; })) continue;
       diags_.error(node.where, "pass \"" + node.name + "\" (" + decl.name + "): input \"" + s.name + "\" (" +
                                    std::string(kind_name(s.kind)) + ") is not wired");
@@ -607,9 +613,11 @@ class Wiring {
     for (uint32_t p : order) {
       const PassDecl& decl = *decls_[p];
       made[p].resize(decl.slots.size());
-      for (const bool outputs : {false, true}) {  // inputs first: an output may be shaped like one
+      // Inputs first (an output may be shaped like one), then outputs, then the history
+      // slots that follow them.
+      for (const int stage : {0, 1, 2}) {
         for (uint16_t i = 0; i < decl.slots.size(); ++i) {
-          if ((decl.slots[i].direction == SlotDirection::output) != outputs) continue;
+          if (binding_stage(decl.slots[i].direction) != stage) continue;
           try {
             made[p][i] = bind_slot(b, p, i, made);
           } catch (const GraphError& e) {
@@ -632,9 +640,18 @@ class Wiring {
     return out;
   }
 
+  static int binding_stage(SlotDirection direction) {
+    return direction == SlotDirection::output ? 1 : direction == SlotDirection::history ? 2 : 0;
+  }
+
   ResourceVersion bind_slot(GraphBuilder& b, uint32_t p, uint16_t i, const std::vector<std::vector<ResourceVersion>>& made) {
     const PassDecl& decl = *decls_[p];
     const SlotDecl& slot = decl.slots[i];
+    if (slot.direction == SlotDirection::history) {
+      const int followed = decl.slot_index(slot.history_of);
+      if (followed < 0) throw GraphError(p, i, "history slot \"" + slot.name + "\" follows no output \"" + slot.history_of + "\"");
+      return b.read_history(p, i, made[p][size_t(followed)]);
+    }
     if (slot.direction == SlotDirection::output && !slot.like.empty()) return b.create(p, i, like_desc(b, p, slot, made));
     if (slot.direction == SlotDirection::output) return b.create(p, i, output_desc(p, slot));
     const auto& src = inputs_[p][i];

@@ -87,10 +87,23 @@ bool plan_fits(const Graph& graph, const Plan& plan) {
   for (const PlannedPass& p : plan.order) {
     if (p.pass >= graph.passes.size() || uint64_t(p.barrier_begin) + p.barrier_count > plan.barriers.size()) return false;
   }
-  for (const Barrier& b : plan.barriers) {
-    if (b.resource != kNone && b.resource >= graph.resources.size()) return false;
+  for (const std::vector<Barrier>* list : {&plan.barriers, &plan.initial_barriers}) {
+    for (const Barrier& b : *list) {
+      if (b.resource != kNone && b.resource >= graph.resources.size()) return false;
+    }
   }
   return true;
+}
+
+// A resource of a history pair the pass binds although it keeps one bind group for
+// every frame (kNone when there is none).
+uint32_t swapped_resource_without_parity(const Graph& graph, const GraphPass& pass) {
+  if (pass.decl->parity_bind_groups) return kNone;
+  for (const ResourceUse& u : pass.uses) {
+    const GraphResource& r = graph.resources[u.resource];
+    if (r.previous != kNone || r.previous_of != kNone) return u.resource;
+  }
+  return kNone;
 }
 
 }  // namespace
@@ -119,10 +132,15 @@ std::unique_ptr<Executor> Executor::for_plan(rhi::Device& device, const Graph& g
 // Each pass's execution and the plan's memory bound.
 void Executor::prepare() {
   for (const PlannedPass& p : plan_.order) {
-    const PassDecl& decl = *graph_.passes[p.pass].decl;
+    const GraphPass& pass = graph_.passes[p.pass];
+    const PassDecl& decl = *pass.decl;
     if (!decl.make_execution) {
-      throw DeviceError(DeviceError::Kind::unsupported, "pass \"" + graph_.passes[p.pass].name + "\" (" + decl.name +
-                                                            ") has no GPU implementation yet");
+      throw DeviceError(DeviceError::Kind::unsupported, "pass \"" + pass.name + "\" (" + decl.name + ") has no GPU implementation yet");
+    }
+    if (const uint32_t r = swapped_resource_without_parity(graph_, pass); r != kNone) {
+      throw DeviceError(DeviceError::Kind::unsupported,
+                        "pass \"" + pass.name + "\" (" + decl.name + ") reads " + graph_.resources[r].desc.name +
+                            ", whose objects swap every frame (a history pair), but keeps one bind group for every frame");
     }
     executions_.push_back(decl.make_execution());
   }
@@ -138,23 +156,28 @@ bool Executor::timing_frame() {
 
 Executor::~Executor() = default;
 
-// The plan's transitions before a pass. On the first frame, persistent resources have
-// no previous frame: their first transition starts from undefined contents.
+// The plan's transitions before a pass.
 std::vector<rhi::ResourceBarrier> Executor::barriers_before(uint32_t position) const {
-  std::vector<rhi::ResourceBarrier> out;
   const PlannedPass& p = plan_.order[position];
-  for (uint32_t i = p.barrier_begin; i < p.barrier_begin + p.barrier_count; ++i) {
-    const Barrier& b = plan_.barriers[i];
-    if (b.resource == kNone) {
-      out.push_back({{}, {}, b.from, b.to});
-      continue;
-    }
-    const ResourceDesc& d = graph_.resources[b.resource].desc;
-    const bool first_ever = frame_ == 0 && d.persistent && plan_.lifetimes[b.resource].first == position;
-    const AccessState undefined{stage::none, access::none, d.kind == ResourceKind::buffer ? Layout::none : Layout::undefined};
-    out.push_back(barrier_of(b.resource, first_ever ? undefined : b.from, b.to));
+  return device_barriers({plan_.barriers.data() + p.barrier_begin, p.barrier_count});
+}
+
+std::vector<rhi::ResourceBarrier> Executor::device_barriers(std::span<const Barrier> barriers) const {
+  std::vector<rhi::ResourceBarrier> out;
+  for (const Barrier& b : barriers) {
+    if (b.resource == kNone) out.push_back({{}, {}, b.from, b.to});
+    else out.push_back(barrier_of(b.resource, b.from, b.to));
   }
   return out;
+}
+
+// Every frame after the first, each history pair's two objects trade places: the
+// output's object of the last frame becomes its history, and the history's is written.
+void Executor::swap_history_pairs() {
+  for (uint32_t r = 0; r < graph_.resources.size(); ++r) {
+    const uint32_t previous = graph_.resources[r].previous;
+    if (previous != kNone && plan_.lifetimes[r].first != kNone) resources_->swap(r, previous);
+  }
 }
 
 void Executor::run_frame() { run_frame_and_read({}); }
@@ -162,7 +185,9 @@ void Executor::run_frame() { run_frame_and_read({}); }
 std::vector<Readback> Executor::run_frame_and_read(std::span<const uint32_t> resources) {
   for (const uint32_t r : resources) check_readable(r);
   const bool timed = timing_frame();
+  if (frame_ > 0) swap_history_pairs();
   auto encoder = device_.create_command_encoder("frame " + std::to_string(frame_));
+  if (frame_ == 0 && !plan_.initial_barriers.empty()) encoder->barrier(device_barriers(plan_.initial_barriers));
   std::vector<double> cpu_ms(plan_.order.size());
   for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
     const GraphPass& pass = graph_.passes[plan_.order[pos].pass];
@@ -173,6 +198,7 @@ std::vector<Readback> Executor::run_frame_and_read(std::span<const uint32_t> res
     const auto start = std::chrono::steady_clock::now();
     PassContext context(device_, *encoder, graph_, plan_.order[pos].pass, *resources_, scene_);
     context.frame = frame_;
+    context.history_valid = frame_ > 0;
     executions_[pos]->record(context);
     cpu_ms[pos] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (timed) encoder->write_timestamp(queries_, 2 * pos + 1);
@@ -220,16 +246,31 @@ void Executor::check_readable(uint32_t r) const {
   }
 }
 
-// From the state the frame left each resource in to copy source, once per resource.
-std::vector<rhi::ResourceBarrier> Executor::to_copy_source(std::span<const uint32_t> resources) const {
+// Once per resource, from the state the frame left it in to copy source (`to_copy`),
+// or back (persistent resources only) to the state the next frame's plan expects.
+std::vector<rhi::ResourceBarrier> Executor::copy_source_transitions(std::span<const uint32_t> resources, bool to_copy) const {
   std::vector<rhi::ResourceBarrier> out;
   for (size_t i = 0; i < resources.size(); ++i) {
     const uint32_t r = resources[i];
     if (std::find(resources.begin(), resources.begin() + i, r) != resources.begin() + i) continue;
+    if (!to_copy && !graph_.resources[r].desc.persistent) continue;
     const AccessState copy_source = access_state(Usage::copy_src, PassKind::transfer, graph_.resources[r].desc.kind);
-    out.push_back(barrier_of(r, last_state(r), copy_source));
+    if (to_copy) out.push_back(barrier_of(r, last_state(r), copy_source));
+    else out.push_back(barrier_of(r, copy_source, next_frame_start(r)));
   }
   return out;
+}
+
+// The state persistent resource r's object must be in when the next frame starts: as
+// the plan's initial barriers leave the resource it plays then (a history pair's object
+// plays the other role), or for buffers (no layout), as its last use left it.
+AccessState Executor::next_frame_start(uint32_t r) const {
+  const GraphResource& res = graph_.resources[r];
+  const uint32_t role = res.previous != kNone ? res.previous : res.previous_of != kNone ? res.previous_of : r;
+  for (const Barrier& b : plan_.initial_barriers) {
+    if (b.resource == role) return b.to;
+  }
+  return last_state(r);
 }
 
 // Every resource copied into one read-back buffer, each at a 16-byte aligned offset
@@ -243,7 +284,7 @@ Executor::PendingReadback Executor::record_readback(rhi::CommandEncoder& encoder
     total += (readback_bytes(graph_.resources[r].desc) + 15) / 16 * 16;
   }
   pending.buffer = device_.create_buffer({"read-back", total, rhi::buffer_usage::copy_dst});
-  encoder.barrier(to_copy_source(resources));
+  encoder.barrier(copy_source_transitions(resources, true));
   for (size_t i = 0; i < resources.size(); ++i) {
     const uint32_t r = resources[i];
     if (graph_.resources[r].desc.kind == ResourceKind::buffer) {
@@ -253,6 +294,8 @@ Executor::PendingReadback Executor::record_readback(rhi::CommandEncoder& encoder
       encoder.copy_texture_to_buffer(resources_->texture(r), pending.buffer, pending.offsets[i]);
     }
   }
+  const std::vector<rhi::ResourceBarrier> back = copy_source_transitions(resources, false);
+  if (!back.empty()) encoder.barrier(back);
   return pending;
 }
 

@@ -37,7 +37,9 @@ struct Readback {
 class Executor {
  public:
   // Compiles with the device's memory requirements. Throws DeviceError (unsupported)
-  // naming the first pass that must run and has no GPU implementation yet.
+  // naming the first pass that must run and has no GPU implementation yet. Passes read
+  // `scene` every frame: a caller may change it between frames (move the camera) as
+  // long as it outlives the executor.
   Executor(rhi::Device& device, const Graph& graph, const Scene* scene, const CompileOptions& options);
   ~Executor();
 
@@ -82,12 +84,15 @@ class Executor {
   void prepare();
   bool timing_frame();
   std::vector<rhi::ResourceBarrier> barriers_before(uint32_t position) const;
+  std::vector<rhi::ResourceBarrier> device_barriers(std::span<const Barrier> barriers) const;
+  void swap_history_pairs();
   rhi::ResourceBarrier barrier_of(uint32_t resource, const AccessState& from, const AccessState& to) const;
-  std::vector<rhi::ResourceBarrier> to_copy_source(std::span<const uint32_t> resources) const;
+  std::vector<rhi::ResourceBarrier> copy_source_transitions(std::span<const uint32_t> resources, bool to_copy) const;
   void check_readable(uint32_t resource) const;
   PendingReadback record_readback(rhi::CommandEncoder& encoder, std::span<const uint32_t> resources);
   std::vector<Readback> collect(const PendingReadback& pending, std::span<const uint32_t> resources);
   AccessState last_state(uint32_t resource) const;
+  AccessState next_frame_start(uint32_t resource) const;
 
   rhi::Device& device_;
   const Graph& graph_;

@@ -36,4 +36,12 @@ uint32_t PassContext::resource(std::string_view slot) const {
   throw std::logic_error(p.name + ": slot " + std::string(slot) + " is not bound");
 }
 
+uint32_t PassContext::parity() const {
+  for (const ResourceUse& u : graph_pass().uses) {
+    const GraphResource& r = graph.resources[u.resource];
+    if (r.previous != kNone || r.previous_of != kNone) return uint32_t(frame & 1);
+  }
+  return 0;
+}
+
 }  // namespace volgraph

@@ -36,6 +36,14 @@ class PassContext {
   rhi::BufferId buffer(std::string_view slot) const { return resources_.buffer(resource(slot)); }
   const Scene* scene;
   uint64_t frame = 0;  // frames run before this one (temporal passes jitter and blend by it)
+  // Whether history slots hold the last frame's content (false on the first frame:
+  // they hold nothing, and a pass must not read them).
+  bool history_valid = false;
+  // Which way round the history pairs' two objects are this frame (0 or 1; they swap
+  // every frame). A pass that binds either resource of a pair — a history slot, an
+  // output with one, or such an output downstream — sees other objects behind its slots
+  // on odd frames: it keeps a bind group per parity. 0 for every other pass.
+  uint32_t parity() const;
 
  private:
   const rhi::GraphResourceSet& resources_;

@@ -277,6 +277,8 @@ class GraphResourceSet {
   virtual TextureId texture(uint32_t resource) const = 0;
   virtual TextureViewId view(uint32_t resource) const = 0;  // none for copy-only textures
   virtual BufferId buffer(uint32_t resource) const = 0;
+  // The two resources trade their objects (a history pair, every frame; graph.h).
+  virtual void swap(uint32_t a, uint32_t b) = 0;
 };
 
 class Device {

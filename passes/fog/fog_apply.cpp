@@ -3,6 +3,8 @@
 // transmittance, at the frame's resolution or lower: read bilinearly at each pixel, or —
 // variant depth_aware, with the scene's depth wired — by joint bilateral upsampling).
 // Shaders: shaders/fog_apply_*.frag (shaders/include/fog_image_lookup*.glsl).
+#include <array>
+
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/apply_draws.h"
@@ -16,14 +18,16 @@ class FogApplyExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
     if (!draws_.prepared()) prepare(c);
-    draws_.record(c, group_);
+    rhi::BindGroupId& group = groups_[c.parity()];  // the images may be history pairs' (pixel_temporal)
+    if (!group) group = make_group(c);
+    draws_.record(c, group);
   }
 
  private:
   void prepare(PassContext& c) {
     using namespace rhi;
-    const bool depth_aware = c.variant() == "depth_aware" && c.bound("depth");
-    if (depth_aware) {
+    depth_aware_ = c.variant() == "depth_aware" && c.bound("depth");
+    if (depth_aware_) {
       draws_.prepare(c, "fog_apply_transmittance_depth_aware.frag", "fog_apply_scattering_depth_aware.frag");
     } else {
       draws_.prepare(c, "fog_apply_transmittance.frag", "fog_apply_scattering.frag");
@@ -31,20 +35,23 @@ class FogApplyExecution final : public PassExecution {
     const Extent size = c.desc("color").extent;
     const Camera& camera = c.scene->camera;
     const float frame[4] = {float(size.width), float(size.height), float(camera.near), float(camera.far)};
-    const std::string& name = c.graph_pass().name;
+    frame_ = shading::create_uniform_block(c.device, c.graph_pass().name + " frame", frame);
+    sampler_ = depth_aware_ ? c.device.create_sampler({"nearest"}) : c.device.create_sampler({"bilinear", Filter::linear});
+  }
+
+  rhi::BindGroupId make_group(PassContext& c) {
+    using rhi::BindGroupEntry;
     std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, c.view("fog_scattering")), BindGroupEntry::of(1, c.view("fog_transmittance")),
-                                           BindGroupEntry::of(3, shading::create_uniform_block(c.device, name + " frame", frame))};
-    if (depth_aware) {
-      entries.push_back(BindGroupEntry::of(2, c.device.create_sampler({"nearest"})));
-      entries.push_back(BindGroupEntry::of(4, c.view("depth")));
-    } else {
-      entries.push_back(BindGroupEntry::of(2, c.device.create_sampler({"bilinear", Filter::linear})));
-    }
-    group_ = c.device.create_bind_group({name, draws_.layout(), entries});
+                                           BindGroupEntry::of(2, sampler_), BindGroupEntry::of(3, frame_)};
+    if (depth_aware_) entries.push_back(BindGroupEntry::of(4, c.view("depth")));
+    return c.device.create_bind_group({c.graph_pass().name, draws_.layout(), entries});
   }
 
   fog::ApplyDraws draws_;
-  rhi::BindGroupId group_;
+  bool depth_aware_ = false;
+  rhi::BufferId frame_;
+  rhi::SamplerId sampler_;
+  std::array<rhi::BindGroupId, 2> groups_;
 };
 
 }  // namespace
@@ -68,6 +75,7 @@ PassDecl fog_apply_pass() {
   };
   d.needs = feature_bit(SceneFeature::medium);
   d.make_execution = [] { return std::unique_ptr<PassExecution>(new FogApplyExecution()); };
+  d.parity_bind_groups = true;
   return d;
 }
 

@@ -25,15 +25,20 @@ std::array<double, 3> froxel_jitter(uint64_t frame) {
   return {radical_inverse(frame, 2) - 0.5, radical_inverse(frame, 3) - 0.5, radical_inverse(frame, 5) - 0.5};
 }
 
+GpuViewRays pack_view_rays(const Camera& camera, Extent output) {
+  const shading::ViewRays rays = shading::view_rays(camera, double(output.width) / double(output.height));
+  GpuViewRays v{};
+  put(v.position, rays.position, camera.near);
+  put(v.forward, rays.forward, camera.far);
+  put(v.right, rays.right, 0);
+  put(v.up, rays.up, 0);
+  return v;
+}
+
 GpuFogFrame make_fog_frame(const PassContext& c, const FogFrameInputs& inputs) {
   const Scene& scene = *c.scene;
-  const Extent out = c.graph.output_size;
-  const shading::ViewRays rays = shading::view_rays(scene.camera, double(out.width) / double(out.height));
   GpuFogFrame f{};
-  put(f.view.position, rays.position, scene.camera.near);
-  put(f.view.forward, rays.forward, scene.camera.far);
-  put(f.view.right, rays.right, 0);
-  put(f.view.up, rays.up, 0);
+  f.view = pack_view_rays(scene.camera, c.graph.output_size);
   f.grid.size[0] = inputs.grid.width;
   f.grid.size[1] = inputs.grid.height;
   f.grid.size[2] = inputs.grid.depth;

@@ -41,6 +41,10 @@ struct FogFrameInputs {
   bool jitter = true;
 };
 
+// The camera's rays for a frame of `output` pixels (view_rays.glsl), its near and far
+// planes in position.w and forward.w.
+GpuViewRays pack_view_rays(const Camera& camera, Extent output);
+
 GpuFogFrame make_fog_frame(const PassContext& c, const FogFrameInputs& inputs);
 
 // The scene's media must fit the frame block (at most kMaxMediumVolumes local volumes):

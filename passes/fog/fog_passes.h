@@ -7,8 +7,10 @@ namespace volgraph {
 
 PassDecl froxel_voxelize_pass();
 PassDecl froxel_scatter_pass();
+PassDecl froxel_temporal_pass();
 PassDecl scatter_integrate_pass();
 PassDecl froxel_apply_pass();
+PassDecl pixel_temporal_pass();
 PassDecl fog_apply_pass();
 PassDecl raymarch_fog_pass();
 PassDecl depth_fog_pass();

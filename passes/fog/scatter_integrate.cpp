@@ -4,6 +4,8 @@
 // step (eq. 14.15) and Hillaire's energy-conserving one (eq. 14.16, exact for a
 // homogeneous slice and stable as σt → 0). Shader: shaders/scatter_integrate.comp;
 // the steps: shaders/include/media.glsl ↔ passes/shading/media.h.
+#include <array>
+
 #include "graph/execute/pass_execution.h"
 #include "passes/fog/fog_passes.h"
 #include "passes/shading/programs.h"
@@ -15,9 +17,11 @@ class ScatterIntegrateExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
     if (!program_.pipeline) prepare(c);
+    rhi::BindGroupId& group = groups_[c.parity()];  // in_scatter may be a history pair's (froxel_temporal)
+    if (!group) group = make_group(c);
     Extent columns = c.desc("in_scatter").extent;
     columns.depth = 1;  // an invocation walks its column front to back
-    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_}, columns);
+    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group}, columns);
   }
 
  private:
@@ -27,17 +31,23 @@ class ScatterIntegrateExecution final : public PassExecution {
     const int32_t method[4] = {c.variant() == "wronski" ? 0 : 1, 0, 0, 0};
     params_ = c.device.create_buffer({"scatter_integrate params", sizeof(method), buffer_usage::uniform | buffer_usage::copy_dst});
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(method)));
-    group_ = c.device.create_bind_group(
+    nearest_ = c.device.create_sampler({"nearest"});
+  }
+
+  rhi::BindGroupId make_group(PassContext& c) {
+    using rhi::BindGroupEntry;
+    return c.device.create_bind_group(
         {"scatter_integrate", program_.layouts[0],
          {BindGroupEntry::of(0, c.buffer("frame")), BindGroupEntry::of(1, c.view("in_scatter")),
           BindGroupEntry::of(2, c.view("media_scattering")), BindGroupEntry::of(3, c.view("media_absorption")),
-          BindGroupEntry::of(4, c.device.create_sampler({"nearest"})), BindGroupEntry::of(5, c.view("integrated_scattering")),
+          BindGroupEntry::of(4, nearest_), BindGroupEntry::of(5, c.view("integrated_scattering")),
           BindGroupEntry::of(6, c.view("integrated_transmittance")), BindGroupEntry::of(7, params_)}});
   }
 
   shading::ComputeProgram program_;
   rhi::BufferId params_;
-  rhi::BindGroupId group_;
+  rhi::SamplerId nearest_;
+  std::array<rhi::BindGroupId, 2> groups_;
 };
 
 }  // namespace
@@ -61,6 +71,7 @@ PassDecl scatter_integrate_pass() {
   };
   d.needs = feature_bit(SceneFeature::medium);
   d.make_execution = [] { return std::unique_ptr<PassExecution>(new ScatterIntegrateExecution()); };
+  d.parity_bind_groups = true;
   return d;
 }
 

@@ -5,6 +5,7 @@
 // matrices; the CPU reference generates the same rays.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -154,6 +155,20 @@ inline ViewRays view_rays(const Camera& c, double aspect) {
 
 inline Vec3 view_ray(const ViewRays& v, double ndc_x, double ndc_y) {
   return add(v.forward, add(scaled(v.right, ndc_x), scaled(v.up, ndc_y)));
+}
+
+// Where world point p lies in the view (shaders/include/view_rays.glsl `view_uvz`): the
+// texture coordinate across the frame (u right, v down) and the view depth z (m).
+struct ViewUvz {
+  double u = 0, v = 0, z = 0;
+};
+
+inline ViewUvz view_uvz(const ViewRays& v, const Vec3& p) {
+  const Vec3 d = sub(p, v.position);
+  const double z = dot(d, v.forward);
+  const double along_x = dot(d, v.right) / dot(v.right, v.right), along_y = dot(d, v.up) / dot(v.up, v.up);
+  const double inverse_z = 1.0 / std::max(z, 1e-20);
+  return {0.5 + 0.5 * along_x * inverse_z, 0.5 - 0.5 * along_y * inverse_z, z};
 }
 
 // The direction (unit, world space) pixel (i, j) of a W × H frame looks along.

@@ -10,6 +10,9 @@
 #                                         command lines and a broken model exit 2 and write nothing
 #   cli_test.sh VOLGRAPH webgpu CONFIG    render --backend webgpu (64x36) writes a PFM, timings and a --dump;
 #                                         simulated driver failures exit 1 with their message, no file
+#   cli_test.sh VOLGRAPH frames CONFIG PASS.SLOT [webgpu]  a fog demo over 5 frames under validation (and
+#                                         on WebGPU), PASS.SLOT (a history output) dumped after them; plan
+#                                         lists the history pairs
 set -uo pipefail
 volgraph=$1 mode=$2 config=${3:-}
 tmp=$(mktemp -d)
@@ -137,6 +140,34 @@ got: $(cat "$tmp/err")"
       grep -qF -- "${fault#*:}" "$tmp/err" || fail "simulated ${fault%%:*}: got $(cat "$tmp/err")"
       [ ! -e "$tmp/frame.pfm" ] || fail "simulated ${fault%%:*} wrote a file"
     done
+    ;;
+  frames)
+    # --frames N on a fog demo: the history pairs swap every frame, under the validation
+    # layer (any message fails the render) and on WebGPU when built; the last frame is
+    # written, --timings says how many ran, --dump reads a history output (PASS.SLOT, the
+    # fourth argument) after them; the plan lists the pairs as persistent, own memory,
+    # with their bytes and their initial barriers.
+    history=$4
+    shift 4
+    for backend in vulkan "$@"; do
+      extra=()
+      [ "$backend" = vulkan ] && extra=(--validation)
+      "$volgraph" render "$config" --backend "$backend" "${extra[@]}" --size 64x36 --frames 5 --timings -o "$tmp/out.pfm" \
+        --dump "$history=$tmp/history.pfm" >"$tmp/out" 2>"$tmp/err"
+      code=$?
+      [ "$code" -eq 0 ] || fail "render --frames 5 on $backend: exit $code; $(cat "$tmp/err")"
+      [ "$(head -c 2 "$tmp/out.pfm")" = "PF" ] && [ "$(head -c 2 "$tmp/history.pfm")" = "PF" ] || fail "no PFM from $backend"
+      grep -q '"frames": 5' "$tmp/out" || fail "--timings on $backend: $(cat "$tmp/out")"
+      rm -f "$tmp"/*.pfm
+    done
+    "$volgraph" plan "$config" >"$tmp/plan" || fail "plan"
+    pass=${history%%.*}
+    grep -q "persistent, own memory, history pair with $pass" "$tmp/plan" || fail "plan lists no history pair: $(cat "$tmp/plan")"
+    grep -q "(history [1-9]" "$tmp/plan" || fail "plan gives no history bytes"
+    grep -A1 "^before the first frame:" "$tmp/plan" | grep -q "barrier $pass" || fail "plan lists no initial barrier"
+    "$volgraph" plan "$config" --json >"$tmp/plan.json" || fail "plan --json"
+    grep -q '"role": "previous"' "$tmp/plan.json" && grep -q '"history_bytes": [1-9]' "$tmp/plan.json" &&
+      grep -q '"initial_barriers": \[$' "$tmp/plan.json" || fail "plan --json lacks the history pair"
     ;;
   *) fail "unknown mode $mode" ;;
 esac

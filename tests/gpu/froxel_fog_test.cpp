@@ -172,17 +172,10 @@ TEST_P(FroxelFog, HillaireIsExactForAHomogeneousMediumAndWronskiConverges) {
 }
 
 TEST_P(FroxelFog, StressLimitsLeaveNoNanOrInfInAnyVolume) {
-  const char* media[] = {
-      R"({ "fog": { "sigma_s": [1e4, 1e4, 1e4], "sigma_a": [0, 0, 0], "g": 0.999 } })",
-      R"({ "fog": { "sigma_s": [1e-7, 1e-7, 1e-7], "sigma_a": [0, 0, 0], "g": -0.999 },
-          "volumes": [ { "shape": "sphere", "size": [0, 0, 0], "sigma_s": [5, 5, 5] } ] })",
-      R"({ "height_fog": { "sigma_s": [1, 1, 1], "sigma_a": [0.5, 0.5, 0.5], "g": 0.999, "base_height": -1000, "falloff": 1000 } })",
-  };
-  for (const char* m : media) {
+  for (const char* m : kStressMedia) {
     FogCase c;
     c.media = m;
-    c.lights = R"([ { "type": "directional", "direction": [0, 0, -1], "irradiance": [10, 10, 10] },
-                    { "type": "point", "position": [0, 1, 0], "intensity": [1e4, 1e4, 1e4] } ])";
+    c.lights = kStressLights;
     c.background = "[1, 1, 1]";
     c.opacity_shadow_map = true;  // the directional light's volumetric shadows by the map, the point light's by no march
     c.grid = R"({ "slices": 16, "near": 0.001, "far": 100000, "distribution": "exponential", "jitter": false })";

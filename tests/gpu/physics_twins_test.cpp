@@ -1,6 +1,7 @@
 // The shared physics includes (shaders/include/phase.glsl, media.glsl, airlight.glsl,
-// light_volume_integral.glsl) on lavapipe, on each backend, against their CPU twins in
-// float (passes/shading/phase.h, media.h, airlight.h, light_volume_integral.h), over a table that
+// light_volume_integral.glsl; and temporal accumulation's view_rays.glsl, froxel.glsl,
+// temporal_blend.glsl) on lavapipe, on each backend, against their CPU twins in float
+// (passes/shading/phase.h, media.h, airlight.h, light_volume_integral.h), over a table that
 // covers the traps (g → ±1, x → 0, dense and empty media, huge distances): relative
 // error ≤ 2e-5 (GLSL lets exp be off by 3 + 2|x| ULP; our twins use the same formulas).
 // The noise (noise.glsl ↔ noise.h in float, same inputs) and the media field
@@ -9,17 +10,21 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <span>
 #include <vector>
 
+
 #include <gtest/gtest.h>
 
+#include "passes/fog/fog_frame.h"
 #include "passes/shading/airlight.h"
 #include "passes/shading/light_volume_integral.h"
 #include "passes/shading/media_field.h"
 #include "passes/shading/noise.h"
 #include "passes/shading/media.h"
 #include "passes/shading/phase.h"
+#include "passes/shading/temporal.h"
 #include "graph/rhi/spirv_reflect.h"
 #include "tests/gpu/shaders/gpu_test_shaders.h"
 #include "tests/gpu/backends.h"
@@ -135,6 +140,16 @@ std::vector<std::byte> run_twin_shader(rhi::Device& device, const char* shader, 
   encoder->copy_buffer_to_buffer(output, readback, result_bytes);
   device.submit(std::move(encoder));
   return device.read_buffer(readback);
+}
+
+// Test shader `shader` over `table` (its binding 0, a storage buffer), three vec4 out per case.
+template <typename Case>
+std::vector<float> run_table_shader(rhi::Device& device, const char* shader, const std::vector<Case>& table) {
+  const std::vector<std::byte> bytes = run_twin_shader(device, shader, {{std::as_bytes(std::span(table)), rhi::buffer_usage::storage}},
+                                                       table.size(), table.size() * 48);
+  std::vector<float> results(table.size() * 12);
+  std::memcpy(results.data(), bytes.data(), results.size() * sizeof(float));
+  return results;
 }
 
 class PhysicsTwins : public OnEachBackend<> {
@@ -269,6 +284,96 @@ TEST_P(PhysicsTwins, NoiseAndMediaFieldMatchTheirCpuTwins) {
   std::printf("noise GPU vs CPU twin (float): %.3g absolute at most, density %.3g × coverage; media field vs double twin: "
               "σ %.3g of the full σ, g %.3g (%zu points of partial density)\n",
               worst_noise, worst_density, worst_sigma, worst_g, inside_partial);
+}
+
+// Temporal accumulation's maths (view_rays.glsl view_uvz, froxel.glsl froxel_uvw,
+// temporal_blend.glsl) against their twins (camera.h, froxel.h, temporal.h) over cameras
+// (turned, 16:9 and 1:2), grids (linear, exponential) and points inside the frame, off
+// its edges, behind the camera and outside [near, far]: 2e-5 absolute on u, v, w (texture
+// coordinates) and relative on z and the blend; inside/outside the same. Points behind
+// the camera compare only z (u and v mean nothing there).
+struct ReprojectionCase {
+  fog::GpuViewRays view;
+  fog::GpuFroxelGrid grid;
+  float point[4];
+  float blend[4];  // current, history value, history frames, alpha
+  float valid[4];
+};
+
+std::vector<ReprojectionCase> reprojection_cases(std::vector<std::pair<shading::ViewRays, shading::FroxelRange>>& cpu) {
+  Camera turned;
+  turned.position = {1, 2, 3};
+  turned.target = {-2, 1, -4};
+  turned.fov_y_deg = 50;
+  turned.near = 0.1;
+  turned.far = 40;
+  Camera tall = turned;
+  tall.position = {-3, 0.5, 1};
+  tall.target = {-3, 0.2, -6};
+  tall.fov_y_deg = 75;
+  const std::pair<Camera, Extent> views[] = {{turned, {160, 90, 1}}, {tall, {50, 100, 1}}};
+  const float ndcs[] = {-1.3f, -0.97f, -0.4f, 0.0f, 0.31f, 0.96f, 1.25f};
+  const double depths[] = {-2, 0.05, 0.7, 6, 39, 55};
+  std::vector<ReprojectionCase> out;
+  size_t n = 0;
+  for (const auto& [camera, size] : views) {
+    const shading::ViewRays rays = shading::view_rays(camera, double(size.width) / size.height);
+    for (const shading::FroxelDistribution distribution : {shading::FroxelDistribution::linear, shading::FroxelDistribution::exponential}) {
+      const shading::FroxelRange range{0.2, 40, distribution};
+      for (float x : ndcs) {
+        for (float y : ndcs) {
+          for (double z : depths) {
+            ReprojectionCase c{};
+            c.view = fog::pack_view_rays(camera, size);
+            c.grid = {{16, 8, 32, 0}, {float(range.near), float(range.far), distribution == shading::FroxelDistribution::linear ? 0.0f : 1.0f, 0}};
+            const Vec3 p = shading::add(rays.position, shading::scaled(shading::view_ray(rays, x, y), z));
+            for (size_t i = 0; i < 3; ++i) c.point[i] = float(p[i]);
+            c.blend[0] = 0.5f + float(n % 7);
+            c.blend[1] = 3.0f - float(n % 5);
+            c.blend[2] = float(n % 12);
+            c.blend[3] = n % 3 == 0 ? 0.1f : n % 3 == 1 ? 0.015625f : 1.0f;
+            c.valid[0] = n % 4 == 0 ? 0.0f : 1.0f;
+            out.push_back(c);
+            cpu.emplace_back(rays, range);
+            ++n;
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+TEST_P(PhysicsTwins, TemporalReprojectionAndBlendMatchTheirCpuTwins) {
+  std::vector<std::pair<shading::ViewRays, shading::FroxelRange>> cpu;
+  const std::vector<ReprojectionCase> table = reprojection_cases(cpu);
+  const std::vector<float> computed = run_table_shader(device(), "reprojection_twins.comp", table);
+  const float* got = computed.data();
+
+  size_t inside = 0;
+  for (size_t i = 0; i < table.size(); ++i) {
+    const ReprojectionCase& c = table[i];
+    const Vec3 p = {c.point[0], c.point[1], c.point[2]};
+    const shading::ViewUvz uvz = shading::view_uvz(cpu[i].first, p);
+    const shading::FroxelUvw uvw = shading::froxel_uvw(cpu[i].first, cpu[i].second, p);
+    const float* r = got + 12 * i;
+    EXPECT_NEAR(r[2], uvz.z, 2e-5 * std::max(1.0, std::abs(uvz.z))) << "z, case " << i;
+    if (uvz.z > 1e-3) {
+      EXPECT_NEAR(r[0], uvz.u, 2e-5) << "u, case " << i;
+      EXPECT_NEAR(r[1], uvz.v, 2e-5) << "v, case " << i;
+      EXPECT_NEAR(r[4], uvw.u, 2e-5) << "froxel u, case " << i;
+      EXPECT_NEAR(r[5], uvw.v, 2e-5) << "froxel v, case " << i;
+      EXPECT_NEAR(r[6], uvw.w, 2e-5) << "froxel w, case " << i;
+    }
+    EXPECT_EQ(r[7], uvw.inside ? 1.0f : 0.0f) << "inside, case " << i << " u " << uvw.u << " v " << uvw.v << " z " << uvz.z;
+    inside += uvw.inside;
+    const shading::Accumulated<float> want =
+        shading::temporal_blend(c.blend[0], shading::Accumulated<float>{c.blend[1], c.blend[2]}, c.valid[0] > 0.5f, c.blend[3]);
+    EXPECT_NEAR(r[8], want.value, 2e-5 * std::max(1.0f, std::abs(want.value))) << "blend, case " << i;
+    EXPECT_EQ(r[9], want.frames) << "blend frames, case " << i;
+  }
+  EXPECT_GT(inside, table.size() / 5);
+  EXPECT_LT(inside, table.size() / 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, PhysicsTwins, ::testing::ValuesIn(gpu_backends()), backend_test_name);

@@ -422,6 +422,71 @@ TEST(HandBuilt, PersistentResourcesAreNeverAliased) {
   EXPECT_EQ(plan.memory.persistent_bytes, plan.placements[h.resource].requirements.size);
 }
 
+// A temporal pass: reads last frame's content of its output through a history slot.
+// Both resources of the pair are persistent, own memory; the plan's frame starts where
+// the last frame left the objects after they swapped: the output's object was read as
+// history (shader-read-only), the history's object was written and then read downstream.
+TEST(HandBuilt, AHistoryPairIsPersistentAndItsFramesStartWhereTheSwappedObjectsWereLeft) {
+  GraphSketch s;
+  const uint32_t source = s.pass("source", PassKind::compute,
+                                 {out_slot("o", RK::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::fixed(64, 64))});
+  SlotDecl accumulated = out_slot("accumulated", RK::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::fixed(64, 64));
+  const uint32_t temporal = s.pass("temporal", PassKind::compute,
+                                   {in_slot("current", RK::texture2d, Usage::sampled), accumulated,
+                                    slot_history("history", "accumulated", "")});
+  const uint32_t use = s.pass("use", PassKind::compute, {in_slot("i", RK::texture2d, Usage::sampled), buffer_out()});
+  s.in(temporal, "current", s.out(source, "o"));
+  const ResourceVersion out = s.out(temporal, "accumulated");
+  const ResourceVersion previous = s.builder().read_history(temporal, 2, out);
+  s.in(use, "i", out);
+  s.output(s.out(use, "o"));
+  const RandomGraph g = s.finish();
+  const Plan plan = compile_checked(g);
+
+  const GraphResource& current = g.graph.resources[out.resource];
+  const GraphResource& history = g.graph.resources[previous.resource];
+  EXPECT_EQ(current.previous, previous.resource);
+  EXPECT_EQ(history.previous_of, out.resource);
+  EXPECT_EQ(history.creator, kNone);
+  EXPECT_EQ(history.desc.name, "temporal.history");
+  EXPECT_TRUE(current.desc.persistent && history.desc.persistent);
+  EXPECT_EQ(plan.placements[out.resource].heap, kNone);
+  EXPECT_EQ(plan.placements[previous.resource].heap, kNone);
+  EXPECT_EQ(plan.memory.persistent_bytes,
+            plan.placements[out.resource].requirements.size + plan.placements[previous.resource].requirements.size);
+  EXPECT_EQ(plan.order.size(), 3u);
+
+  const AccessState read_in_compute{stage::compute_shader, access::shader_sampled_read, Layout::shader_read_only};
+  const AccessState written{stage::compute_shader, access::shader_storage_write, Layout::general};
+  const auto before_write = barriers_before(plan, temporal, out.resource);
+  ASSERT_EQ(before_write.size(), 1u) << plan_text(g.graph, plan);
+  EXPECT_EQ(before_write[0].from, (AccessState{stage::compute_shader, access::shader_storage_write, Layout::shader_read_only}))
+      << text(before_write[0].from);
+  EXPECT_EQ(before_write[0].to, written) << text(before_write[0].to);
+  // The history's object was made visible to compute reads after last frame's write.
+  EXPECT_TRUE(barriers_before(plan, temporal, previous.resource).empty()) << plan_text(g.graph, plan);
+  ASSERT_EQ(plan.initial_barriers.size(), 2u);
+  for (const Barrier& b : plan.initial_barriers) {
+    EXPECT_TRUE(b.resource == out.resource || b.resource == previous.resource);
+    EXPECT_EQ(b.from.layout, Layout::undefined);
+    EXPECT_EQ(b.to.layout, Layout::shader_read_only);
+    EXPECT_EQ(b.to.stages, stage::compute_shader);
+    EXPECT_EQ(b.to.access & read_in_compute.access, read_in_compute.access) << text(b.to);
+  }
+}
+
+TEST(HandBuilt, AHistoryFollowsItsPassOwnUnmodifiedOutput) {
+  GraphSketch s;
+  SlotDecl accumulated = out_slot("accumulated", RK::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::fixed(8, 8));
+  const uint32_t temporal = s.pass("temporal", PassKind::compute, {accumulated, slot_history("history", "accumulated", "")});
+  const uint32_t other = s.pass("other", PassKind::compute, {accumulated, inout_slot("x", RK::texture2d, Usage::storage_read_write)});
+  const ResourceVersion mine = s.out(temporal, "accumulated");
+  const ResourceVersion theirs = s.out(other, "accumulated");
+  EXPECT_THROW(s.builder().read_history(temporal, 1, theirs), GraphError);  // another pass's output
+  s.builder().read_history(temporal, 1, mine);
+  EXPECT_THROW(s.inout(other, "x", mine), GraphError);  // next frame's history must stay as the pass left it
+}
+
 // ---------------------------------------------------------------------------------------
 // Cycles.
 

@@ -146,9 +146,9 @@ TEST(RandomGraphGenerator, DeclarationOrderIsNotDependencyOrder) {
 
 TEST(RandomGraphGenerator, CoversTheFeaturesTheCheckerTests) {
   // Across the seeds of the suite, every kind of use, inouts, optional inputs left
-  // unbound or bound, persistent outputs, needs that fail, and culling all appear.
+  // unbound or bound, persistent outputs, history pairs, needs that fail, and culling all appear.
   std::vector<int> usage_seen(11, 0);
-  int inout = 0, optional_bound = 0, persistent = 0, failing_needs = 0, multi_use = 0;
+  int inout = 0, optional_bound = 0, persistent = 0, history_pairs = 0, failing_needs = 0, multi_use = 0;
   int culled_scene = 0, culled_input = 0, culled_unused = 0, forwarded = 0;
   for (uint64_t seed = 1; seed <= 200; ++seed) {
     const RandomGraph g = make_random_graph(options_for_seed(seed));
@@ -162,7 +162,10 @@ TEST(RandomGraphGenerator, CoversTheFeaturesTheCheckerTests) {
         for (size_t j = 0; j < i; ++j) multi_use += p.uses[j].resource == u.resource;
       }
     }
-    for (const GraphResource& r : g.graph.resources) persistent += r.desc.persistent;
+    for (const GraphResource& r : g.graph.resources) {
+      persistent += r.desc.persistent;
+      history_pairs += r.previous != kNone;
+    }
     const ExpectedCulling c = expected_culling(g.graph, true);
     for (const auto& reason : c.reason) {
       if (!reason) continue;
@@ -190,6 +193,7 @@ TEST(RandomGraphGenerator, CoversTheFeaturesTheCheckerTests) {
   EXPECT_GT(inout, 0);
   EXPECT_GT(optional_bound, 0);
   EXPECT_GT(persistent, 0);
+  EXPECT_GT(history_pairs, 0);
   EXPECT_GT(failing_needs, 0);
   EXPECT_GT(multi_use, 0);
   EXPECT_GT(culled_scene, 0);

@@ -159,6 +159,7 @@ class Checker {
   int64_t effective(uint32_t r, uint32_t v) const {
     if (!opt_.cull) return v;
     for (;;) {
+      if (writer(r, v) == kNone) return v;  // a history: made by the last frame, always there
       if (!need_culled_[writer(r, v)]) return v;
       if (v == 0) return -1;
       --v;
@@ -175,7 +176,8 @@ class Checker {
   void check_handovers();
   void check_barriers();
   const PassUse* use_of(uint32_t pos, uint32_t r) const;
-  void replay(uint32_t r, RState& st, bool report, bool steady);
+  void replay(uint32_t r, RState& st, bool report, const std::string& tag);
+  void replay_frames(uint32_t r);
   void apply_barrier(uint32_t r, RState& st, const Barrier& b, uint32_t pos, bool report, const std::string& tag);
   void apply_use(uint32_t r, RState& st, const PassUse& u, uint32_t pos, bool report, const std::string& tag);
 
@@ -211,7 +213,17 @@ bool Checker::check_shapes() {
     }
   }
   for (size_t r = 0; r < g_.resources.size(); ++r) {
-    for (uint32_t w : g_.resources[r].version_writers) {
+    const GraphResource& res = g_.resources[r];
+    if (res.previous_of != kNone) {  // a history: one version, made by the last frame
+      const bool paired = res.previous_of < g_.resources.size() && g_.resources[res.previous_of].previous == r;
+      if (!paired || res.version_writers != std::vector<uint32_t>{kNone} || !res.desc.persistent ||
+          !g_.resources[res.previous_of].desc.persistent) {
+        fail("graph", rn(uint32_t(r)) + " is a history but not one persistent version paired with its output");
+        ok = false;
+      }
+      continue;
+    }
+    for (uint32_t w : res.version_writers) {
       if (w >= g_.passes.size()) {
         fail("graph", rn(uint32_t(r)) + " has a version writer out of range");
         ok = false;
@@ -275,7 +287,7 @@ bool Checker::model_culling() {
   std::vector<uint32_t> indeg(n, 0);
   for (uint32_t p = 0; p < n; ++p) {
     for (const ResourceUse& u : g_.passes[p].uses) {
-      if (u.direction == SlotDirection::output) continue;
+      if (u.direction == SlotDirection::output || u.direction == SlotDirection::history) continue;
       const uint32_t w = writer(u.resource, u.version);
       succ[w].push_back(p);
       ++indeg[p];
@@ -329,6 +341,7 @@ bool Checker::model_culling() {
     const int64_t e = effective(r, v);
     if (e < 0) return;
     const uint32_t w = writer(r, static_cast<uint32_t>(e));
+    if (w == kNone) return;  // made by the last frame
     if (!live_[w]) {
       live_[w] = true;
       stack.push_back(w);
@@ -339,7 +352,7 @@ bool Checker::model_culling() {
     const uint32_t p = stack.back();
     stack.pop_back();
     for (const ResourceUse& u : g_.passes[p].uses) {
-      if (u.direction != SlotDirection::output) reach(u.resource, u.version);
+      if (u.direction != SlotDirection::output && u.direction != SlotDirection::history) reach(u.resource, u.version);
     }
   }
   for (uint32_t p = 0; p < n; ++p) {
@@ -450,7 +463,7 @@ void Checker::check_dependencies() {
   for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
     const uint32_t p = plan_.order[pos].pass;
     for (const ResourceUse& u : g_.passes[p].uses) {
-      if (u.direction == SlotDirection::output) continue;
+      if (u.direction == SlotDirection::output || u.direction == SlotDirection::history) continue;
       const int64_t e = effective(u.resource, u.version);
       if (e < 0) continue;
       readers[key(u.resource, e)].push_back(p);
@@ -988,36 +1001,54 @@ void Checker::check_barriers() {
       }
     }
     if (life_[r].first == kNone) continue;
-    RState st;
-    st.layout = is_image(r) ? Layout::undefined : Layout::none;
     if (g_.resources[r].desc.persistent) {
-      // Steady state of repeated frames: the frame starts where the last one ended.
-      RState warm = st;
-      replay(r, warm, false, false);
-      warm.first_use_done = false;
-      // With no layout transition in the frame, the resource stays in the layout of its
-      // first use from frame to frame (it was put there once, before the first frame).
-      bool transitions = false;
-      for (const Event& e : events_[r]) {
-        if (!e.is_use && plan_.barriers[e.index].from.layout != plan_.barriers[e.index].to.layout) transitions = true;
-      }
-      if (!transitions) {
-        for (const Event& e : events_[r]) {
-          if (e.is_use) {
-            warm.layout = uses_at_[e.pos][e.index].state.layout;
-            break;
-          }
-        }
-      }
-      replay(r, warm, true, true);
+      replay_frames(r);
     } else {
-      replay(r, st, true, false);
+      RState st;
+      st.layout = is_image(r) ? Layout::undefined : Layout::none;
+      replay(r, st, true, "");
+    }
+  }
+  for (const Barrier& b : plan_.initial_barriers) {
+    if (b.resource >= nr || !g_.resources[b.resource].desc.persistent || !is_image(b.resource) || life_[b.resource].first == kNone) {
+      fail("initial", "initial barrier " + barrier_text(b) + " for " + rn(b.resource) + ", which is not a used persistent texture");
     }
   }
 }
 
-void Checker::replay(uint32_t r, RState& st, bool report, bool steady) {
-  const std::string tag = steady ? " [persistent, steady state of repeated frames]" : "";
+// A persistent resource's object over the first frames: put in place once by the plan's
+// initial barrier, then each frame's uses and barriers — a history pair's object takes
+// the output's role and its history's by turns (the executor swaps them every frame), so
+// two frames make its period; four cover the first frame and the steady state.
+void Checker::replay_frames(uint32_t r) {
+  const GraphResource& res = g_.resources[r];
+  const uint32_t partner = res.previous != kNone ? res.previous : res.previous_of;
+  const bool paired = partner != kNone && life_[partner].first != kNone;
+  RState st;
+  st.layout = is_image(r) ? Layout::undefined : Layout::none;
+  std::vector<const Barrier*> initial;
+  for (const Barrier& b : plan_.initial_barriers) {
+    if (b.resource == r) initial.push_back(&b);
+  }
+  if (initial.size() != (is_image(r) ? 1u : 0u)) {
+    fail("initial", rn(r) + " has " + std::to_string(initial.size()) + " initial barriers, expected " +
+                        (is_image(r) ? "one (a persistent texture)" : "none (a buffer)"));
+  }
+  if (!initial.empty()) apply_barrier(r, st, *initial[0], 0, true, " [before the first frame]");
+  // The plan's barriers serve the steady state: in the first frame one may find nothing
+  // to wait on. Contents carried over are the last frame's (a history the pass does not
+  // read on the first frame; an output made anew).
+  st.accessed = true;
+  for (int frame = 0; frame < 4; ++frame) {
+    if (frame > 0) st.content_valid = true;
+    const uint32_t role = paired && frame % 2 == 1 ? partner : r;
+    std::string tag = " [persistent, frame " + std::to_string(frame);
+    if (paired) tag += ", the object of " + rn(r) + " as " + rn(role);
+    replay(role, st, true, tag + "]");
+  }
+}
+
+void Checker::replay(uint32_t r, RState& st, bool report, const std::string& tag) {
   size_t gi = 0;
   // Global barriers up to a position. Applying one barrier twice with nothing in between
   // changes nothing, so a run of identical global barriers counts once (this keeps the

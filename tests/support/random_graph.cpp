@@ -200,6 +200,11 @@ std::unique_ptr<PassDecl> random_decl(Rng& rng, int index, const RandomGraphOpti
   if (options.allow_inout && rng.chance(0.35)) d->slots.push_back(random_inout(rng, d->kind));
   const int outputs = rng.chance(0.7) ? 1 : 2;
   for (int i = 0; i < outputs; ++i) d->slots.push_back(random_output(rng, d->kind, i, options.allow_persistent));
+  // A temporal pass: reads last frame's content of its first output (a texture) as history.
+  const SlotDecl& first = d->slots[d->slots.size() - size_t(outputs)];
+  if (options.allow_persistent && d->kind != PassKind::transfer && first.kind != ResourceKind::buffer && rng.chance(0.15)) {
+    d->slots.push_back(slot_history("history", first.name, "random history"));
+  }
   if (options.allow_needs && rng.chance(0.3)) d->needs = random_needs(rng);
   return d;
 }
@@ -320,7 +325,7 @@ RandomGraph make_random_graph(const RandomGraphOptions& options) {
   auto required_classes = [](const PassDecl& d) {
     std::vector<uint32_t> req;
     for (const SlotDecl& s : d.slots) {
-      if (s.direction == SlotDirection::output) continue;
+      if (s.direction == SlotDirection::output || s.direction == SlotDirection::history) continue;
       if (s.direction == SlotDirection::input && s.optional) continue;
       req.push_back(accepted_classes(s.kind, s.usage));
     }
@@ -381,6 +386,8 @@ RandomGraph make_random_graph(const RandomGraphOptions& options) {
   std::vector<std::vector<std::vector<uint32_t>>> readers;  // per resource, per version
   std::vector<std::vector<uint32_t>> preds(options.passes);  // per pass: passes that must run first
   std::vector<uint32_t> used;    // resources the current pass already uses
+  std::vector<uint32_t> not_modifiable;  // per pass: `used`, and outputs kept as history (never modified)
+  std::vector<uint32_t> with_history;
   std::vector<std::pair<uint32_t, Usage>> inputs_here;
   std::vector<uint32_t> stamp(options.passes, 0), stack;
   uint32_t tick = 0;
@@ -415,7 +422,9 @@ RandomGraph make_random_graph(const RandomGraphOptions& options) {
     for (size_t i = 0; i < d.slots.size(); ++i) {
       const SlotDecl& slot = d.slots[i];
       if (slot.direction != SlotDirection::inout) continue;
-      const uint32_t r = wiring.pick(accepted_classes(slot.kind, slot.usage), s, used);
+      not_modifiable = used;
+      not_modifiable.insert(not_modifiable.end(), with_history.begin(), with_history.end());
+      const uint32_t r = wiring.pick(accepted_classes(slot.kind, slot.usage), s, not_modifiable);
       if (r == kNone) continue;  // cannot happen for a fitting decl; stay safe
       const uint32_t v = latest[r];
       preds[p].push_back(writer_of(r, v));
@@ -475,27 +484,41 @@ RandomGraph make_random_graph(const RandomGraphOptions& options) {
         used.push_back(r);
       }
     }
+    std::vector<ResourceVersion> made(d.slots.size());
     for (size_t i = 0; i < d.slots.size(); ++i) {
       const SlotDecl& slot = d.slots[i];
       if (slot.direction != SlotDirection::output) continue;
       const ResourceVersion v = builder.create(p, static_cast<uint16_t>(i), resolve_slot(d, slot, output_size, 0));
+      made[i] = v;
       latest.push_back(0);
       readers.emplace_back(1);
       cls.push_back(class_of(builder.graph().resources[v.resource].desc));
       wiring.touch(v.resource, cls.back(), s);
+    }
+    for (size_t i = 0; i < d.slots.size(); ++i) {  // the previous frame's resource: no pass of this frame makes it
+      const SlotDecl& slot = d.slots[i];
+      if (slot.direction != SlotDirection::history) continue;
+      const ResourceVersion followed = made[size_t(d.slot_index(slot.history_of))];
+      builder.read_history(p, static_cast<uint16_t>(i), followed);
+      with_history.push_back(followed.resource);
+      latest.push_back(0);
+      readers.emplace_back(1);
+      cls.push_back(cls[followed.resource]);
     }
   }
 
   // Graph outputs: latest versions only, at least one.
   bool any = false;
   for (uint32_t r = 0; r < latest.size(); ++r) {
+    if (builder.graph().resources[r].previous_of != kNone) continue;  // a history: not this frame's
     if (rng.chance(options.output_fraction)) {
       builder.mark_output({r, latest[r]});
       any = true;
     }
   }
   if (!any && !latest.empty()) {
-    const uint32_t r = static_cast<uint32_t>(latest.size() - 1);
+    uint32_t r = static_cast<uint32_t>(latest.size() - 1);
+    if (builder.graph().resources[r].previous_of != kNone) r = builder.graph().resources[r].previous_of;
     builder.mark_output({r, latest[r]});
   }
 
@@ -574,7 +597,10 @@ std::string graph_text(const Graph& graph) {
     if (pass.needs) os << " needs=0x" << std::hex << pass.needs << std::dec;
     os << "\n";
     for (const ResourceUse& u : pass.uses) {
-      const char* dir = u.direction == SlotDirection::input ? "in" : (u.direction == SlotDirection::inout ? "inout" : "out");
+      const char* dir = u.direction == SlotDirection::input     ? "in"
+                        : u.direction == SlotDirection::inout   ? "inout"
+                        : u.direction == SlotDirection::history ? "history"
+                                                                : "out";
       os << "    " << dir << (u.optional ? "?" : "") << " " << usage_name(u.usage) << " r" << u.resource << "."
          << u.version;
       if (u.resource < graph.resources.size()) os << " (" << graph.resources[u.resource].desc.name << ")";

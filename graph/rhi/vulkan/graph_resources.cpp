@@ -26,6 +26,13 @@ GraphResources::GraphResources(Context& context, const Graph& graph)
     image_usage[o.resource] |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     buffer_usage[o.resource] |= VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
   }
+  for (uint32_t r = 0; r < graph.resources.size(); ++r) {  // a history pair's objects take both roles
+    const uint32_t previous = graph.resources[r].previous;
+    if (previous == kNone) continue;
+    image_usage[r] = image_usage[previous] = image_usage[r] | image_usage[previous];
+    buffer_usage[r] = buffer_usage[previous] = buffer_usage[r] | buffer_usage[previous];
+    features[r] = features[previous] = features[r] | features[previous];
+  }
   for (uint32_t r = 0; r < graph.resources.size(); ++r) {
     const ResourceDesc& d = graph.resources[r].desc;
     if (d.kind != ResourceKind::buffer) {

@@ -704,6 +704,11 @@ class VulkanGraphResources final : public rhi::GraphResourceSet {
   rhi::TextureId texture(uint32_t r) const override { return textures_.at(r); }
   rhi::TextureViewId view(uint32_t r) const override { return views_.at(r); }
   rhi::BufferId buffer(uint32_t r) const override { return buffers_.at(r); }
+  void swap(uint32_t a, uint32_t b) override {
+    std::swap(textures_.at(a), textures_.at(b));
+    std::swap(views_.at(a), views_.at(b));
+    std::swap(buffers_.at(a), buffers_.at(b));
+  }
 
  private:
   VulkanDevice& device_;

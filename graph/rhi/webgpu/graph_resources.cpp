@@ -28,6 +28,18 @@ WebGpuGraphResources::WebGpuGraphResources(WebGpuDevice& device, const Graph& gr
     texture_usage_[o.resource] |= wgpu::TextureUsage::CopySrc;
     buffer_usage_[o.resource] |= wgpu::BufferUsage::CopySrc;
   }
+  for (uint32_t r = 0; r < graph.resources.size(); ++r) {  // a history pair's objects take both roles
+    const uint32_t previous = graph.resources[r].previous;
+    if (previous == kNone) continue;
+    texture_usage_[r] = texture_usage_[previous] = texture_usage_[r] | texture_usage_[previous];
+    buffer_usage_[r] = buffer_usage_[previous] = buffer_usage_[r] | buffer_usage_[previous];
+  }
+}
+
+void WebGpuGraphResources::swap(uint32_t a, uint32_t b) {
+  std::swap(textures_.at(a), textures_.at(b));
+  std::swap(views_.at(a), views_.at(b));
+  std::swap(buffers_.at(a), buffers_.at(b));
 }
 
 void WebGpuGraphResources::bind(const Plan& plan) {

@@ -27,6 +27,7 @@ class WebGpuGraphResources final : public rhi::GraphResourceSet {
   rhi::TextureId texture(uint32_t resource) const override { return textures_.at(resource); }
   rhi::TextureViewId view(uint32_t resource) const override { return views_.at(resource); }
   rhi::BufferId buffer(uint32_t resource) const override { return buffers_.at(resource); }
+  void swap(uint32_t a, uint32_t b) override;
 
   // What bind() created: one object per pooled object.
   struct Created {
