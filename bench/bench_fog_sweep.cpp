@@ -7,8 +7,7 @@
 // machine's load falls on all of them alike. Prints the table with the ratio to the
 // fastest setting and marks the Pareto-optimal rows (no other row is both faster and
 // closer).
-// Two changes make the demo comparable with the reference, applied to both renders:
-// the fog ball's edge fade is removed (the reference's volumes are hard-edged), and the
+// One change makes the demo comparable with the reference, applied to both renders: the
 // camera's far plane is brought to the froxel grid's far end (the reference integrates
 // the media to the far plane, the grid stops at its `far`).
 // The light_volume sweep runs configs/demo_light_volume.json (homogeneous fog, a spot
@@ -116,11 +115,8 @@ double grid_far(const LoadedConfig& loaded) {
   return loaded.config.scene.camera.far;
 }
 
-// The two changes of the file comment.
-void make_comparable(LoadedConfig& loaded) {
-  for (MediumVolume& volume : loaded.config.scene.media.volumes) volume.noise.edge_fade = 0;
-  loaded.config.scene.camera.far = grid_far(loaded);
-}
+// The change of the file comment.
+void make_comparable(LoadedConfig& loaded) { loaded.config.scene.camera.far = grid_far(loaded); }
 
 LoadedConfig load_setting(const PassRegistry& registry, const std::string& demo, Extent size, const Setting& setting) {
   Overrides overrides = setting.overrides;
