@@ -24,6 +24,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "graph/rhi/vulkan/vulkan_device.h"
@@ -74,6 +75,14 @@ std::vector<Setting> froxel_settings() {
         out.push_back({"froxel", std::string(integration) + ", " + std::to_string(slices) + " slices, shadow " + std::to_string(shadow), o, ""});
       }
     }
+  }
+  for (const auto [side, layers] : {std::pair{32, 16}, std::pair{128, 64}}) {  // the opacity shadow map's size (default 64² × 32)
+    Overrides o;
+    o.sets = {"fog_media.slices=32", "sun_shadow.resolution=512", "media_shadow.resolution=" + std::to_string(side),
+              "media_shadow.layers=" + std::to_string(layers)};
+    o.variants = {"fog_integral=hillaire"};
+    const std::string size = std::to_string(side) + "²×" + std::to_string(layers);
+    out.push_back({"froxel", "hillaire, 32 slices, shadow 512, opacity " + size, o, ""});
   }
   return out;
 }
@@ -190,10 +199,10 @@ void print(const std::vector<Row>& rows, const accuracy::FogComparison& coverage
               coverage.compared_pixels, coverage.pixels);
   const bool against_gpu = rows.front().against_gpu.has_value();
   if (against_gpu) std::printf("vs 1000-step march: the same error against a 1000-step raymarch_fog (same shadow map), every pixel\n");
-  std::printf("%-10s %-36s %10s %8s %12s %12s %s%s\n", "technique", "setting", "frame ms", "ratio", "error", "(all px)",
+  std::printf("%-10s %-44s %10s %8s %12s %12s %s%s\n", "technique", "setting", "frame ms", "ratio", "error", "(all px)",
               against_gpu ? "vs march1000 " : "", "front");
   for (const Row& r : rows) {
-    std::printf("%-10s %-36s %10.2f %8.2f %12.4f %12.4f ", r.setting.technique.c_str(), r.setting.label.c_str(), r.frame_ms,
+    std::printf("%-10s %-44s %10.2f %8.2f %12.4f %12.4f ", r.setting.technique.c_str(), r.setting.label.c_str(), r.frame_ms,
                 r.frame_ms / fastest, r.fog_only.difference.relative_mean_error, r.all.difference.relative_mean_error);
     if (r.against_gpu) std::printf("%12.5f ", r.against_gpu->difference.relative_mean_error);
     std::printf("%s\n", r.pareto ? "*" : "");

@@ -62,8 +62,8 @@ PassDecl opacity_shadow_map_pass() {
   d.doc = "The media's optical depth from a shadow map's light, in layers over its light view (Kim & Neumann 2001).";
   d.variants = {{"layered", "`layers` evenly spaced layers along each light ray, from the view's near plane to its far plane"}};
   d.params = {
-      param_int("resolution", 128, 8, 4096, "texels", "columns per side of the light view"),
-      param_int("layers", 64, 1, 512, "", "layers along each light ray"),
+      param_int("resolution", 64, 8, 4096, "texels", "columns per side of the light view"),
+      param_int("layers", 32, 1, 512, "", "layers along each light ray"),
       param_int("steps_per_layer", 2, 1, 64, "", "march steps between two layers' centres"),
       param_int("light_steps", 16, 0, 256, "",
                 "march steps from the view's near plane back toward the light (media outside the view)"),
