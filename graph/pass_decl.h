@@ -39,6 +39,7 @@ struct ParamDecl {
 struct VariantDecl {
   std::string name;
   std::string doc;
+  std::vector<std::string> needs_inputs = {};  // optional input slots this variant requires wired
 };
 
 enum class SlotDirection : uint8_t {

@@ -560,10 +560,14 @@ class Wiring {
     }
     for (size_t i = 0; i < decl.slots.size(); ++i) {
       const SlotDecl& s = decl.slots[i];
-      if (s.direction == SlotDirection::output || s.direction == SlotDirection::history || s.optional || inputs_[p][i]) continue;
+      if (s.direction == SlotDirection::output || s.direction == SlotDirection::history || inputs_[p][i]) continue;
       if (std::any_of(node.inputs.begin(), node.inputs.end(), [&](const InputWiring& w) { return w.slot == s.name; })) continue;
+      const VariantDecl& variant = decl.variants[variants_[p]];
+      const bool needed = std::find(variant.needs_inputs.begin(), variant.needs_inputs.end(), s.name) != variant.needs_inputs.end();
+      if (s.optional && !needed) continue;
+      const std::string why = s.optional ? " (variant \"" + variant.name + "\" needs it)" : "";
       diags_.error(node.where, "pass \"" + node.name + "\" (" + decl.name + "): input \"" + s.name + "\" (" +
-                                   std::string(kind_name(s.kind)) + ") is not wired");
+                                   std::string(kind_name(s.kind)) + ") is not wired" + why);
     }
   }
 

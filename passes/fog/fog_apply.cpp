@@ -1,7 +1,7 @@
 // fog_apply: a per-pixel fog technique's result on the scene's colour, L = T·L_surface +
 // L_scat, from the two images the technique wrote (in-scattered radiance and
 // transmittance, at the frame's resolution or lower: read bilinearly at each pixel, or —
-// variant depth_aware, with the scene's depth wired — by joint bilateral upsampling).
+// variant depth_aware, which needs the scene's depth wired — by joint bilateral upsampling).
 // Shaders: shaders/fog_apply_*.frag (shaders/include/fog_image_lookup*.glsl).
 #include <array>
 
@@ -26,7 +26,7 @@ class FogApplyExecution final : public PassExecution {
  private:
   void prepare(PassContext& c) {
     using namespace rhi;
-    depth_aware_ = c.variant() == "depth_aware" && c.bound("depth");
+    depth_aware_ = c.variant() == "depth_aware";  // the loader made sure `depth` is wired
     if (depth_aware_) {
       draws_.prepare(c, "fog_apply_transmittance_depth_aware.frag", "fog_apply_scattering_depth_aware.frag");
     } else {
@@ -63,7 +63,7 @@ PassDecl fog_apply_pass() {
   d.doc = "Applies a per-pixel fog technique's in-scattering and transmittance images to the scene's colour.";
   d.variants = {
       {"bilinear", "the images read bilinearly at each pixel's centre (upsamples a lower resolution)"},
-      {"depth_aware", "joint bilateral upsampling (Kopf et al. 2007) guided by the scene's `depth` (bilinear without it)"},
+      {"depth_aware", "joint bilateral upsampling (Kopf et al. 2007) guided by the scene's `depth`", {"depth"}},
   };
   SlotDecl depth = slot_optional_in("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth, for depth_aware");
   depth.format = Format::d32_float;
