@@ -7,24 +7,16 @@
 // including shader defines `float light_visibility(int light, vec3 p)` first.
 #ifndef VOLGRAPH_RAYMARCH_FOG_BODY_GLSL
 #define VOLGRAPH_RAYMARCH_FOG_BODY_GLSL
-#include "fog_frame.glsl"
 #include "light_transmittance.glsl"
 #include "phase.glsl"
+#include "pixel_fog.glsl"  // bindings 0–4, the workgroup, store_fog
 
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
-
-layout(set = 0, binding = 0) uniform Frame { FogFrame f; } frame;
-layout(set = 0, binding = 1) uniform texture2D scene_depth;
-layout(set = 0, binding = 2) uniform sampler nearest;
-layout(set = 0, binding = 3, rgba16f) uniform writeonly image2D fog_scattering;
-layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D fog_transmittance;
 layout(set = 0, binding = 5) uniform Params {
   ivec4 steps;      // x: steps along the view ray, y: steps toward each light (0: no volumetric shadows)
   vec4 distances;   // x: max_distance (view depth, m) where no surface is, y: shadow_distance (m) toward directional lights
   vec4 jitter;      // x: 1 jittered samples, 0 each step's midpoint; y: the frame
 } params;
 
-const float FP16_MAX = 65000.0;    // stored values are clamped below rgba16f's largest
 const float SOURCE_MAX = 1e30;     // in-scattering is kept finite (a light at a sample point)
 
 // Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of
@@ -82,8 +74,7 @@ void main() {
     integrate_hillaire(radiance, transmittance_so_far, in_scattering(m, p, -direction, jitter), m.sigma_s + m.sigma_a, dt);
     if (all(lessThan(transmittance_so_far, vec3(NEGLIGIBLE_TRANSMITTANCE)))) break;  // nothing behind shows
   }
-  imageStore(fog_scattering, texel, vec4(clamp(radiance, vec3(0.0), vec3(FP16_MAX)), 0.0));
-  imageStore(fog_transmittance, texel, vec4(clamp(transmittance_so_far, vec3(0.0), vec3(1.0)), 0.0));
+  store_fog(uvec2(texel), radiance, transmittance_so_far);
 }
 
 #endif
