@@ -96,8 +96,8 @@ AccessState access_state(Usage usage, PassKind pass_kind, ResourceKind resource_
   const uint32_t depth_tests = stage::early_fragment_tests | stage::late_fragment_tests;
   AccessState s;
   switch (usage) {
-    case Usage::sampled:
-      s = {shader, access::shader_sampled_read, Layout::shader_read_only};
+    case Usage::sampled:  // a graphics pass may sample in its vertex shader too (light_volume's faces)
+      s = {pass_kind == PassKind::graphics ? stage::vertex_shader | shader : shader, access::shader_sampled_read, Layout::shader_read_only};
       break;
     case Usage::storage_read:
       s = {shader, access::shader_storage_read, Layout::general};

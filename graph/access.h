@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "graph/resource.h"
+#include "graph/rhi/types.h"
 
 namespace volgraph {
 
@@ -34,60 +35,6 @@ bool usage_reads(Usage usage);
 bool usage_writes(Usage usage);
 // Whether `usage` suits a resource of `kind` (attachments are 2D textures, etc.).
 bool usage_fits_kind(Usage usage, ResourceKind kind);
-
-namespace stage {  // pipeline stage bits
-constexpr uint32_t none = 0;
-constexpr uint32_t vertex_shader = 1u << 0;
-constexpr uint32_t fragment_shader = 1u << 1;
-constexpr uint32_t early_fragment_tests = 1u << 2;
-constexpr uint32_t late_fragment_tests = 1u << 3;
-constexpr uint32_t color_attachment_output = 1u << 4;
-constexpr uint32_t compute_shader = 1u << 5;
-constexpr uint32_t copy = 1u << 6;
-constexpr uint32_t all_commands = 1u << 7;
-}  // namespace stage
-
-namespace access {  // memory access bits
-constexpr uint32_t none = 0;
-constexpr uint32_t shader_sampled_read = 1u << 0;
-constexpr uint32_t shader_storage_read = 1u << 1;
-constexpr uint32_t shader_storage_write = 1u << 2;
-constexpr uint32_t uniform_read = 1u << 3;
-constexpr uint32_t color_attachment_read = 1u << 4;
-constexpr uint32_t color_attachment_write = 1u << 5;
-constexpr uint32_t depth_stencil_read = 1u << 6;
-constexpr uint32_t depth_stencil_write = 1u << 7;
-constexpr uint32_t transfer_read = 1u << 8;
-constexpr uint32_t transfer_write = 1u << 9;
-constexpr uint32_t memory_read = 1u << 10;
-constexpr uint32_t memory_write = 1u << 11;
-constexpr uint32_t all_writes =
-    shader_storage_write | color_attachment_write | depth_stencil_write | transfer_write | memory_write;
-}  // namespace access
-
-enum class Layout : uint8_t {
-  undefined,  // contents discarded
-  general,
-  shader_read_only,
-  color_attachment,
-  depth_attachment,
-  depth_read_only,
-  transfer_src,
-  transfer_dst,
-  none,  // buffers have no layout
-};
-
-std::string_view layout_name(Layout layout);
-std::string stage_names(uint32_t stages);
-std::string access_names(uint32_t accesses);
-
-// The synchronisation state a resource must be in for one use.
-struct AccessState {
-  uint32_t stages = stage::none;
-  uint32_t access = access::none;
-  Layout layout = Layout::undefined;
-  friend bool operator==(const AccessState&, const AccessState&) = default;
-};
 
 AccessState access_state(Usage usage, PassKind pass_kind, ResourceKind resource_kind);
 

@@ -158,36 +158,64 @@ ResourceVersion GraphBuilder::read_history(uint32_t pass, uint16_t slot, Resourc
 
 Graph GraphBuilder::finish() { return std::move(graph_); }
 
-ResourceDesc resolve_slot(const PassDecl&, const SlotDecl& slot, Extent output_size, int64_t size_param, int64_t divisor,
-                          int64_t depth) {
-  ResourceDesc d;
-  d.kind = slot.kind;
-  d.format = slot.format;
-  d.persistent = slot.persistent;
-  switch (slot.size.mode) {
+namespace {
+
+Extent extent_of(const SizeSpec& size, ResourceKind kind, Extent output_size, int64_t size_param, int64_t divisor, int64_t depth) {
+  Extent e{};
+  switch (size.mode) {
     case SizeSpec::Mode::absolute:
-      d.extent = slot.size.absolute;
-      d.buffer_bytes = slot.size.buffer_bytes;
+      e = size.absolute;
       break;
     case SizeSpec::Mode::relative: {
       auto scaled = [](uint32_t n, float s) {
         return std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(double(n) * s)));
       };
-      const uint32_t depth = slot.size.param.empty() ? slot.size.absolute.depth : uint32_t(std::max<int64_t>(1, size_param));
-      const float by = slot.size.divisor_param.empty() ? 1.0f : 1.0f / float(std::max<int64_t>(1, divisor));
-      d.extent = {scaled(output_size.width, slot.size.scale_x * by), scaled(output_size.height, slot.size.scale_y * by),
-                  std::max<uint32_t>(1, depth)};
+      const uint32_t slices = size.param.empty() ? size.absolute.depth : uint32_t(std::max<int64_t>(1, size_param));
+      const float by = size.divisor_param.empty() ? 1.0f : 1.0f / float(std::max<int64_t>(1, divisor));
+      e = {scaled(output_size.width, size.scale_x * by), scaled(output_size.height, size.scale_y * by), std::max<uint32_t>(1, slices)};
       break;
     }
     case SizeSpec::Mode::square_param: {
       const uint32_t side = static_cast<uint32_t>(std::max<int64_t>(1, size_param));
-      const int64_t layers = slot.size.depth_param.empty() ? int64_t{slot.size.absolute.depth} : depth;
-      d.extent = {side, side, uint32_t(std::max<int64_t>(1, layers))};
+      const int64_t layers = size.depth_param.empty() ? int64_t{size.absolute.depth} : depth;
+      e = {side, side, uint32_t(std::max<int64_t>(1, layers))};
       break;
     }
   }
-  if (d.kind == ResourceKind::texture2d) d.extent.depth = 1;
+  if (kind == ResourceKind::texture2d) e.depth = 1;
+  return e;
+}
+
+}  // namespace
+
+ResourceDesc resolve_slot(const PassDecl& decl, const SlotDecl& slot, Extent output_size, int64_t size_param, int64_t divisor,
+                          int64_t depth) {
+  ResourceDesc d;
+  d.kind = slot.kind;
+  d.format = slot.format;
+  d.persistent = slot.persistent || decl.cached;  // a cached pass keeps its outputs across frames
+  d.extent = extent_of(slot.size, slot.kind, output_size, size_param, divisor, depth);
+  if (slot.size.mode == SizeSpec::Mode::absolute) d.buffer_bytes = slot.size.buffer_bytes;
   return d;
+}
+
+void resize(Graph& graph, Extent output_size) {
+  graph.output_size = output_size;
+  for (GraphResource& r : graph.resources) {
+    const SizeRule& rule = r.size_rule;
+    if (rule.like != kNone) {
+      r.desc.extent = graph.resources[rule.like].desc.extent;
+    } else if (r.previous_of != kNone) {
+      r.desc.extent = graph.resources[r.previous_of].desc.extent;
+    } else if (rule.set) {
+      r.desc.extent = extent_of(rule.size, r.desc.kind, output_size, rule.side, rule.divisor, rule.depth);
+    }
+  }
+  // A history is made after the output it follows, but an output shaped like a history
+  // (none today) would come earlier: a second sweep settles any such order.
+  for (GraphResource& r : graph.resources) {
+    if (r.previous_of != kNone) r.desc.extent = graph.resources[r.previous_of].desc.extent;
+  }
 }
 
 }  // namespace volgraph

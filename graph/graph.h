@@ -38,14 +38,29 @@ struct GraphPass {
   SceneFeatures needs = 0;
   std::vector<ResourceUse> uses;
   std::vector<ParamValue> params;  // as the decl's params; empty: the defaults
+  // A step of a pass made of steps (PassDecl::steps): the graph pass of its first step
+  // (the pass's own index, where the config's passes are), and which step this is.
+  uint32_t group = kNone;
+  uint16_t step = 0;
 };
 
 // A history pair: an output a history slot follows (`previous` set) and the resource
 // that slot reads (`previous_of` set), last frame's content of the output — made by no
 // pass of this frame (creator and version 0's writer kNone). Both are persistent; the
 // executor swaps their physical objects every frame.
+// How a resource's extent follows the frame's size, so that a graph compiled for
+// another size (resize()) needs no reloading: the slot's size as the config resolved it
+// and the parameter values it names, or the resource it is shaped like.
+struct SizeRule {
+  bool set = false;  // false: the extent is fixed (buffers, graphs built by hand)
+  SizeSpec size{};
+  int64_t side = 0, divisor = 1, depth = 1;  // the values of the size's parameters (resolve_slot)
+  uint32_t like = kNone;  // shaped like this resource (an output_like slot's input)
+};
+
 struct GraphResource {
   ResourceDesc desc;
+  SizeRule size_rule;
   uint32_t creator = kNone;              // pass that makes version 0 (kNone: made by the last frame)
   std::vector<uint32_t> version_writers;  // pass that made version v (v = 0: creator)
   uint32_t previous = kNone;             // an output with a history: the resource holding its last frame
@@ -92,6 +107,11 @@ class GraphBuilder {
   void check_not_read_and_modified(uint32_t pass, uint16_t slot, ResourceVersion what, SlotDirection direction);
   Graph graph_;
 };
+
+// The graph for frames of `output_size`: every resource's extent resolved again by its
+// size rule (those shaped like another and histories follow theirs), as compile() then
+// sees it. Parameters, wiring and formats are unchanged: no config is reloaded.
+void resize(Graph& graph, Extent output_size);
 
 // The resource desc an output slot of `decl` gets in a frame of `output_size`
 // (size_param: the value of a square_param size, 0 when unused).

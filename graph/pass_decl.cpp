@@ -100,6 +100,119 @@ SlotDecl slot_history(std::string name, std::string output_slot, std::string doc
   return s;
 }
 
+PassTable::PassTable(std::string name, PassKind kind, std::string doc) {
+  decl.name = std::move(name);
+  decl.kind = kind;
+  decl.doc = std::move(doc);
+}
+
+VariantHandle PassTable::variant(std::string name, std::string doc, int32_t shader_code, std::vector<std::string> needs_inputs) {
+  decl.variants.push_back({std::move(name), std::move(doc), std::move(needs_inputs), shader_code});
+  return {uint16_t(decl.variants.size() - 1)};
+}
+
+template <typename T>
+ParamHandle<T> PassTable::add_param(ParamDecl param) {
+  decl.params.push_back(std::move(param));
+  return {uint16_t(decl.params.size() - 1)};
+}
+
+ParamHandle<bool> PassTable::flag(std::string name, bool def, std::string doc) {
+  return add_param<bool>(param_bool(std::move(name), def, std::move(doc)));
+}
+
+ParamHandle<int64_t> PassTable::integer(std::string name, int64_t def, int64_t min, int64_t max, std::string unit,
+                                        std::string doc) {
+  return add_param<int64_t>(param_int(std::move(name), def, min, max, std::move(unit), std::move(doc)));
+}
+
+ParamHandle<double> PassTable::number(std::string name, double def, double min, double max, std::string unit, std::string doc) {
+  return add_param<double>(param_number(std::move(name), def, min, max, std::move(unit), std::move(doc)));
+}
+
+ParamHandle<std::array<double, 3>> PassTable::vec3(std::string name, std::array<double, 3> def, double min, double max,
+                                                   std::string unit, std::string doc) {
+  return add_param<std::array<double, 3>>(param_vec3(std::move(name), def, min, max, std::move(unit), std::move(doc)));
+}
+
+ParamHandle<std::string> PassTable::choice(std::string name, std::string def, std::vector<std::string> choices, std::string doc) {
+  return add_param<std::string>(param_choice(std::move(name), std::move(def), std::move(choices), std::move(doc)));
+}
+
+SlotHandle PassTable::add_slot(SlotDecl slot, const SlotOptions& options) {
+  if (options.format != Format::undefined) slot.format = options.format;
+  slot.persistent = options.persistent;
+  slot.format_overridable = options.format_overridable;
+  slot.size_overridable = options.size_overridable;
+  decl.slots.push_back(std::move(slot));
+  return {uint16_t(decl.slots.size() - 1)};
+}
+
+SlotHandle PassTable::input(std::string name, ResourceKind kind, Usage usage, std::string doc, SlotOptions options) {
+  return add_slot(slot_in(std::move(name), kind, usage, std::move(doc)), options);
+}
+
+SlotHandle PassTable::optional_input(std::string name, ResourceKind kind, Usage usage, std::string doc, SlotOptions options) {
+  return add_slot(slot_optional_in(std::move(name), kind, usage, std::move(doc)), options);
+}
+
+SlotHandle PassTable::output(std::string name, ResourceKind kind, Usage usage, Format format, SizeSpec size, std::string doc,
+                             SlotOptions options) {
+  return add_slot(slot_out(std::move(name), kind, usage, format, std::move(size), std::move(doc)), options);
+}
+
+SlotHandle PassTable::output_like(std::string name, SlotHandle like, Usage usage, std::string doc) {
+  return add_slot(slot_out_like(std::move(name), decl.slots.at(like.index).name, usage, std::move(doc)), {});
+}
+
+SlotHandle PassTable::inout(std::string name, ResourceKind kind, Usage usage, std::string doc) {
+  return add_slot(slot_inout(std::move(name), kind, usage, std::move(doc)), {});
+}
+
+SlotHandle PassTable::history(std::string name, SlotHandle output, std::string doc) {
+  return add_slot(slot_history(std::move(name), decl.slots.at(output.index).name, std::move(doc)), {});
+}
+
+SlotHandle PassTable::internal(std::string name, ResourceKind kind, Format format, SizeSpec size, std::string doc) {
+  SlotDecl slot = slot_out(std::move(name), kind, Usage::sampled, format, std::move(size), std::move(doc));
+  slot.direction = SlotDirection::internal;
+  return add_slot(std::move(slot), {});
+}
+
+StepHandle PassTable::step(std::string name, PassKind kind, std::vector<std::pair<SlotHandle, Usage>> uses) {
+  StepDecl step{std::move(name), kind, {}, nullptr};
+  for (const auto& [slot, usage] : uses) step.uses.push_back({slot.index, usage});
+  decl.steps.push_back(std::move(step));
+  return {uint16_t(decl.steps.size() - 1)};
+}
+
+void finish_steps(PassDecl& decl) {
+  std::vector<uint8_t> written(decl.slots.size(), 0);
+  for (StepDecl& step : decl.steps) {
+    PassDecl d = decl;
+    d.steps.clear();
+    d.kind = step.kind;
+    for (const auto& [slot, usage] : step.uses) {
+      SlotDecl& s = d.slots.at(slot);
+      const SlotDirection outer = decl.slots[slot].direction;
+      s.usage = usage;
+      if (outer == SlotDirection::input || outer == SlotDirection::history) continue;
+      if (!usage_writes(usage)) {
+        s.direction = SlotDirection::input;
+        s.optional = false;
+        s.format = Format::undefined;  // the resource's own (checked where it is made)
+      } else if (outer == SlotDirection::inout || written[slot]) {
+        s.direction = SlotDirection::inout;
+        s.format = Format::undefined;
+      } else {
+        s.direction = SlotDirection::output;
+      }
+      if (usage_writes(usage)) written[slot] = 1;
+    }
+    step.decl = std::make_shared<const PassDecl>(std::move(d));
+  }
+}
+
 std::string_view pass_kind_name(PassKind kind) {
   switch (kind) {
     case PassKind::compute: return "compute";

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <string>
 #include <variant>
 #include <vector>
@@ -40,6 +41,9 @@ struct VariantDecl {
   std::string name;
   std::string doc;
   std::vector<std::string> needs_inputs = {};  // optional input slots this variant requires wired
+  // What the variant changes in the pass's shader: a constant the pass hands its shader
+  // (e.g. PHASE_HG from shaders/include/phase_codes.h, a header C++ and GLSL both read).
+  int32_t shader_code = 0;
 };
 
 enum class SlotDirection : uint8_t {
@@ -48,6 +52,8 @@ enum class SlotDirection : uint8_t {
   inout,   // modifies a resource another pass made; downstream sees the new version
   history, // reads the previous frame's content of one of the pass's own outputs (its
            // `history_of`); bound by the graph, never wired (see slot_history)
+  internal, // a transient only the pass's own steps use (StepDecl): never wired; the graph
+            // gives it memory and plans its barriers like any other, named "pass.slot"
 };
 
 struct SlotDecl {
@@ -75,6 +81,18 @@ struct ParamProblem {
 };
 
 struct PassDecl;
+
+// A step of a pass made of several (PassDecl::steps): one graph pass of its own, so the
+// compiler orders it, plans the barriers between it and the other steps, and times it.
+// It uses some of the pass's slots — inputs, outputs and internal slots — each with this
+// step's usage; the first step that writes a slot makes it, later writers modify it.
+struct StepDecl {
+  std::string name;  // the graph pass is "<pass>/<name>"
+  PassKind kind = PassKind::graphics;
+  std::vector<std::pair<uint16_t, Usage>> uses;  // slot index (into PassDecl::slots), usage
+  std::shared_ptr<const PassDecl> decl;          // made by finish_steps(): the step as a pass of its own
+};
+
 // Checks a pass whose scene needs hold, with its parameter values (as decl.params).
 using SceneCheck = std::vector<ParamProblem> (*)(const PassDecl& decl, const Scene& scene,
                                                  const std::vector<ParamValue>& params);
@@ -93,10 +111,19 @@ struct PassDecl {
   SceneFeatures needs = 0;
   SceneCheck check_scene = nullptr;      // optional
   MakeExecution make_execution = nullptr;  // none: the pass cannot run yet
-  // Its execution keeps a bind group per PassContext::parity(), so it may bind the
-  // resources of a history pair, whose objects swap every frame (the executor refuses
-  // to run other passes on them: they would keep binding frame 0's objects).
-  bool parity_bind_groups = false;
+  // Cached persistent outputs: when set, every output is persistent and a frame whose
+  // cache key (graph/execute/cache_key.h: the pass's type, variant and parameters, the
+  // scene parts below, and its inputs' keys) equals the last frame's skips the pass.
+  bool cached = false;
+  // The parts of the scene the pass's output depends on (its cache key and, through it,
+  // its readers'). A pass that is not `frame_invariant` gets a new key every frame.
+  ScenePartMask reads_scene = 0;
+  // The output depends only on the key's contents, not on the frame number (no jitter,
+  // no history): the pass's key then stays equal between frames.
+  bool frame_invariant = false;
+  // Empty: the pass is one graph pass. Else the steps it runs as, in order; they share
+  // one execution (PassContext::step() says which is recording).
+  std::vector<StepDecl> steps;
 
   int variant_index(std::string_view variant) const;  // -1 when unknown
   int param_index(std::string_view param) const;
@@ -122,6 +149,89 @@ SlotDecl slot_inout(std::string name, ResourceKind kind, Usage usage, std::strin
 // physical objects every frame (a history pair). On the first frame the history holds
 // nothing valid: the pass must know (PassContext::history_valid) and not read it.
 SlotDecl slot_history(std::string name, std::string output_slot, std::string doc);
+
+// Typed handles into a pass type's tables, returned by PassTable below: a pass keeps
+// them, so its execution names a slot, parameter or variant by a member that must
+// exist (a misspelt name does not compile) and reads a parameter as its own type.
+struct SlotHandle {
+  uint16_t index = 0;
+};
+struct StepHandle {
+  uint16_t index = 0;
+  friend bool operator==(StepHandle, StepHandle) = default;
+};
+template <typename T>  // bool, int64_t, double, std::array<double, 3>, std::string (a choice)
+struct ParamHandle {
+  uint16_t index = 0;
+};
+struct VariantHandle {
+  uint16_t index = 0;
+  friend bool operator==(VariantHandle, VariantHandle) = default;
+};
+
+// What a slot may add to its kind, usage and doc.
+struct SlotOptions {
+  Format format = Format::undefined;  // inputs: the format required (undefined: any); outputs: the default
+  bool persistent = false;            // outputs: kept across frames, never aliased
+  bool format_overridable = false;    // outputs: the config may choose another format
+  bool size_overridable = false;      // outputs: the config may choose another size
+};
+
+// A pass type's declaration written as one table: a pass derives a struct from
+// PassTable whose members, in order, are its variants, parameters and slots, each
+// initialised by the call that declares it (so the table and the handles are one list):
+//
+//   struct FroxelScatterTable : PassTable {
+//     FroxelScatterTable() : PassTable("froxel_scatter", PassKind::compute, "…") {}
+//     VariantHandle hg = variant("hg", "Henyey–Greenstein", PHASE_HG);
+//     ParamHandle<double> g_back = number("g_back", -0.3, -0.999, 0.999, "", "…");
+//     SlotHandle media_scattering = input("media_scattering", ResourceKind::texture3d, Usage::sampled, "…");
+//   };
+//
+// and registers it with pass_type<Table, Execution>() (graph/execute/pass_execution.h).
+class PassTable {
+ public:
+  PassTable(std::string name, PassKind kind, std::string doc);
+  PassDecl decl;
+
+ protected:
+  VariantHandle variant(std::string name, std::string doc, int32_t shader_code = 0, std::vector<std::string> needs_inputs = {});
+  ParamHandle<bool> flag(std::string name, bool def, std::string doc);
+  ParamHandle<int64_t> integer(std::string name, int64_t def, int64_t min, int64_t max, std::string unit, std::string doc);
+  ParamHandle<double> number(std::string name, double def, double min, double max, std::string unit, std::string doc);
+  ParamHandle<std::array<double, 3>> vec3(std::string name, std::array<double, 3> def, double min, double max,
+                                          std::string unit, std::string doc);
+  ParamHandle<std::string> choice(std::string name, std::string def, std::vector<std::string> choices, std::string doc);
+  SlotHandle input(std::string name, ResourceKind kind, Usage usage, std::string doc, SlotOptions options = {});
+  SlotHandle optional_input(std::string name, ResourceKind kind, Usage usage, std::string doc, SlotOptions options = {});
+  SlotHandle output(std::string name, ResourceKind kind, Usage usage, Format format, SizeSpec size, std::string doc,
+                    SlotOptions options = {});
+  SlotHandle output_like(std::string name, SlotHandle like, Usage usage, std::string doc);
+  SlotHandle inout(std::string name, ResourceKind kind, Usage usage, std::string doc);
+  SlotHandle history(std::string name, SlotHandle output, std::string doc);
+  // A transient only this pass's steps use: its kind, format and size as an output's.
+  SlotHandle internal(std::string name, ResourceKind kind, Format format, SizeSpec size, std::string doc);
+  // A step and the slots it uses, with its usage of each.
+  StepHandle step(std::string name, PassKind kind, std::vector<std::pair<SlotHandle, Usage>> uses);
+
+ private:
+  SlotHandle add_slot(SlotDecl slot, const SlotOptions& options);
+  template <typename T>
+  ParamHandle<T> add_param(ParamDecl param);
+};
+
+// Makes each step's PassDecl (StepDecl::decl) once the table is complete: the pass's
+// variants, parameters, needs and slots (the same indices), each slot the step uses
+// given the step's usage and direction — input for reads, output for the step that first
+// writes a slot, inout for later writers.
+void finish_steps(PassDecl& decl);
+
+// A parameter's value among a pass's values (as its decl lists them), by its handle:
+// for scene checks, which see the values before an execution exists.
+template <typename T>
+const T& param_in(const std::vector<ParamValue>& values, ParamHandle<T> handle) {
+  return std::get<T>(values.at(handle.index));
+}
 
 std::string_view pass_kind_name(PassKind kind);
 std::string_view param_type_name(ParamType type);

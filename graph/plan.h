@@ -115,6 +115,9 @@ struct Plan {
   // contents to the state `barriers` assume every frame starts in (the steady state of
   // repeated frames, history pairs swapping their objects between frames).
   std::vector<Barrier> initial_barriers;
+  // Per graph resource: where a frame leaves it, for whatever follows the frame
+  // (read-backs): its layout, and the stages of its last write and of every read since.
+  std::vector<AccessState> final_states;
   MemoryStats memory{};
 };
 

@@ -8,46 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "graph/rhi/types.h"
+
 namespace volgraph {
-
-enum class ResourceKind : uint8_t { texture2d, texture3d, buffer };
-
-// Texel formats a slot may hold. Storage-capable ones match WebGPU storage formats.
-enum class Format : uint8_t {
-  undefined,
-  r8_unorm,
-  rgba8_unorm,
-  rgba8_srgb,
-  r16_float,
-  rg16_float,
-  rgba16_float,
-  r32_float,
-  rg32_float,
-  rgba32_float,
-  r11g11b10_float,
-  r32_uint,
-  d16_unorm,
-  d32_float,
-};
-
-struct FormatInfo {
-  std::string_view name;
-  uint32_t bytes_per_texel;
-  bool is_depth;
-  bool storage_capable;  // usable as a storage texture on both backends
-};
-
-const FormatInfo& format_info(Format format);
-std::optional<Format> format_from_name(std::string_view name);
-std::string_view kind_name(ResourceKind kind);
-std::optional<ResourceKind> kind_from_name(std::string_view name);
-
-struct Extent {
-  uint32_t width = 1;
-  uint32_t height = 1;
-  uint32_t depth = 1;
-  friend bool operator==(const Extent&, const Extent&) = default;
-};
 
 // How a slot's size is decided: fixed, a fraction of the frame's output size,
 // or a square whose side is an integer parameter of the pass (shadow map resolution).

@@ -3,71 +3,61 @@
 // Reinhard (Reinhard et al. 2002, eq. 3). Shader: shaders/composite.comp.
 #include "graph/execute/pass_execution.h"
 #include "passes/passes.h"
-#include "passes/shading/programs.h"
-#include "passes/shading/tonemap.h"
+#include "passes/plumbing/programs.h"
+#include "passes/uniform_mirrors.h"
+#include "physics/tonemap.h"
+#include "shaders/include/tonemap_codes.h"
 
 namespace volgraph {
 namespace {
 
-shading::ToneMap tone_map_of(std::string_view variant) {
-  if (variant == "aces") return shading::ToneMap::aces;
-  if (variant == "reinhard") return shading::ToneMap::reinhard;
-  return shading::ToneMap::none;
-}
+// The shader's codes are the CPU twin's (physics/tonemap.h).
+static_assert(int(physics::ToneMap::none) == TONE_MAP_NONE && int(physics::ToneMap::aces) == TONE_MAP_ACES &&
+              int(physics::ToneMap::reinhard) == TONE_MAP_REINHARD);
+
+struct CompositeTable : PassTable {
+  CompositeTable()
+      : PassTable("composite", PassKind::compute, "Applies exposure and a tone map to linear radiance; writes the frame's output.") {}
+  // Variants: the tone map (the first is the default).
+  VariantHandle none = variant("none", "linear radiance × 2^exposure, no tone map", TONE_MAP_NONE);
+  VariantHandle aces = variant("aces", "ACES filmic curve (Narkowicz's fit)", TONE_MAP_ACES);
+  VariantHandle reinhard = variant("reinhard", "x / (1 + x) per channel", TONE_MAP_REINHARD);
+  // Parameters.
+  ParamHandle<double> exposure = number("exposure", 0, -20, 20, "EV", "scale by 2^exposure before the tone map");
+  // Slots.
+  SlotHandle color = input("color", ResourceKind::texture2d, Usage::sampled, "linear radiance");
+  SlotHandle output_slot = output("output", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float,
+                                  SizeSpec::of_output(), "the frame: linear or tone-mapped, before sRGB encoding");
+};
 
 class CompositeExecution final : public PassExecution {
  public:
+  explicit CompositeExecution(const CompositeTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    program_ = plumbing::create_compute_program(s.device, "composite.comp");
+    const Extent size = s.extent(t_.output_slot);
+    const GpuCompositeParams params{{size.width, size.height}, float(s.param(t_.exposure)), s.variant().shader_code};
+    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 3, s.name() + " params", params);
+  }
+
   void record(PassContext& c) override {
-    if (!program_.pipeline) prepare(c);
-    const Extent size = c.desc("output").extent;
-    struct {
-      uint32_t size[2];
-      float exposure_ev;
-      int32_t tone_map_op;
-    } block{{size.width, size.height}, float(std::get<double>(c.param("exposure"))), int32_t(tone_map_of(c.variant()))};
-    c.device.write_buffer(params_, 0, std::as_bytes(std::span(&block, 1)));
-    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_}, size);
+    using rhi::BindGroupEntry;
+    const rhi::BindGroupId group =
+        c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, c.view(t_.color)),
+                                           BindGroupEntry::of(1, c.sampler(rhi::StockSampler::nearest_clamp)),
+                                           BindGroupEntry::of(2, c.view(t_.output_slot)), BindGroupEntry::of(3, params_)});
+    plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.output_slot));
   }
 
  private:
-  // Pipeline and bindings, once: the graph's resources keep their handles for the
-  // executor's lifetime.
-  void prepare(PassContext& c) {
-    using namespace rhi;
-    program_ = shading::create_compute_program(c.device, "composite.comp");
-    params_ = c.device.create_buffer({"composite params", 16, buffer_usage::uniform | buffer_usage::copy_dst});
-    group_ = c.device.create_bind_group({"composite", program_.layouts[0],
-                                         {BindGroupEntry::of(0, c.view("color")), BindGroupEntry::of(1, c.device.create_sampler({"nearest"})),
-                                          BindGroupEntry::of(2, c.view("output")), BindGroupEntry::of(3, params_)}});
-  }
-
-  shading::ComputeProgram program_;
-  rhi::BindGroupId group_;
+  const CompositeTable& t_;
+  plumbing::ComputeProgram program_;
   rhi::BufferId params_;
 };
 
 }  // namespace
 
-PassDecl composite_pass() {
-  PassDecl d;
-  d.name = "composite";
-  d.kind = PassKind::compute;
-  d.doc = "Applies exposure and a tone map to linear radiance; writes the frame's output.";
-  d.variants = {
-      {"none", "linear radiance × 2^exposure, no tone map"},
-      {"aces", "ACES filmic curve (Narkowicz's fit)"},
-      {"reinhard", "x / (1 + x) per channel"},
-  };
-  d.params = {
-      param_number("exposure", 0, -20, 20, "EV", "scale by 2^exposure before the tone map"),
-  };
-  d.slots = {
-      slot_in("color", ResourceKind::texture2d, Usage::sampled, "linear radiance"),
-      slot_out("output", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float, SizeSpec::of_output(),
-               "the frame: linear or tone-mapped, before sRGB encoding"),
-  };
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new CompositeExecution()); };
-  return d;
-}
+PassDecl composite_pass() { return pass_type<CompositeTable, CompositeExecution>(); }
 
 }  // namespace volgraph

@@ -10,6 +10,7 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(composite_pass());
   registry.add(clear_pass());
   registry.add(copy_pass());
+  registry.add(vignette_pass());
   registry.add(froxel_voxelize_pass());
   registry.add(froxel_scatter_pass());
   registry.add(froxel_temporal_pass());

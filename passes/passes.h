@@ -13,5 +13,6 @@ PassDecl scene_pass();
 PassDecl composite_pass();
 PassDecl clear_pass();
 PassDecl copy_pass();
+PassDecl vignette_pass();  // passes/post/vignette.cpp
 
 }  // namespace volgraph

@@ -6,22 +6,17 @@
 #include "graph/rhi/device_error.h"
 #include "graph/scene/scene.h"
 #include "passes/passes.h"
-#include "passes/shading/camera.h"
-#include "passes/shading/gltf.h"
-#include "passes/shading/light_list.h"
-#include "passes/shading/programs.h"
-#include "passes/shading/scene_geometry.h"
-#include "passes/shading/textures.h"
+#include "physics/camera.h"
+#include "passes/plumbing/gltf.h"
+#include "passes/plumbing/light_list.h"
+#include "passes/plumbing/programs.h"
+#include "passes/plumbing/scene_geometry.h"
+#include "passes/plumbing/shadow_view.h"
+#include "passes/plumbing/textures.h"
+#include "passes/uniform_mirrors.h"
 
 namespace volgraph {
 namespace {
-
-// std140 block Frame of shaders/include/scene_uniforms.glsl.
-struct FrameBlock {
-  float view_projection[16];
-  float ambient_irradiance[4];
-  shading::GpuLightList light_list;
-};
 
 // glTF files must load and textures decode: a malformed one is bad input, reported at
 // the object's "file" or the material's "albedo_texture".
@@ -29,7 +24,7 @@ std::vector<ParamProblem> check_models(const PassDecl&, const Scene& scene, cons
   std::vector<ParamProblem> problems;
   for (const Material& m : scene.materials) {
     if (m.albedo_texture.empty()) continue;
-    const std::string problem = shading::image_file_problem(m.albedo_texture);
+    const std::string problem = plumbing::image_file_problem(m.albedo_texture);
     if (problem.empty()) continue;
     Where where = m.where;
     where.pointer += "/albedo_texture";
@@ -38,7 +33,7 @@ std::vector<ParamProblem> check_models(const PassDecl&, const Scene& scene, cons
   for (const Object& o : scene.objects) {
     if (o.shape != Shape::gltf) continue;
     try {
-      shading::load_gltf(o.file);
+      plumbing::load_gltf(o.file);
     } catch (const std::exception& e) {
       Where where = o.where;
       where.pointer += "/file";
@@ -48,21 +43,79 @@ std::vector<ParamProblem> check_models(const PassDecl&, const Scene& scene, cons
   return problems;
 }
 
+struct SceneTable : PassTable {
+  SceneTable()
+      : PassTable("scene", PassKind::graphics, "Opaque surfaces, lit and shadowed, over the background; linear radiance and depth.") {
+    decl.check_scene = check_models;
+  }
+  // Variants.
+  VariantHandle lambert = variant(
+      "lambert", "Lambertian reflection of every light, shadowed by the shadow map (and the media's opacity shadow map) when wired");
+  // Parameters.
+  ParamHandle<std::array<double, 3>> ambient =
+      vec3("ambient", {0, 0, 0}, 0, 1e6, "W/m²", "uniform irradiance added to every surface (unshadowed)");
+  ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
+  // Slots.
+  SlotHandle shadow_map = optional_input("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map",
+                                         {.format = Format::d32_float});
+  SlotHandle light_view = optional_input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view");
+  SlotHandle media_shadow = optional_input("media_shadow", ResourceKind::texture3d, Usage::sampled,
+                                           "opacity_shadow_map's optical depth over the same light view: the media dim that light");
+  SlotHandle color = output("color", ResourceKind::texture2d, Usage::color_attachment, Format::rgba16_float, SizeSpec::of_output(),
+                            "linear radiance", {.format_overridable = true, .size_overridable = true});
+  SlotHandle depth = output("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float, SizeSpec::of_output(),
+                            "scene depth, for later passes (fog, translucency)");
+};
+
 // Rasterises the scene's objects, lit (shaders/scene.vert, scene.frag).
 class SceneExecution final : public PassExecution {
  public:
+  explicit SceneExecution(const SceneTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    using namespace rhi;
+    // With a shadow map wired (and shadows on), its light is shadowed (set 2).
+    shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
+    media_shadowed_ = shadowed_ && s.bound(t_.media_shadow);
+    RenderPipelineDesc pd;
+    pd.label = "scene";
+    pd.vertex_buffers = {plumbing::SceneGeometry::vertex_layout()};
+    pd.colors = {{s.desc(t_.color).format, BlendMode::replace}};
+    pd.depth = {Format::d32_float, true, CompareFunction::less};
+    pd.cull = CullMode::none;  // planes are seen from both sides
+    program_ = plumbing::create_render_program(s.device, pd, "scene.vert",
+                                              media_shadowed_ ? "scene_media_shadowed.frag"
+                                              : shadowed_     ? "scene_shadowed.frag"
+                                                              : "scene.frag");
+    // The blocks it fills (the frame every frame; the objects' in SceneGeometry) and the
+    // shadow map's view it reads match the shaders'.
+    plumbing::check_uniform_mirror<GpuSceneFrame>(program_, 0, 0, "scene frame");
+    if (shadowed_) plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, 2, 2, s.name() + " light_view");
+    frame_ = s.device.create_buffer({"scene frame", sizeof(GpuSceneFrame), buffer_usage::uniform | buffer_usage::copy_dst});
+    geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, program_);
+  }
+
   void record(PassContext& c) override {
-    if (!program_.pipeline) prepare(c);
+    using rhi::BindGroupEntry;
     write_frame(c);
     const Vec3& bg = c.scene->background;
     rhi::RenderPassDesc pass;
-    pass.label = c.graph_pass().name;
-    pass.colors = {{c.view("color"), rhi::LoadOp::clear, {float(bg[0]), float(bg[1]), float(bg[2]), 1.0f}}};
-    pass.depth = {c.view("depth"), rhi::LoadOp::clear, 1.0f, false};
+    pass.label = c.name();
+    pass.colors = {{c.view(t_.color), rhi::LoadOp::clear, {float(bg[0]), float(bg[1]), float(bg[2]), 1.0f}}};
+    pass.depth = {c.view(t_.depth), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(program_.pipeline);
-    c.encoder.set_bind_group(0, frame_group_);
-    if (shadow_group_) c.encoder.set_bind_group(2, shadow_group_);
+    c.encoder.set_bind_group(0, c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, frame_)}));
+    if (shadowed_) {
+      std::vector<BindGroupEntry> shadow = {BindGroupEntry::of(0, c.view(t_.shadow_map)),
+                                            BindGroupEntry::of(1, c.sampler(rhi::StockSampler::nearest_clamp)),
+                                            BindGroupEntry::of(2, c.buffer(t_.light_view))};
+      if (media_shadowed_) {
+        shadow.push_back(BindGroupEntry::of(3, c.view(t_.media_shadow)));
+        shadow.push_back(BindGroupEntry::of(4, c.sampler(rhi::StockSampler::linear_clamp)));
+      }
+      c.encoder.set_bind_group(2, c.bind_group(program_.layouts[2], std::move(shadow)));
+    }
     geometry_->draw(c.encoder, 1);
     c.encoder.end_render_pass();
   }
@@ -70,82 +123,24 @@ class SceneExecution final : public PassExecution {
  private:
   void write_frame(PassContext& c) {
     const Scene& scene = *c.scene;
-    const Extent size = c.desc("color").extent;
-    FrameBlock f{};
-    to_floats(shading::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
-    const auto ambient = std::get<std::array<double, 3>>(c.param("ambient"));
+    const Extent size = c.extent(t_.color);
+    GpuSceneFrame f{};
+    to_floats(physics::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
+    const std::array<double, 3>& ambient = c.param(t_.ambient);
     for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i]);
-    f.light_list = shading::pack_lights(scene.lights);
+    f.light_list = plumbing::pack_lights(scene.lights);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&f, 1)));
   }
 
-  void prepare(PassContext& c) {
-    using namespace rhi;
-    const Scene& scene = *c.scene;
-    // With a shadow map wired (and shadows on), its light is shadowed (set 2).
-    const bool shadowed = c.bound("shadow_map") && c.bound("light_view") && std::get<bool>(c.param("shadows"));
-    const bool media_shadowed = shadowed && c.bound("media_shadow");
-    RenderPipelineDesc pd;
-    pd.label = "scene";
-    pd.vertex_buffers = {shading::SceneGeometry::vertex_layout()};
-    pd.colors = {{c.desc("color").format, BlendMode::replace}};
-    pd.depth = {Format::d32_float, true, CompareFunction::less};
-    pd.cull = CullMode::none;  // planes are seen from both sides
-    program_ = shading::create_render_program(c.device, pd, "scene.vert",
-                                              media_shadowed ? "scene_media_shadowed.frag"
-                                              : shadowed     ? "scene_shadowed.frag"
-                                                             : "scene.frag");
-
-    frame_ = c.device.create_buffer({"scene frame", sizeof(FrameBlock), buffer_usage::uniform | buffer_usage::copy_dst});
-    frame_group_ = c.device.create_bind_group({"scene frame", program_.layouts[0], {BindGroupEntry::of(0, frame_)}});
-    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, scene, program_.layout_descs[1], program_.layouts[1]);
-    if (!shadowed) return;
-    std::vector<BindGroupEntry> shadow = {BindGroupEntry::of(0, c.view("shadow_map")),
-                                          BindGroupEntry::of(1, c.device.create_sampler({"shadow nearest"})),
-                                          BindGroupEntry::of(2, c.buffer("light_view"))};
-    if (media_shadowed) {
-      shadow.push_back(BindGroupEntry::of(3, c.view("media_shadow")));
-      shadow.push_back(BindGroupEntry::of(4, c.device.create_sampler({"media shadow", Filter::linear})));
-    }
-    shadow_group_ = c.device.create_bind_group({"scene shadow", program_.layouts[2], shadow});
-  }
-
-  shading::RenderProgram program_;
+  const SceneTable& t_;
+  bool shadowed_ = false, media_shadowed_ = false;
+  plumbing::RenderProgram program_;
   rhi::BufferId frame_;
-  rhi::BindGroupId frame_group_;
-  rhi::BindGroupId shadow_group_;
-  std::unique_ptr<shading::SceneGeometry> geometry_;
+  std::unique_ptr<plumbing::SceneGeometry> geometry_;
 };
 
 }  // namespace
 
-PassDecl scene_pass() {
-  PassDecl d;
-  d.name = "scene";
-  d.kind = PassKind::graphics;
-  d.doc = "Opaque surfaces, lit and shadowed, over the background; linear radiance and depth.";
-  d.variants = {{"lambert", "Lambertian reflection of every light, shadowed by the shadow map (and the media's opacity shadow map) when wired"}};
-  d.params = {
-      param_vec3("ambient", {0, 0, 0}, 0, 1e6, "W/m²", "uniform irradiance added to every surface (unshadowed)"),
-      param_bool("shadows", true, "sample the shadow map when one is wired"),
-  };
-  SlotDecl color = slot_out("color", ResourceKind::texture2d, Usage::color_attachment, Format::rgba16_float,
-                            SizeSpec::of_output(), "linear radiance");
-  color.format_overridable = true;
-  color.size_overridable = true;
-  d.slots = {
-      slot_optional_in("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map"),
-      slot_optional_in("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view"),
-      slot_optional_in("media_shadow", ResourceKind::texture3d, Usage::sampled,
-                       "opacity_shadow_map's optical depth over the same light view: the media dim that light"),
-      color,
-      slot_out("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float, SizeSpec::of_output(),
-               "scene depth, for later passes (fog, translucency)"),
-  };
-  d.slots[0].format = Format::d32_float;
-  d.check_scene = check_models;
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new SceneExecution()); };
-  return d;
-}
+PassDecl scene_pass() { return pass_type<SceneTable, SceneExecution>(); }
 
 }  // namespace volgraph

@@ -4,7 +4,10 @@
 // whole scene so that every caster is drawn (the scene's geometry and its local media
 // volumes, which volumetric shadows light through); a spot light gets a perspective projection
 // over its outer cone, near and far around the scene's bounds — and, in global or height fog,
-// the camera's view to its far plane (passes/shading/shadow_fit.h).
+// the camera's view to its far plane (physics/shadow_fit.h).
+// The map and its view depend on the scene's camera, lights, geometry and media alone (no
+// jitter, no frame number): its cache key stays equal between frames, so a cached pass
+// that reads them (opacity_shadow_map) can be skipped.
 #include <memory>
 #include <optional>
 #include <span>
@@ -13,36 +16,15 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/passes.h"
-#include "passes/shading/camera.h"
-#include "passes/shading/programs.h"
-#include "passes/shading/scene_geometry.h"
-#include "passes/shading/shadow_fit.h"
-#include "passes/shading/shadow_view.h"
+#include "physics/camera.h"
+#include "passes/plumbing/programs.h"
+#include "passes/plumbing/scene_geometry.h"
+#include "physics/shadow_fit.h"
+#include "passes/plumbing/shadow_view.h"
+#include "shaders/include/shadow_filter_codes.h"
 
 namespace volgraph {
 namespace {
-
-// The light's view and projection. Directional: fitted to the frame's camera, whose
-// aspect is the graph's output size (what the scene pass renders unless its color size is
-// overridden); with no output size known, fitted to the whole scene.
-shading::Mat4 light_view_projection(const PassContext& c, const Light& light, const shading::Box& scene) {
-  const Extent frame = c.graph.output_size;
-  if (light.type == LightType::spot) {
-    // Global or height fog is lit wherever the camera looks: the spot's depth range reaches
-    // the camera's far plane, or fog behind a caster but beyond the scene's box would count as lit.
-    const Media& media = c.scene->media;
-    if (!media.fog && !media.height_fog) return shading::fit_spot(light, scene);
-    const double aspect = frame.width && frame.height ? double(frame.width) / frame.height : 1.0;
-    const Camera& camera = c.scene->camera;
-    const auto corners = shading::frustum_slice_corners(camera, aspect, {camera.near, camera.far});
-    return shading::fit_spot(light, shading::including(scene, corners));
-  }
-  if (frame.width == 0 || frame.height == 0) return shading::fit_directional_to_scene(light.direction, scene).view_projection();
-  const Extent map = c.desc("depth").extent;
-  const shading::ReceiverView view{c.scene->camera, double(frame.width) / frame.height,
-                                   std::get<double>(c.param("distance")), map.width, map.height};
-  return shading::fit_directional_to_camera(light.direction, scene, view).view_projection();
-}
 
 // Why light `index` cannot cast this map's shadows ("" when it can): it must exist, be
 // directional or spot, and cast shadows.
@@ -58,36 +40,91 @@ std::string shadow_light_problem(const Scene& scene, int64_t index) {
   return "";
 }
 
+std::vector<ParamProblem> check_light(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params);
+
+struct ShadowMapTable : PassTable {
+  ShadowMapTable()
+      : PassTable("shadow_map", PassKind::graphics,
+                  "Depth of the scene seen from a directional (fitted orthographic) or spot (perspective) light.") {
+    decl.needs = feature_bit(SceneFeature::shadow_casting_light);
+    decl.check_scene = check_light;
+    // The directional fit follows the camera's frustum; the depth range holds the
+    // geometry and the media volumes; a spot in fog reaches the camera's far plane.
+    decl.reads_scene = part_bit(ScenePart::camera) | part_bit(ScenePart::lights) | part_bit(ScenePart::geometry) |
+                       part_bit(ScenePart::media);
+    decl.frame_invariant = true;
+  }
+  // Variants.
+  VariantHandle pcf = variant("pcf", "percentage-closer filtering over a Poisson disc of pcf_radius texels", SHADOW_FILTER_PCF);
+  VariantHandle hard = variant("hard", "one depth comparison per lookup", SHADOW_FILTER_HARD);
+  // Parameters.
+  ParamHandle<int64_t> light = integer("light", 0, 0, 63, "", "index of the light in scene.lights (directional or spot)");
+  ParamHandle<int64_t> resolution = integer("resolution", 2048, 64, 16384, "texels", "side of the square shadow map");
+  ParamHandle<double> depth_bias = number("depth_bias", 0.002, 0, 0.1, "", "constant bias, in the light's normalised depth");
+  ParamHandle<double> slope_bias = number("slope_bias", 1.5, 0, 16, "", "bias scaled by the surface slope seen from the light");
+  ParamHandle<double> pcf_radius = number("pcf_radius", 1.5, 0, 16, "texels", "filter radius of the pcf variant");
+  ParamHandle<double> distance = number("distance", 0, 0, 1e6, "m",
+                                        "directional: view depth up to which the camera's view receives shadows (0: to the far end of "
+                                        "the scene's bounds)");
+  // Slots.
+  SlotHandle depth = output("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float,
+                            SizeSpec::square_of("resolution"), "light-space depth");
+  SlotHandle light_view = output("light_view", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(256),
+                                 "the light's view-projection matrix and bias, for passes that sample `depth`");
+};
+
+std::vector<ParamProblem> check_light(const PassDecl&, const Scene& scene, const std::vector<ParamValue>& params) {
+  static const ShadowMapTable table;
+  const std::string problem = shadow_light_problem(scene, param_in(params, table.light));
+  if (problem.empty()) return {};
+  return {{"light", problem}};
+}
+
 // Depth of the scene from the light (shaders/shadow.vert); its view goes to light_view.
 class ShadowMapExecution final : public PassExecution {
  public:
+  explicit ShadowMapExecution(const ShadowMapTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    using namespace rhi;
+    RenderPipelineDesc pd;
+    pd.label = "shadow map";
+    pd.vertex_buffers = {plumbing::SceneGeometry::position_layout()};
+    pd.depth = {Format::d32_float, true, CompareFunction::less, 0.0f, float(s.param(t_.slope_bias))};
+    pd.cull = CullMode::none;
+    program_ = plumbing::create_render_program(s.device, pd, "shadow.vert", "");
+    geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, program_);
+    // The view block is written every frame (here and to light_view): its layout is checked once.
+    plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, 0, 0, s.name() + " light_view");
+    view_ = s.device.create_buffer({"shadow view", sizeof(plumbing::ShadowViewBlock), buffer_usage::uniform});
+  }
+
   void record(PassContext& c) override {
-    if (!program_.pipeline) prepare(c);
-    const int64_t index = std::get<int64_t>(c.param("light"));
-    const std::optional<shading::Box> bounds = shadowed_bounds(c);
+    const int64_t index = c.param(t_.light);
+    const std::optional<physics::Box> bounds = shadowed_bounds(c);
     const bool casts = shadow_light_problem(*c.scene, index).empty() && bounds;
-    shading::ShadowViewBlock block{};
-    block.params[0] = float(std::get<double>(c.param("depth_bias")));
-    block.params[1] = float(std::get<double>(c.param("pcf_radius")));
+    plumbing::ShadowViewBlock block{};
+    block.params[0] = float(c.param(t_.depth_bias));
+    block.params[1] = float(c.param(t_.pcf_radius));
     block.params[3] = casts ? float(index) : -1.0f;  // −1: no light is shadowed
-    block.mode[0] = c.variant() == "pcf" ? 1 : 0;
+    block.mode[0] = c.variant().shader_code;
     if (casts) {
-      const shading::Mat4 view_projection = light_view_projection(c, c.scene->lights[size_t(index)], *bounds);
+      const physics::Mat4 view_projection = light_view_projection(c, c.scene->lights[size_t(index)], *bounds);
       to_floats(view_projection, block.light_view_projection);
-      to_floats(shading::inverse(view_projection), block.clip_to_world);
+      to_floats(physics::inverse(view_projection), block.clip_to_world);
     }
     const auto bytes = std::as_bytes(std::span(&block, 1));
-    c.device.write_buffer(view_, 0, bytes);           // for this pass's vertex shader
-    c.encoder.update_buffer(c.buffer("light_view"), 0, bytes);  // for the passes that sample the map
+    c.device.write_buffer(view_, 0, bytes);                    // for this pass's vertex shader
+    c.encoder.update_buffer(c.buffer(t_.light_view), 0, bytes);  // for the passes that sample the map
     // Without a light to cast shadows (a pass kept by --no-cull) or anything to cast or
     // receive them, the map stays clear: nothing occludes anything.
     rhi::RenderPassDesc pass;
-    pass.label = c.graph_pass().name;
-    pass.depth = {c.view("depth"), rhi::LoadOp::clear, 1.0f, false};
+    pass.label = c.name();
+    pass.depth = {c.view(t_.depth), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
     if (casts && !geometry_->objects().empty()) {
       c.encoder.set_pipeline(program_.pipeline);
-      c.encoder.set_bind_group(0, view_group_);
+      c.encoder.set_bind_group(0, c.bind_group(program_.layouts[0], {rhi::BindGroupEntry::of(0, view_)}));
       geometry_->draw(c.encoder, 1);
     }
     c.encoder.end_render_pass();
@@ -95,68 +132,42 @@ class ShadowMapExecution final : public PassExecution {
 
  private:
   // The geometry's box and the media volumes the light's view must hold.
-  std::optional<shading::Box> shadowed_bounds(const PassContext& c) const {
-    std::optional<shading::Box> geometry;
-    if (!geometry_->objects().empty()) geometry = shading::Box{geometry_->bounds_min(), geometry_->bounds_max()};
-    return shading::shadowed_bounds(geometry, c.scene->media);
+  std::optional<physics::Box> shadowed_bounds(const PassContext& c) const {
+    std::optional<physics::Box> geometry;
+    if (!geometry_->objects().empty()) geometry = physics::Box{geometry_->bounds_min(), geometry_->bounds_max()};
+    return physics::shadowed_bounds(geometry, c.scene->media);
   }
 
-  void prepare(PassContext& c) {
-    using namespace rhi;
-    RenderPipelineDesc pd;
-    pd.label = "shadow map";
-    pd.vertex_buffers = {shading::SceneGeometry::position_layout()};
-    pd.depth = {Format::d32_float, true, CompareFunction::less, 0.0f, float(std::get<double>(c.param("slope_bias")))};
-    pd.cull = CullMode::none;
-    program_ = shading::create_render_program(c.device, pd, "shadow.vert", "");
-    geometry_ = std::make_unique<shading::SceneGeometry>(c.device, *c.scene, program_.layout_descs[1], program_.layouts[1]);
-    view_ = c.device.create_buffer({"shadow view", sizeof(shading::ShadowViewBlock), buffer_usage::uniform});
-    view_group_ = c.device.create_bind_group({"shadow view", program_.layouts[0], {BindGroupEntry::of(0, view_)}});
+  // The light's view and projection. Directional: fitted to the frame's camera, whose
+  // aspect is the graph's frame size (what the scene pass renders unless its color size
+  // is overridden); with no frame size known, fitted to the whole scene.
+  physics::Mat4 light_view_projection(const PassContext& c, const Light& light, const physics::Box& scene) const {
+    const Extent frame = c.frame_size();
+    if (light.type == LightType::spot) {
+      // Global or height fog is lit wherever the camera looks: the spot's depth range reaches
+      // the camera's far plane, or fog behind a caster but beyond the scene's box would count as lit.
+      const Media& media = c.scene->media;
+      if (!media.fog && !media.height_fog) return physics::fit_spot(light, scene);
+      const double aspect = frame.width && frame.height ? double(frame.width) / frame.height : 1.0;
+      const Camera& camera = c.scene->camera;
+      const auto corners = physics::frustum_slice_corners(camera, aspect, {camera.near, camera.far});
+      return physics::fit_spot(light, physics::including(scene, corners));
+    }
+    if (frame.width == 0 || frame.height == 0) return physics::fit_directional_to_scene(light.direction, scene).view_projection();
+    const Extent map = c.extent(t_.depth);
+    const physics::ReceiverView view{c.scene->camera, double(frame.width) / frame.height, c.param(t_.distance), map.width,
+                                     map.height};
+    return physics::fit_directional_to_camera(light.direction, scene, view).view_projection();
   }
 
-  std::unique_ptr<shading::SceneGeometry> geometry_;
-  shading::RenderProgram program_;
+  const ShadowMapTable& t_;
+  std::unique_ptr<plumbing::SceneGeometry> geometry_;
+  plumbing::RenderProgram program_;
   rhi::BufferId view_;
-  rhi::BindGroupId view_group_;
 };
-
-std::vector<ParamProblem> check_light(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params) {
-  const std::string problem = shadow_light_problem(scene, std::get<int64_t>(params[size_t(decl.param_index("light"))]));
-  if (problem.empty()) return {};
-  return {{"light", problem}};
-}
 
 }  // namespace
 
-PassDecl shadow_map_pass() {
-  PassDecl d;
-  d.name = "shadow_map";
-  d.kind = PassKind::graphics;
-  d.doc = "Depth of the scene seen from a directional (fitted orthographic) or spot (perspective) light.";
-  d.variants = {
-      {"pcf", "percentage-closer filtering over a Poisson disc of pcf_radius texels"},
-      {"hard", "one depth comparison per lookup"},
-  };
-  d.params = {
-      param_int("light", 0, 0, 63, "", "index of the light in scene.lights (directional or spot)"),
-      param_int("resolution", 2048, 64, 16384, "texels", "side of the square shadow map"),
-      param_number("depth_bias", 0.002, 0, 0.1, "", "constant bias, in the light's normalised depth"),
-      param_number("slope_bias", 1.5, 0, 16, "", "bias scaled by the surface slope seen from the light"),
-      param_number("pcf_radius", 1.5, 0, 16, "texels", "filter radius of the pcf variant"),
-      param_number("distance", 0, 0, 1e6, "m",
-                   "directional: view depth up to which the camera's view receives shadows (0: to the far end of "
-                   "the scene's bounds)"),
-  };
-  d.slots = {
-      slot_out("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float,
-               SizeSpec::square_of("resolution"), "light-space depth"),
-      slot_out("light_view", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(256),
-               "the light's view-projection matrix and bias, for passes that sample `depth`"),
-  };
-  d.needs = feature_bit(SceneFeature::shadow_casting_light);
-  d.check_scene = check_light;
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new ShadowMapExecution()); };
-  return d;
-}
+PassDecl shadow_map_pass() { return pass_type<ShadowMapTable, ShadowMapExecution>(); }
 
 }  // namespace volgraph

@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <array>
 
-#include "passes/shading/camera.h"
+#include "physics/camera.h"
 
 namespace volgraph::reference {
 namespace {
 
-using shading::cross;
-using shading::dot;
-using shading::sub;
+using physics::cross;
+using physics::dot;
+using physics::sub;
 
 constexpr uint32_t kBins = 16;
 constexpr uint32_t kMaxLeafSize = 4;  // a leaf may hold more only when its centroids coincide

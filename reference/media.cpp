@@ -5,16 +5,16 @@
 #include <limits>
 #include <string>
 
-#include "passes/shading/media.h"
-#include "passes/shading/phase.h"
+#include "physics/media.h"
+#include "physics/phase.h"
 #include "reference/gauss_legendre.h"
 
 namespace volgraph::reference {
 namespace {
 
-using shading::add;
-using shading::Mat4;
-using shading::scaled;
+using physics::add;
+using physics::Mat4;
+using physics::scaled;
 
 constexpr double kInfiniteDepth = 1e300;
 // A volume's chord is integrated on at most this many panels and a camera ray cut at most
@@ -53,7 +53,7 @@ std::optional<Interval> box_interval(const Vec3& o, const Vec3& d) {
 // |o + t·d|² = 1, roots by the cancellation-free quadratic formula (Press et al.,
 // Numerical Recipes, 3rd ed., eq. 5.6.4–5.6.5).
 std::optional<Interval> ball_interval(const Vec3& o, const Vec3& d) {
-  const double a = shading::dot(d, d), b = 2 * shading::dot(o, d), c = shading::dot(o, o) - 1;
+  const double a = physics::dot(d, d), b = 2 * physics::dot(o, d), c = physics::dot(o, o) - 1;
   const double discriminant = b * b - 4 * a * c;
   if (a == 0 || discriminant < 0) return std::nullopt;
   const double q = -(b + std::copysign(std::sqrt(discriminant), b)) / 2;
@@ -104,8 +104,8 @@ std::vector<Interval> pieces(double t0, double t1, const std::optional<Interval>
 }  // namespace
 
 Vec3 transmittance_of(const Vec3& optical_depth) {
-  return {shading::transmittance(optical_depth[0], 1.0), shading::transmittance(optical_depth[1], 1.0),
-          shading::transmittance(optical_depth[2], 1.0)};
+  return {physics::transmittance(optical_depth[0], 1.0), physics::transmittance(optical_depth[1], 1.0),
+          physics::transmittance(optical_depth[2], 1.0)};
 }
 
 std::optional<Interval> unit_shape_interval(Shape shape, const Vec3& origin, const Vec3& direction) {
@@ -114,11 +114,11 @@ std::optional<Interval> unit_shape_interval(Shape shape, const Vec3& origin, con
 
 SceneMedia::SceneMedia(const Media& media, const MediaQuadrature& quadrature) : field_(media), quadrature_(quadrature) {
   for (const MediumVolume& v : media.volumes) {
-    const Mat4 model = shading::model_matrix(v.transform) * unit_shape_to_volume(v);
+    const Mat4 model = physics::model_matrix(v.transform) * unit_shape_to_volume(v);
     const bool uniform = v.noise.edge_fade == 0 && v.noise.octaves == 0;
     const Vec3 size = unit_shape_size(v);
     const bool flat = std::min({size[0], size[1], size[2]}) <= 0;  // no inside: nothing along any ray
-    volumes_.push_back({v.shape, flat ? Mat4::identity() : shading::inverse_affine(model), core_scale(v), uniform, flat});
+    volumes_.push_back({v.shape, flat ? Mat4::identity() : physics::inverse_affine(model), core_scale(v), uniform, flat});
   }
 }
 
@@ -129,7 +129,7 @@ std::string SceneMedia::under_resolved() const {
     if (v.noise.octaves == 0 || volumes_[i].flat) continue;
     // The longest chord, in local units: the box's diagonal, twice the largest radius.
     const Vec3 size = unit_shape_size(v);
-    const double longest = v.shape == Shape::box ? std::sqrt(shading::dot(size, size)) : 2 * std::max({size[0], size[1], size[2]});
+    const double longest = v.shape == Shape::box ? std::sqrt(physics::dot(size, size)) : 2 * std::max({size[0], size[1], size[2]});
     const double cells = longest / (v.noise.scale / std::ldexp(1.0, v.noise.octaves - 1));
     if (cells * quadrature_.panels_per_noise_cell > kMaxPanelsPerChord) {
       return "volume " + std::to_string(i) + ": its finest noise octave has up to " + std::to_string(int64_t(cells)) +
@@ -148,7 +148,7 @@ bool SceneMedia::empty() const {
 Vec3 SceneMedia::scattering(const Vec3& p, double cos_theta) const {
   Vec3 out{0, 0, 0};
   field_.visit(p, [&](const Medium& m, double density) {
-    const double phase = m.g == 0 ? shading::phase_isotropic<double>() : shading::phase_hg(m.g, cos_theta);
+    const double phase = m.g == 0 ? physics::phase_isotropic<double>() : physics::phase_hg(m.g, cos_theta);
     out = add(out, scaled(m.sigma_s, density * phase));
   });
   return out;
@@ -157,7 +157,7 @@ Vec3 SceneMedia::scattering(const Vec3& p, double cos_theta) const {
 std::optional<SceneMedia::VolumeChord> SceneMedia::chord(size_t i, const Vec3& origin, const Vec3& direction) const {
   const Volume& v = volumes_[i];
   if (v.flat) return std::nullopt;
-  const Vec3 o = shading::transform_point(v.inverse, origin), d = transform_vector(v.inverse, direction);
+  const Vec3 o = physics::transform_point(v.inverse, origin), d = transform_vector(v.inverse, direction);
   const std::optional<Interval> shape = unit_shape_interval(v.shape, o, d);
   if (!shape) return std::nullopt;
   VolumeChord c{*shape, std::nullopt, 0, 0};
@@ -167,7 +167,7 @@ std::optional<SceneMedia::VolumeChord> SceneMedia::chord(size_t i, const Vec3& o
   // 1 / |d_local| m, d_local the direction in local units.
   const MediumVolume& volume = field_.media().volumes[i];
   const Vec3 d_local = times(d, unit_shape_size(volume));
-  const double metres_per_local = 1 / std::sqrt(shading::dot(d_local, d_local));
+  const double metres_per_local = 1 / std::sqrt(physics::dot(d_local, d_local));
   c.panel = std::numeric_limits<double>::infinity();
   if (volume.noise.edge_fade > 0) c.panel = volume.noise.edge_fade * metres_per_local / quadrature_.panels_per_edge_fade;
   if (volume.noise.octaves > 0) {
@@ -252,7 +252,7 @@ Vec3 SceneMedia::height_fog_optical_depth(double origin_y, double direction_y, d
   const Vec3 base = sigma_t(fog->medium);
   Vec3 depth;
   for (size_t c = 0; c < 3; ++c) {
-    depth[c] = shading::height_fog_optical_depth(base[c], fog->falloff, fog->base_height, origin_y, direction_y, length);
+    depth[c] = physics::height_fog_optical_depth(base[c], fog->falloff, fog->base_height, origin_y, direction_y, length);
   }
   return depth;
 }

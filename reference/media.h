@@ -1,9 +1,9 @@
 // The scene's participating media as the reference renderer sees them (DESIGN.md units,
 // σ in 1/m). What the media are at a point comes from the shaders' CPU twin,
-// shading::MediaField (double): the global homogeneous fog, the exponential height fog
+// physics::MediaField (double): the global homogeneous fog, the exponential height fog
 // and the local volumes — a box of edges `size`, a sphere of radius size[0], an
 // ellipsoid of radii `size`, centred at the origin and carried into the world by the
-// transform — each volume's density its edge fade times its noise (shading/noise.h).
+// transform — each volume's density its edge fade times its noise (physics/noise.h).
 // Media that overlap add their coefficients; emission is a source term, radiance added
 // per metre of path (W/(m²·sr·m)), attenuated like in-scattering. What this file adds
 // is along rays: where the volumes begin and end, and optical depth — closed form for
@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "graph/scene/scene.h"
-#include "passes/shading/camera.h"
-#include "passes/shading/media_field.h"
+#include "physics/camera.h"
+#include "physics/media_field.h"
 
 namespace volgraph::reference {
 
@@ -55,7 +55,7 @@ class SceneMedia {
   std::string under_resolved() const;
 
   // σs, σa, emission and the σs-weighted g of every medium at p (the twin's sample).
-  shading::MediaSample at(const Vec3& p) const { return field_.sample(p); }
+  physics::MediaSample at(const Vec3& p) const { return field_.sample(p); }
   // Σ over media of density·σs·p(cos θ) (Henyey–Greenstein with the medium's g;
   // isotropic when g = 0) per channel; cos θ between the light's direction of travel and
   // the direction scattered toward the viewer.
@@ -90,7 +90,7 @@ class SceneMedia {
   };
   struct Volume {
     Shape shape;
-    shading::Mat4 inverse;  // world to the unit shape (affine)
+    physics::Mat4 inverse;  // world to the unit shape (affine)
     Vec3 core_scale;        // the core as a scale of the unit shape (0: no core)
     bool uniform;           // no edge fade, no noise
     bool flat;              // a size of 0: no inside
@@ -102,7 +102,7 @@ class SceneMedia {
   Vec3 volumes_optical_depth(const Vec3& origin, const Vec3& direction, double t0, double t1) const;
   Vec3 height_fog_optical_depth(double origin_y, double direction_y, double length) const;
 
-  shading::MediaField field_;
+  physics::MediaField field_;
   MediaQuadrature quadrature_;
   std::vector<Volume> volumes_;
 };

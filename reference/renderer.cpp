@@ -3,17 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
-#include "passes/shading/camera.h"
-#include "passes/shading/lighting.h"
+#include "physics/camera.h"
+#include "physics/lighting.h"
 
 namespace volgraph::reference {
 namespace {
 
-using shading::add;
-using shading::dot;
-using shading::normalize;
-using shading::scaled;
-using shading::sub;
+using physics::add;
+using physics::dot;
+using physics::normalize;
+using physics::scaled;
+using physics::sub;
 
 constexpr double kShadowRayOffset = 1e-9;  // metres per metre of |point|∞, plus 1e-9 m
 
@@ -34,7 +34,7 @@ Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2
 
 // Optical depth of the media from `point` to the light.
 Vec3 optical_depth_toward(const SceneMedia& media, const Light& light, const Vec3& point) {
-  const Vec3 to_light = scaled(shading::light_arriving(light, point).travel, -1);
+  const Vec3 to_light = scaled(physics::light_arriving(light, point).travel, -1);
   if (light.type == LightType::directional) return media.optical_depth_to_infinity(point, to_light);
   return media.optical_depth(point, to_light, 0, std::sqrt(dot(sub(light.position, point), sub(light.position, point))));
 }
@@ -59,7 +59,7 @@ Vec3 Renderer::pixel_radiance(uint32_t i, uint32_t j, uint32_t width, uint32_t h
     for (uint32_t sx = 0; sx < n; ++sx) {
       // pixel_ray adds the half pixel of the centre: offsets are relative to it.
       const double x = i + (sx + 0.5) / n - 0.5, y = j + (sy + 0.5) / n - 0.5;
-      sum = add(sum, camera_ray_radiance(shading::pixel_ray(scene_.camera, width, height, x, y)));
+      sum = add(sum, camera_ray_radiance(physics::pixel_ray(scene_.camera, width, height, x, y)));
     }
   }
   return scaled(sum, 1.0 / (n * n));
@@ -96,7 +96,7 @@ std::optional<SurfaceHit> Renderer::surface_hit(const Vec3& direction) const {
   s.t = h->t;
   s.triangle = h->triangle;
   s.position = interpolate({tri.a, tri.b, tri.c}, h->u, h->v);
-  const Vec3 geometric = shading::cross(sub(tri.b, tri.a), sub(tri.c, tri.a));
+  const Vec3 geometric = physics::cross(sub(tri.b, tri.a), sub(tri.c, tri.a));
   const Vec3 interpolated = interpolate(a.normals, h->u, h->v);
   s.normal = normalize(dot(interpolated, interpolated) > 0 ? interpolated : geometric);
   // Two-sided like the GPU: seen from the back (clockwise on screen), the normal turns.
@@ -110,11 +110,11 @@ Vec3 Renderer::surface_radiance(const SurfaceHit& hit) const {
   Vec3 e{0, 0, 0};
   for (const Light& light : scene_.lights) e = add(e, light_arrival(light, hit.position, hit.normal));
   const SurfaceMaterial& m = triangles_.materials[triangles_.attributes[hit.triangle].material];
-  return add(shading::lambert(albedo_at(triangles_, m, hit.u, hit.v), e), emission_at(triangles_, m, hit.u, hit.v));
+  return add(physics::lambert(albedo_at(triangles_, m, hit.u, hit.v), e), emission_at(triangles_, m, hit.u, hit.v));
 }
 
 Vec3 Renderer::light_arrival(const Light& light, const Vec3& point, const Vec3& normal) const {
-  const Vec3 unshadowed = shading::irradiance(light, point, normal);
+  const Vec3 unshadowed = physics::irradiance(light, point, normal);
   if (is_zero(unshadowed) || !light_visible(light, point)) return {0, 0, 0};
   if (media_.empty()) return unshadowed;
   return times(unshadowed, transmittance_of(optical_depth_toward(media_, light, point)));
@@ -124,7 +124,7 @@ Vec3 Renderer::in_scattering(const Vec3& point, const Vec3& direction) const {
   Vec3 j = media_.at(point).emission;
   for (const Light& light : scene_.lights) {
     if (light.type != LightType::directional && point == light.position) continue;  // no direction: a singular point
-    const shading::LightArriving arriving = shading::light_arriving(light, point);
+    const physics::LightArriving arriving = physics::light_arriving(light, point);
     const Vec3 sigma_s_phase = media_.scattering(point, -dot(arriving.travel, direction));
     if (is_zero(sigma_s_phase) || is_zero(arriving.irradiance) || !light_visible(light, point)) continue;
     const Vec3 through = media_.empty() ? Vec3{1, 1, 1} : transmittance_of(optical_depth_toward(media_, light, point));

@@ -3,7 +3,7 @@
 // (an any-hit shadow ray, no bias) and the media's transmittance toward the light, its
 // emission, or the background; through the media, single scattering of every light
 // integrated along the ray (single_scattering.h). Double precision throughout. Lighting
-// comes from the CPU twins of the shaders (shading/lighting.h, phase.h, media.h). Pass
+// comes from the CPU twins of the shaders (physics/lighting.h, phase.h, media.h). Pass
 // parameters of the config (ambient terms, shadow-map settings, tone maps) are not part
 // of the scene and are ignored.
 #pragma once

@@ -3,21 +3,21 @@
 #include <map>
 #include <string>
 
-#include "passes/shading/camera.h"
-#include "passes/shading/gltf.h"
-#include "passes/shading/meshes.h"
+#include "physics/camera.h"
+#include "passes/plumbing/gltf.h"
+#include "passes/plumbing/meshes.h"
 
 namespace volgraph::reference {
 namespace {
 
-using shading::kMeshVertexFloats;
-using shading::Mat4;
+using plumbing::kMeshVertexFloats;
+using physics::Mat4;
 
 // Decodes each image once, however many objects use it.
 class ImageTable {
  public:
   explicit ImageTable(std::vector<LinearImage>& images) : images_(images) {}
-  int index(const std::string& key, const std::function<shading::Rgba8Image()>& load) {
+  int index(const std::string& key, const std::function<plumbing::Rgba8Image()>& load) {
     const auto found = indices_.find(key);
     if (found != indices_.end()) return found->second;
     images_.push_back(linear_image(load()));
@@ -38,7 +38,7 @@ struct WorldVertex {
 WorldVertex world_vertex(const std::vector<float>& vertices, uint32_t index, const Mat4& model, const Mat4& normals) {
   const float* v = vertices.data() + size_t(index) * kMeshVertexFloats;
   WorldVertex w;
-  w.position = shading::transform_point(model, {v[0], v[1], v[2]});
+  w.position = physics::transform_point(model, {v[0], v[1], v[2]});
   for (int row = 0; row < 3; ++row) {
     w.normal[size_t(row)] = normals(row, 0) * v[3] + normals(row, 1) * v[4] + normals(row, 2) * v[5];
   }
@@ -48,7 +48,7 @@ WorldVertex world_vertex(const std::vector<float>& vertices, uint32_t index, con
 
 void add_mesh(SceneTriangles& out, const std::vector<float>& vertices, const std::vector<uint32_t>& indices,
               const Object& object, uint32_t object_index, uint32_t material) {
-  const Mat4 model = shading::model_matrix(object.transform), normals = shading::normal_matrix(model);
+  const Mat4 model = physics::model_matrix(object.transform), normals = physics::normal_matrix(model);
   for (size_t i = 0; i + 2 < indices.size(); i += 3) {
     const WorldVertex a = world_vertex(vertices, indices[i], model, normals);
     const WorldVertex b = world_vertex(vertices, indices[i + 1], model, normals);
@@ -59,14 +59,14 @@ void add_mesh(SceneTriangles& out, const std::vector<float>& vertices, const std
   }
 }
 
-uint32_t add_gltf_material(SceneTriangles& out, ImageTable& table, const shading::GltfModel& model,
-                           const shading::GltfPrimitive& p) {
+uint32_t add_gltf_material(SceneTriangles& out, ImageTable& table, const plumbing::GltfModel& model,
+                           const plumbing::GltfPrimitive& p) {
   SurfaceMaterial m;
   m.albedo = p.base_color;
   m.emissive = p.emissive;
-  auto image = [&](const shading::GltfTexture& texture) {
+  auto image = [&](const plumbing::GltfTexture& texture) {
     if (!texture) return -1;
-    const shading::GltfImage& source = model.images[size_t(texture.image)];
+    const plumbing::GltfImage& source = model.images[size_t(texture.image)];
     return table.index(source.name + "#" + std::to_string(texture.image), [&source] { return source.decode(); });
   };
   m.base_color_image = image(p.base_color_texture);
@@ -82,13 +82,13 @@ uint32_t add_config_material(SceneTriangles& out, ImageTable& table, const Mater
     m.albedo = material->albedo;
     m.emissive = material->emissive;
     const std::string path = material->albedo_texture;
-    if (!path.empty()) m.base_color_image = table.index(path, [&path] { return shading::read_image_file(path); });
+    if (!path.empty()) m.base_color_image = table.index(path, [&path] { return plumbing::read_image_file(path); });
   }
   out.materials.push_back(m);
   return uint32_t(out.materials.size() - 1);
 }
 
-Vec3 textured(const SceneTriangles& scene, const Vec3& factor, int image, shading::SamplerWrap wrap, double u, double v) {
+Vec3 textured(const SceneTriangles& scene, const Vec3& factor, int image, plumbing::SamplerWrap wrap, double u, double v) {
   if (image < 0) return factor;
   const Vec3 t = sample_bilinear(scene.images[size_t(image)], wrap, u, v);
   return {factor[0] * t[0], factor[1] * t[1], factor[2] * t[2]};
@@ -102,13 +102,13 @@ SceneTriangles scene_triangles(const Scene& scene) {
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
     const Object& object = scene.objects[o];
     if (object.shape == Shape::gltf) {
-      const shading::GltfModel model = shading::load_gltf(object.file);
-      for (const shading::GltfPrimitive& p : model.primitives) {
+      const plumbing::GltfModel model = plumbing::load_gltf(object.file);
+      for (const plumbing::GltfPrimitive& p : model.primitives) {
         add_mesh(out, p.vertices, p.indices, object, o, add_gltf_material(out, table, model, p));
       }
       continue;
     }
-    const shading::Mesh mesh = shading::primitive_mesh(object.shape, object.size);
+    const plumbing::Mesh mesh = plumbing::primitive_mesh(object.shape, object.size);
     add_mesh(out, mesh.vertices, mesh.indices, object, o, add_config_material(out, table, scene.find_material(object.material)));
   }
   return out;

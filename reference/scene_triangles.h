@@ -1,5 +1,5 @@
 // The scene's objects as world-space triangles with a material per triangle: the same
-// meshes the GPU passes rasterise (shading/meshes.h primitives, shading/gltf.h models),
+// meshes the GPU passes rasterise (passes/plumbing/meshes.h primitives, passes/plumbing/gltf.h models),
 // placed by the same model matrices, with vertex normals carried by the normal matrix and
 // texture coordinates kept for the material's textures.
 #pragma once
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "graph/scene/scene.h"
-#include "passes/shading/textures.h"
+#include "passes/plumbing/textures.h"
 #include "reference/bvh.h"
 #include "reference/texture_sampling.h"
 
@@ -21,7 +21,7 @@ struct SurfaceMaterial {
   Vec3 emissive{0, 0, 0};
   int base_color_image = -1;  // index into SceneTriangles::images, −1 for none
   int emissive_image = -1;
-  shading::SamplerWrap wrap;
+  plumbing::SamplerWrap wrap;
 };
 
 // What a triangle carries beyond its corners: per-corner world normals (not unit, as the

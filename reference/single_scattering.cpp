@@ -8,8 +8,8 @@
 namespace volgraph::reference {
 namespace {
 
-using shading::add;
-using shading::scaled;
+using physics::add;
+using physics::scaled;
 
 constexpr uint32_t kBisectionSteps = 60;  // for where the transmittance reaches its floor
 constexpr double kRoundOff = 1e-13;       // refinement below this relative change only chases rounding

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "passes/shading/srgb.h"
+#include "physics/srgb.h"
 
 namespace volgraph::reference {
 namespace {
@@ -23,16 +23,16 @@ int64_t wrapped(int64_t i, int64_t size, rhi::AddressMode mode) {
 
 }  // namespace
 
-LinearImage linear_image(const shading::Rgba8Image& encoded) {
+LinearImage linear_image(const plumbing::Rgba8Image& encoded) {
   LinearImage image{encoded.width, encoded.height, {}};
   image.rgb.resize(size_t(encoded.width) * encoded.height * 3);
   for (size_t texel = 0; texel < size_t(encoded.width) * encoded.height; ++texel) {
-    for (size_t c = 0; c < 3; ++c) image.rgb[texel * 3 + c] = shading::srgb_decode(encoded.texels[texel * 4 + c] / 255.0f);
+    for (size_t c = 0; c < 3; ++c) image.rgb[texel * 3 + c] = physics::srgb_decode(encoded.texels[texel * 4 + c] / 255.0f);
   }
   return image;
 }
 
-Vec3 sample_bilinear(const LinearImage& image, shading::SamplerWrap wrap, double u, double v) {
+Vec3 sample_bilinear(const LinearImage& image, plumbing::SamplerWrap wrap, double u, double v) {
   if (image.width == 0 || image.height == 0 || !std::isfinite(u) || !std::isfinite(v)) return {1, 1, 1};
   const double x = u * image.width - 0.5, y = v * image.height - 0.5;
   const double x0 = std::floor(x), y0 = std::floor(y);

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "graph/scene/scene.h"
-#include "passes/shading/textures.h"
+#include "passes/plumbing/textures.h"
 
 namespace volgraph::reference {
 
@@ -17,10 +17,10 @@ struct LinearImage {
   std::vector<float> rgb;  // linear, 3 floats a texel, row 0 at the top
 };
 
-LinearImage linear_image(const shading::Rgba8Image& encoded);
+LinearImage linear_image(const plumbing::Rgba8Image& encoded);
 
 // The image at texture coordinate (u, v) (0, 0 the top-left corner, texel centres at
 // half-integers of the texel grid), bilinear between the four nearest texels.
-Vec3 sample_bilinear(const LinearImage& image, shading::SamplerWrap wrap, double u, double v);
+Vec3 sample_bilinear(const LinearImage& image, plumbing::SamplerWrap wrap, double u, double v);
 
 }  // namespace volgraph::reference

@@ -2,19 +2,20 @@
 #extension GL_GOOGLE_include_directive : require
 // depth_fog (eq. 14.12–14.14): transmittance f(z), in-scattering (1 − f)·colour, z the
 // distance along the pixel's ray (passes/fog/depth_fog.cpp).
+#include "include/depth_fog_codes.h"
 #include "include/media.glsl"
 #include "include/pixel_fog.glsl"
 
 layout(set = 0, binding = 5) uniform Params {
-  vec4 fog;    // x start (m), y end (m), z density (1/m), w variant: 0 linear, 1 exponential, 2 exponential squared
+  vec4 fog;    // x start (m), y end (m), z density (1/m), w variant: DEPTH_FOG_* (include/depth_fog_codes.h)
   vec4 color;  // rgb fog radiance
 } params;
 
 float fog_factor(float z) {
   const int variant = int(params.fog.w);
-  if (variant == 0) return depth_fog_linear(z, params.fog.x, params.fog.y);
-  if (variant == 2) return depth_fog_exponential_squared(z, params.fog.z);
-  return depth_fog_exponential(z, params.fog.z);
+  if (variant == DEPTH_FOG_LINEAR) return depth_fog_linear(z, params.fog.x, params.fog.y);
+  if (variant == DEPTH_FOG_EXPONENTIAL_SQUARED) return depth_fog_exponential_squared(z, params.fog.z);
+  return depth_fog_exponential(z, params.fog.z);  // DEPTH_FOG_EXPONENTIAL
 }
 
 void main() {

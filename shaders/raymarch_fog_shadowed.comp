@@ -13,4 +13,6 @@ float light_visibility(int light, vec3 p) {
   return shadow_visibility(shadow_depth, shadow_sampler, shadow.view, p);
 }
 
+bool media_shadow_mapped(int light) { return false; }  // the march dims every light
+
 #include "include/raymarch_fog_body.glsl"

@@ -5,6 +5,7 @@
 // step (eq. 14.15) or Hillaire's energy-conserving one (eq. 14.16). Slice k covers view
 // depths [depth(k/N), depth((k+1)/N)]; distances are along the column's ray.
 #include "include/fog_frame.glsl"
+#include "include/integration_codes.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
@@ -15,7 +16,7 @@ layout(set = 0, binding = 3) uniform texture3D media_absorption;
 layout(set = 0, binding = 4) uniform sampler nearest;
 layout(set = 0, binding = 5, rgba16f) uniform writeonly image3D integrated_scattering;
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image3D integrated_transmittance;
-layout(set = 0, binding = 7) uniform Params { ivec4 method; } params;  // x: 0 Wronski, 1 Hillaire
+layout(set = 0, binding = 7) uniform Params { ivec4 method; } params;  // x: INTEGRATE_WRONSKI or INTEGRATE_HILLAIRE
 
 void main() {
   const uvec3 size = frame.f.grid.size.xyz;
@@ -31,7 +32,7 @@ void main() {
     const vec3 s = texelFetch(sampler3D(in_scatter, nearest), texel, 0).rgb;
     const vec3 sigma_t = texelFetch(sampler3D(media_scattering, nearest), texel, 0).rgb +
                          texelFetch(sampler3D(media_absorption, nearest), texel, 0).rgb;
-    if (params.method.x == 0) integrate_wronski(radiance, transmittance_so_far, s, sigma_t, dz);
+    if (params.method.x == INTEGRATE_WRONSKI) integrate_wronski(radiance, transmittance_so_far, s, sigma_t, dz);
     else integrate_hillaire(radiance, transmittance_so_far, s, sigma_t, dz);
     imageStore(integrated_scattering, texel, vec4(min(radiance, vec3(65000.0)), 0.0));
     imageStore(integrated_transmittance, texel, vec4(transmittance_so_far, 0.0));

@@ -9,6 +9,7 @@ packages=(
   graphviz
   libvulkan-dev vulkan-validationlayers glslang-tools spirv-tools
   libstb-dev libopenexr-dev libtinygltf-dev
+  libglm-dev libcli11-dev libspirv-cross-c-shared-dev
 )
 # Dawn refuses bookworm's lavapipe (Mesa 22); Mesa 25 comes from bookworm-backports.
 backports=(mesa-vulkan-drivers)

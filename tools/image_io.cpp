@@ -17,7 +17,7 @@
 #include <stb/stb_image_write.h>
 
 #include "graph/config/diagnostics.h"
-#include "passes/shading/srgb.h"
+#include "physics/srgb.h"
 
 namespace volgraph {
 namespace {
@@ -29,7 +29,7 @@ namespace {
 bool write_png(const std::string& file, const Image& image) {
   std::vector<uint8_t> bytes(size_t(image.width) * image.height * 4);
   for (size_t i = 0; i < bytes.size(); ++i) {
-    const float v = (i % 4 == 3) ? std::clamp(image.rgba[i], 0.0f, 1.0f) : shading::srgb_encode(image.rgba[i]);
+    const float v = (i % 4 == 3) ? std::clamp(image.rgba[i], 0.0f, 1.0f) : physics::srgb_encode(image.rgba[i]);
     bytes[i] = uint8_t(std::lround(v * 255.0f));
   }
   return stbi_write_png(file.c_str(), int(image.width), int(image.height), 4, bytes.data(), int(image.width * 4)) != 0;

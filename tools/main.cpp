@@ -1,5 +1,6 @@
-// The volgraph command line (DESIGN.md "Command line"). Exit codes: 0 success,
-// 1 failure that is not the input's fault, 2 bad input (one clear message each).
+// The volgraph command line (DESIGN.md "Command line"): the commands, parsed by
+// tools/command_line.h (CLI11). Exit codes: 0 success, 1 failure that is not the input's
+// fault, 2 bad input (one clear message each).
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -19,6 +20,7 @@
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
 #include "graph/rhi/vulkan/vulkan_device.h"
+#include "tools/command_line.h"
 #include "tools/image_io.h"
 #include "tools/webgpu_backend.h"
 #include "graph/plan_report.h"
@@ -32,162 +34,6 @@
 
 namespace volgraph {
 namespace {
-
-constexpr int kOk = 0, kFailure = 1, kBadInput = 2;
-
-const char* kUsage = R"(usage: volgraph COMMAND [options]
-
-commands:
-  validate CONFIG              check a config without a GPU (exit 0 valid, 2 invalid)
-  plan CONFIG [--json|--dot]   the compiled plan: order, culling, lifetimes, memory, barriers
-  render CONFIG -o OUT         render to .png (sRGB 8-bit), .exr or .pfm (linear float)
-  reference CONFIG -o OUT      the CPU ground truth of the config's scene (double precision, exact
-                               visibility; pass parameters such as ambient or tone maps are not part
-                               of the scene and are ignored): .exr or .pfm linear float, or .png
-                               with linear values clamped to [0, 1] and sRGB-encoded (no tone map)
-  passes                       the pass types with their variants, parameters and slots
-  devices                      the Vulkan devices (index for --device N; lavapipe is the default)
-  test                         run the whole test suite (handled by tools/volgraph)
-
-options (plan, validate, render):
-  --size WxH                   frame size (overrides output.size)
-  --set PASS.PARAM=VALUE       set a pass parameter (VALUE in JSON: 2, 0.5, true, [1,2,3], word)
-  --variant PASS=VARIANT       swap a pass's variant
-  --no-cull                    keep every pass (debug)
-  --no-alias                   give every transient resource its own memory (debug)
-  --serialize                  a full barrier between every two passes (debug)
-
-options (reference):
-  --size WxH                   frame size (overrides output.size)
-  --threads N                  worker threads (default: the hardware's); the image does not depend on it
-  --spp N                      samples per pixel on a regular sub-pixel grid, N a square (1, 4, 9, …);
-                               default 1: pixel centres, as the GPU samples
-  --tolerance X                relative error allowed in each stretch of the media integral (default 1e-5)
-
-options (render):
-  --backend vulkan|webgpu      default vulkan; webgpu: Dawn (its Vulkan backend on lavapipe here)
-  --device N                   a Vulkan device by index (volgraph devices); default lavapipe (vulkan only)
-  --frames N                   render N frames, write the last
-  --timings                    per-pass GPU and CPU times of the last frame, JSON on stdout
-                               (CPU only, said so, where the device has no time stamps)
-  --timings-out FILE           the same JSON to FILE
-  --validation                 run under the Khronos validation layer (synchronization too);
-                               WebGPU validates always: any Dawn error fails the render (exit 1)
-  --dump PASS.SLOT=FILE        also write that resource: textures as images (3D: slices stacked, slice 0 on top), buffers raw (.bin)
-)";
-
-struct Args {
-  std::string command;
-  std::string config;
-  std::string output;
-  bool json = false, dot = false;
-  std::string backend = "vulkan";
-  int device = -1;
-  int frames = 1;
-  int threads = 0;             // reference: 0 for the hardware's
-  int samples_per_axis = 1;    // reference: √spp
-  double tolerance = 1e-5;     // reference: the media integral's relative tolerance
-  bool timings = false, validation = false;
-  std::string timings_out;
-  std::vector<std::string> dumps;
-  CompileOptions compile;
-  Overrides overrides;
-};
-
-int bad_usage(const std::string& message) {
-  std::cerr << "volgraph: " << message << "\n(run 'volgraph --help' for usage)\n";
-  return kBadInput;
-}
-
-std::optional<Extent> parse_size(const std::string& text) {
-  unsigned w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) return std::nullopt;
-  if (w < 1 || h < 1 || w > 16384 || h > 16384) return std::nullopt;
-  return Extent{w, h, 1};
-}
-
-// Fills `args`; returns an exit code when parsing must stop there.
-std::optional<int> parse(int argc, char** argv, Args& args) {
-  std::vector<std::string> words(argv + 1, argv + argc);
-  if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
-    std::cout << kUsage;
-    return words.empty() ? kBadInput : kOk;
-  }
-  args.command = words[0];
-  for (size_t i = 1; i < words.size(); ++i) {
-    const std::string& w = words[i];
-    auto value = [&](const char* flag) -> std::optional<std::string> {
-      if (i + 1 < words.size()) return words[++i];
-      bad_usage(std::string(flag) + " needs a value");
-      return std::nullopt;
-    };
-    if (w == "--json") args.json = true;
-    else if (w == "--dot") args.dot = true;
-    else if (w == "--no-cull") args.compile.cull = false;
-    else if (w == "--no-alias") args.compile.alias = false;
-    else if (w == "--serialize") args.compile.serialize = true;
-    else if (w == "--size") {
-      const auto v = value("--size");
-      if (!v) return kBadInput;
-      args.overrides.size = parse_size(*v);
-      if (!args.overrides.size) return bad_usage("--size expects WxH with each side in [1, 16384], got \"" + *v + "\"");
-    } else if (w == "--set" || w == "--variant") {
-      const auto v = value(w.c_str());
-      if (!v) return kBadInput;
-      (w == "--set" ? args.overrides.sets : args.overrides.variants).push_back(*v);
-    } else if (w == "--backend" || w == "--timings-out") {
-      const auto v = value(w.c_str());
-      if (!v) return kBadInput;
-      (w == "--backend" ? args.backend : args.timings_out) = *v;
-      if (w == "--backend" && *v != "vulkan" && *v != "webgpu") return bad_usage("--backend expects vulkan or webgpu, got \"" + *v + "\"");
-    } else if (w == "--device" || w == "--frames") {
-      const auto v = value(w.c_str());
-      if (!v) return kBadInput;
-      char* end = nullptr;
-      const long n = std::strtol(v->c_str(), &end, 10);
-      const long low = w == "--device" ? 0 : 1;
-      if (*end || n < low || n > 100000) return bad_usage(w + " expects a whole number ≥ " + std::to_string(low) + ", got \"" + *v + "\"");
-      (w == "--device" ? args.device : args.frames) = int(n);
-    } else if (w == "--threads" || w == "--spp") {
-      const auto v = value(w.c_str());
-      if (!v) return kBadInput;
-      char* end = nullptr;
-      const long n = std::strtol(v->c_str(), &end, 10);
-      const long root = std::lround(std::sqrt(double(std::max(n, 0L))));
-      if (*end || v->empty() || n < 1 || n > 4096) return bad_usage(w + " expects a whole number in [1, 4096], got \"" + *v + "\"");
-      if (w == "--spp" && root * root != n) return bad_usage("--spp expects a square number (1, 4, 9, 16, …), got \"" + *v + "\"");
-      (w == "--threads" ? args.threads : args.samples_per_axis) = int(w == "--threads" ? n : root);
-    } else if (w == "--tolerance") {
-      const auto v = value("--tolerance");
-      if (!v) return kBadInput;
-      char* end = nullptr;
-      args.tolerance = std::strtod(v->c_str(), &end);
-      if (*end || v->empty() || !(args.tolerance >= 1e-12 && args.tolerance <= 0.1)) {
-        return bad_usage("--tolerance expects a number in [1e-12, 0.1], got \"" + *v + "\"");
-      }
-    } else if (w == "--dump") {
-      const auto v = value("--dump");
-      if (!v) return kBadInput;
-      args.dumps.push_back(*v);
-    } else if (w == "--timings") {
-      args.timings = true;
-    } else if (w == "--validation") {
-      args.validation = true;
-    } else if (w == "-o" || w == "--output") {
-      const auto v = value("-o");
-      if (!v) return kBadInput;
-      args.output = *v;
-    } else if (w.rfind("--", 0) == 0) {
-      return bad_usage("unknown option " + w);
-    } else if (args.config.empty()) {
-      args.config = w;
-    } else {
-      return bad_usage("unexpected argument \"" + w + "\"");
-    }
-  }
-  return std::nullopt;
-}
 
 std::string range_text(const ParamDecl& p) {
   if (p.type == ParamType::choice) {
@@ -295,7 +141,8 @@ std::string timings_json(const std::vector<PassTiming>& timings, const rhi::Devi
     gpu += t.gpu_ms;
     cpu += t.cpu_ms;
     o << "    {\"pass\": \"" << t.pass << "\", \"type\": \"" << t.type << "\", \"gpu_ms\": " << t.gpu_ms
-      << ", \"cpu_ms\": " << t.cpu_ms << "}" << (i + 1 < timings.size() ? "," : "") << "\n";
+      << ", \"cpu_ms\": " << t.cpu_ms << ", \"cached\": " << (t.cached ? "true" : "false") << "}"
+      << (i + 1 < timings.size() ? "," : "") << "\n";
   }
   o << "  ],\n  \"total_gpu_ms\": " << gpu << ",\n  \"total_cpu_ms\": " << cpu << ",\n  \"frame_wall_ms\": "
     << frame_wall_ms << "\n}\n";
@@ -309,6 +156,24 @@ struct Dump {
 
 // --dump PASS.SLOT=FILE: the resource that slot holds at the end of the pass, kept alive
 // to the end of the frame (a graph output) so that no aliasing overwrites it first.
+// The last use of slot `slot` by pass `pass`, or by any of its steps when its type has
+// steps (graph passes "pass/step", in step order): what the pass leaves in it.
+// Throws ConfigError (at `where`) when no pass has that name.
+const ResourceUse* last_use_of(const Graph& graph, const std::string& pass, const std::string& slot, const Where& where) {
+  const ResourceUse* last = nullptr;
+  bool named = false;
+  for (const GraphPass& g : graph.passes) {
+    if (g.name != pass && g.name.rfind(pass + "/", 0) != 0) continue;
+    named = true;
+    const int s = g.decl->slot_index(slot);
+    for (const ResourceUse& u : g.uses) {
+      if (int(u.slot) == s) last = &u;
+    }
+  }
+  if (!named) throw ConfigError({{where, "no pass named \"" + pass + "\""}});
+  return last;
+}
+
 std::vector<Dump> add_dumps(const std::vector<std::string>& requests, Graph& graph) {
   std::vector<Dump> dumps;
   for (const std::string& request : requests) {
@@ -317,11 +182,8 @@ std::vector<Dump> add_dumps(const std::vector<std::string>& requests, Graph& gra
     const size_t dot = request.find('.'), eq = request.find('=');
     if (dot == std::string::npos || eq == std::string::npos || eq < dot) fail("expected --dump PASS.SLOT=FILE");
     const std::string pass = request.substr(0, dot), slot = request.substr(dot + 1, eq - dot - 1), file = request.substr(eq + 1);
-    const auto p = std::find_if(graph.passes.begin(), graph.passes.end(), [&](const GraphPass& g) { return g.name == pass; });
-    if (p == graph.passes.end()) fail("no pass named \"" + pass + "\"");
-    const int s = p->decl->slot_index(slot);
-    const auto use = std::find_if(p->uses.begin(), p->uses.end(), [&](const ResourceUse& u) { return int(u.slot) == s; });
-    if (s < 0 || use == p->uses.end()) fail("pass \"" + pass + "\" has no bound slot \"" + slot + "\"");
+    const ResourceUse* use = last_use_of(graph, pass, slot, where);
+    if (!use) fail("pass \"" + pass + "\" has no bound slot \"" + slot + "\"");
     const uint32_t version = use->direction == SlotDirection::inout ? use->version + 1 : use->version;
     const GraphResource& r = graph.resources[use->resource];
     if (version + 1 != r.version_writers.size()) {
@@ -446,35 +308,76 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
   return kOk;
 }
 
-int run(const Args& args, const PassRegistry& registry) {
-  if (args.command == "passes") return print_passes(registry);
-  if (args.command == "devices") return print_devices();
-  const bool known = args.command == "validate" || args.command == "plan" || args.command == "render" || args.command == "reference";
-  if (!known) {
-    if (args.command == "ab" || args.command == "sweep") {
-      std::cerr << "volgraph " << args.command << ": not implemented yet (arrives with the volumetric fog issue)\n";
-      return kFailure;
-    }
-    return bad_usage("unknown command \"" + args.command + "\"");
+// The commands: each runs on the parsed arguments (the command line is checked already).
+
+// The config loaded once at its own size; --size then resizes the graph (extents are
+// resolved for a frame size when it is compiled, graph.h resize()), as a viewer does.
+LoadedConfig load(const Args& args, const PassRegistry& registry) {
+  if (args.config.empty()) throw UsageError(args.command + " needs a CONFIG file");
+  Overrides at_own_size = args.overrides;
+  at_own_size.size.reset();
+  LoadedConfig loaded = load_config(args.config, registry, at_own_size);
+  if (args.overrides.size) {
+    loaded.config.output_size = *args.overrides.size;
+    resize(loaded.graph, *args.overrides.size);
   }
-  if (args.config.empty()) return bad_usage(args.command + " needs a CONFIG file");
-  LoadedConfig loaded = load_config(args.config, registry, args.overrides);
-  if (args.command == "reference") return reference_render(args, loaded);
+  return loaded;
+}
+
+int run_validate(const Args& args, const PassRegistry& registry) {
+  LoadedConfig loaded = load(args, registry);
+  const Plan plan = compile_loaded(loaded, args.compile);
+  std::cout << args.config << ": valid (" << plan.order.size() << " passes run, " << plan.culled.size() << " culled)\n";
+  return kOk;
+}
+
+int run_plan(const Args& args, const PassRegistry& registry) {
+  LoadedConfig loaded = load(args, registry);
   const Plan plan = compile_loaded(loaded, args.compile);
   const PlanReportContext context{args.config};
-  if (args.command == "validate") {
-    std::cout << args.config << ": valid (" << plan.order.size() << " passes run, " << plan.culled.size()
-              << " culled)\n";
-    return kOk;
-  }
-  if (args.command == "plan") {
-    if (args.backend == "webgpu" && !args.json && !args.dot) std::cout << webgpu_memory_line(loaded.graph, plan);
-    std::cout << (args.json ? plan_json(loaded.graph, plan, context)
-                  : args.dot ? plan_dot(loaded.graph, plan, context)
-                             : plan_text(loaded.graph, plan, context));
-    return kOk;
-  }
+  if (args.backend == "webgpu" && !args.json && !args.dot) std::cout << webgpu_memory_line(loaded.graph, plan);
+  std::cout << (args.json ? plan_json(loaded.graph, plan, context)
+                : args.dot ? plan_dot(loaded.graph, plan, context)
+                           : plan_text(loaded.graph, plan, context));
+  return kOk;
+}
+
+int run_render(const Args& args, const PassRegistry& registry) {
+  LoadedConfig loaded = load(args, registry);
+  compile_loaded(loaded, args.compile);  // the config's errors before any device work
   return render(args, std::move(loaded));
+}
+
+int run_reference(const Args& args, const PassRegistry& registry) { return reference_render(args, load(args, registry)); }
+
+int run_passes(const Args&, const PassRegistry& registry) { return print_passes(registry); }
+
+int run_devices(const Args&, const PassRegistry&) { return print_devices(); }
+
+int not_implemented(const Args& args, const PassRegistry&) {
+  std::cerr << "volgraph " << args.command << ": not implemented yet (arrives with the volumetric fog issue)\n";
+  return kFailure;
+}
+
+// Every command: its name, the options it declares (tools/command_line.h) and what runs
+// it. A new command is a row here with its own two functions, e.g. a declare function
+// that calls config_argument and graph_options and adds its own options.
+constexpr Command kCommands[] = {
+    {"validate", every_option, run_validate},
+    {"plan", every_option, run_plan},
+    {"render", every_option, run_render},
+    {"reference", every_option, run_reference},
+    {"passes", every_option, run_passes},
+    {"devices", every_option, run_devices},
+    {"ab", every_option, not_implemented},
+    {"sweep", every_option, not_implemented},
+};
+
+int run(const Args& args, const PassRegistry& registry) {
+  for (const Command& command : kCommands) {
+    if (args.command == command.name) return command.run(args, registry);
+  }
+  return bad_usage("unknown command \"" + args.command + "\"");
 }
 
 }  // namespace
@@ -496,11 +399,13 @@ const char* device_error_heading(volgraph::DeviceError::Kind kind) {
 int main(int argc, char** argv) {
   using namespace volgraph;
   Args args;
-  if (auto code = parse(argc, argv, args)) return *code;
+  if (auto code = parse_command_line(argc, argv, kCommands, args)) return *code;
   PassRegistry registry;
   register_builtin_passes(registry);
   try {
     return run(args, registry);
+  } catch (const UsageError& e) {
+    return bad_usage(e.what());
   } catch (const ConfigError& e) {
     std::cerr << e.what() << "\n";
     return kBadInput;

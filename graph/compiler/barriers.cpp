@@ -219,6 +219,14 @@ BarrierPlan plan_barriers(const FlatGraph& g, const Schedule& schedule, const st
   }
   for (size_t i = 0; i < barriers.size(); ++i) plan.barriers[fill[positions[i]]++] = barriers[i];
   plan.initial = std::move(initial);
+  // What follows the frame waits on the last write and every read since (their stages),
+  // and finds the resource in its last layout.
+  plan.final_states.resize(graph.resources.size());
+  for (uint32_t r = 0; r < graph.resources.size(); ++r) {
+    if (uses.of(r).empty()) continue;
+    const Tracker& t = last_state[r];
+    plan.final_states[r] = {t.write_stages | t.read_stages, t.write_access, t.layout};
+  }
   return plan;
 }
 

@@ -60,6 +60,7 @@ Plan compile(const Graph& graph, const CompileOptions& options, const Requiremen
   plan.memory = memory.stats;
   plan.barriers = std::move(barriers.barriers);
   plan.initial_barriers = std::move(barriers.initial);
+  plan.final_states = std::move(barriers.final_states);
   return plan;
 }
 

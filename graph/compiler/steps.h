@@ -54,6 +54,7 @@ struct BarrierPlan {
   std::vector<Barrier> barriers;              // sorted by position
   std::vector<uint32_t> begin, count;         // per position
   std::vector<Barrier> initial;               // Plan::initial_barriers
+  std::vector<AccessState> final_states;      // Plan::final_states
 };
 
 BarrierPlan plan_barriers(const FlatGraph& graph, const Schedule& schedule, const std::vector<Handover>& handovers,

@@ -442,7 +442,8 @@ class Wiring {
       if (i < 0) continue;
       const SlotDecl& slot = decl.slots[size_t(i)];
       if (slot.direction != SlotDirection::output) {
-        diags_.error(o.where, "slot \"" + o.slot + "\" of \"" + decl.name + "\" is an input; only outputs take a format or size");
+        const char* what = slot.direction == SlotDirection::internal ? "internal to the pass" : "an input";
+        diags_.error(o.where, "slot \"" + o.slot + "\" of \"" + decl.name + "\" is " + what + "; only outputs take a format or size");
         continue;
       }
       overrides_[p][size_t(i)] = &o;
@@ -546,6 +547,10 @@ class Wiring {
     for (const InputWiring& w : node.inputs) {
       const int i = find_slot(decl, w.slot, w.where, "input");
       if (i < 0) continue;
+      if (decl.slots[size_t(i)].direction == SlotDirection::internal) {
+        diags_.error(w.where, "slot \"" + w.slot + "\" of \"" + decl.name + "\" is internal to the pass; it cannot be wired");
+        continue;
+      }
       if (decl.slots[size_t(i)].direction == SlotDirection::output) {
         diags_.error(w.where, "slot \"" + w.slot + "\" of \"" + decl.name + "\" is an output; it cannot be wired to an input");
         continue;
@@ -560,7 +565,10 @@ class Wiring {
     }
     for (size_t i = 0; i < decl.slots.size(); ++i) {
       const SlotDecl& s = decl.slots[i];
-      if (s.direction == SlotDirection::output || s.direction == SlotDirection::history || inputs_[p][i]) continue;
+      if (s.direction == SlotDirection::output || s.direction == SlotDirection::history || s.direction == SlotDirection::internal ||
+          inputs_[p][i]) {
+        continue;
+      }
       if (std::any_of(node.inputs.begin(), node.inputs.end(), [&](const InputWiring& w) { return w.slot == s.name; })) continue;
       const VariantDecl& variant = decl.variants[variants_[p]];
       const bool needed = std::find(variant.needs_inputs.begin(), variant.needs_inputs.end(), s.name) != variant.needs_inputs.end();
@@ -612,11 +620,20 @@ class Wiring {
     LoadedConfig out;
     out.config = config_;
     GraphBuilder b(config_.output_size, config_.scene.features());
-    for (uint32_t p = 0; p < config_.passes.size(); ++p) b.add_pass(config_.passes[p].name, *decls_[p], variants_[p]);
+    for (uint32_t p = 0; p < config_.passes.size(); ++p) add_pass(b, p, 0);
+    steps_.assign(config_.passes.size(), {});
+    for (uint32_t p = 0; p < config_.passes.size(); ++p) {
+      steps_[p].push_back(p);
+      for (uint16_t k = 1; k < decls_[p]->steps.size(); ++k) steps_[p].push_back(add_pass(b, p, k));
+    }
     std::vector<std::vector<ResourceVersion>> made(config_.passes.size());
     for (uint32_t p : order) {
       const PassDecl& decl = *decls_[p];
       made[p].resize(decl.slots.size());
+      if (!decl.steps.empty()) {
+        bind_steps(b, p, made);
+        continue;
+      }
       // Inputs first (an output may be shaped like one), then outputs, then the history
       // slots that follow them.
       for (const int stage : {0, 1, 2}) {
@@ -639,9 +656,57 @@ class Wiring {
     }
     diags_.throw_if_any();
     out.graph = b.finish();
-    for (uint32_t p = 0; p < config_.passes.size(); ++p) out.graph.passes[p].params = params_[p];
+    for (uint32_t p = 0; p < config_.passes.size(); ++p) {
+      for (const uint32_t step : steps_[p]) out.graph.passes[step].params = params_[p];
+    }
     out.params = params_;
     return out;
+  }
+
+  // Config pass p as a graph pass: itself, or its step `step` ("name/step", the step's
+  // decl) when its type has steps.
+  uint32_t add_pass(GraphBuilder& b, uint32_t p, uint16_t step) {
+    const PassDecl& decl = *decls_[p];
+    if (decl.steps.empty()) return b.add_pass(config_.passes[p].name, decl, variants_[p]);
+    const StepDecl& s = decl.steps[step];
+    const uint32_t g = b.add_pass(config_.passes[p].name + "/" + s.name, *s.decl, variants_[p]);
+    b.graph().passes[g].group = p;
+    b.graph().passes[g].step = step;
+    return g;
+  }
+
+  // A pass made of steps: each step binds the slots it uses, in step order — the pass's
+  // inputs as wired, its outputs and internal slots made by the first step that writes
+  // them (named "pass.slot", as a pass's own outputs are) and modified by later ones.
+  void bind_steps(GraphBuilder& b, uint32_t p, std::vector<std::vector<ResourceVersion>>& made) {
+    const PassDecl& decl = *decls_[p];
+    std::vector<uint8_t> exists(decl.slots.size(), 0);
+    for (uint16_t k = 0; k < decl.steps.size(); ++k) {
+      const uint32_t g = steps_[p][k];
+      for (const auto& [slot, usage] : decl.steps[k].uses) {
+        const SlotDecl& s = decl.steps[k].decl->slots[slot];
+        const std::optional<SlotRef>& wired = inputs_[p][slot];
+        try {
+          if (s.direction == SlotDirection::output) {
+            SizeRule rule;
+            ResourceDesc d = output_desc(p, decl.slots[slot], &rule);
+            d.name = config_.passes[p].name + "." + s.name;
+            made[p][slot] = b.create(g, slot, d);
+            b.graph().resources[made[p][slot].resource].size_rule = rule;
+            exists[slot] = 1;
+          } else if (decl.slots[slot].direction == SlotDirection::input) {
+            if (wired) b.read(g, slot, made[wired->pass][size_t(wired->slot)]);
+          } else if (s.direction == SlotDirection::inout) {
+            made[p][slot] = b.modify(g, slot, exists[slot] ? made[p][slot] : made[wired->pass][size_t(wired->slot)]);
+            exists[slot] = 1;
+          } else {
+            b.read(g, slot, made[p][slot]);
+          }
+        } catch (const GraphError& e) {
+          diags_.error(wiring_where_[p][slot], "pass \"" + config_.passes[p].name + "\": " + e.what());
+        }
+      }
+    }
   }
 
   static int binding_stage(SlotDirection direction) {
@@ -656,8 +721,18 @@ class Wiring {
       if (followed < 0) throw GraphError(p, i, "history slot \"" + slot.name + "\" follows no output \"" + slot.history_of + "\"");
       return b.read_history(p, i, made[p][size_t(followed)]);
     }
-    if (slot.direction == SlotDirection::output && !slot.like.empty()) return b.create(p, i, like_desc(b, p, slot, made));
-    if (slot.direction == SlotDirection::output) return b.create(p, i, output_desc(p, slot));
+    if (slot.direction == SlotDirection::output && !slot.like.empty()) {
+      const ResourceVersion v = b.create(p, i, like_desc(b, p, slot, made));
+      const SlotRef& source = *inputs_[p][size_t(decls_[p]->slot_index(slot.like))];  // like_desc checked it is wired
+      b.graph().resources[v.resource].size_rule.like = made[source.pass][size_t(source.slot)].resource;
+      return v;
+    }
+    if (slot.direction == SlotDirection::output) {
+      SizeRule rule;
+      const ResourceVersion v = b.create(p, i, output_desc(p, slot, &rule));
+      b.graph().resources[v.resource].size_rule = rule;
+      return v;
+    }
     const auto& src = inputs_[p][i];
     if (!src) return {};
     const ResourceVersion v = made[src->pass][size_t(src->slot)];
@@ -686,7 +761,7 @@ class Wiring {
     return 1;
   }
 
-  ResourceDesc output_desc(uint32_t p, const SlotDecl& slot) {
+  ResourceDesc output_desc(uint32_t p, const SlotDecl& slot, SizeRule* rule) {
     const PassDecl& decl = *decls_[p];
     int64_t side = 0, divisor = 1, depth = 1;
     if (!slot.size.param.empty()) side = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.param))]);
@@ -698,6 +773,7 @@ class Wiring {
       const auto it = sizes_resolved_.find({config_.passes[p].name, slot.name});
       if (it != sizes_resolved_.end()) effective.size = it->second;
     }
+    *rule = {effective.kind != ResourceKind::buffer, effective.size, side, divisor, depth, kNone};
     return resolve_slot(decl, effective, config_.output_size, side, divisor, depth);
   }
 
@@ -714,6 +790,7 @@ class Wiring {
   std::vector<std::vector<Where>> wiring_where_;
   std::vector<std::optional<SlotRef>> outputs_;
   std::map<std::pair<std::string, std::string>, SizeSpec> sizes_resolved_;
+  std::vector<std::vector<uint32_t>> steps_;  // per config pass: its graph passes (itself, or its steps)
 };
 
 void apply_overrides(Config& config, const Overrides& o, Diagnostics& diags) {

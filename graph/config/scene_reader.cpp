@@ -2,8 +2,9 @@
 
 #include <algorithm>
 
-#include "passes/shading/media.h"  // header-only: sigma from a transmittance colour
-#include "passes/shading/noise.h"  // header-only: the octave limit
+#include "physics/media.h"  // header-only: sigma from a transmittance colour
+#include "physics/lighting.h"  // header-only: the light limit
+#include "physics/noise.h"  // header-only: the octave limit
 
 namespace volgraph::config {
 namespace {
@@ -156,7 +157,7 @@ void read_coefficients(const Node& n, Medium& m) {
     double distance = 1;
     read(*t, "color", colour, 0, 1);
     read(*t, "distance", distance, 1e-6, kHuge);
-    for (size_t c = 0; c < 3; ++c) extinction[c] = shading::sigma_t_from_transmittance(colour[c], distance);
+    for (size_t c = 0; c < 3; ++c) extinction[c] = physics::sigma_t_from_transmittance(colour[c], distance);
   }
   for (size_t c = 0; c < 3; ++c) {
     m.sigma_s[c] = albedo[c] * extinction[c];
@@ -190,7 +191,7 @@ void read_medium(const Node& n, Medium& m, std::initializer_list<const char*> ex
 void read_noise(const Node& n, Noise& noise) {
   if (!n.object({"octaves", "scale", "coverage", "edge_fade"})) return;
   if (auto o = n.member("octaves")) {
-    if (auto v = o->integer(1, shading::kMaxNoiseOctaves)) noise.octaves = int(*v);
+    if (auto v = o->integer(1, physics::kMaxNoiseOctaves)) noise.octaves = int(*v);
   }
   read(n, "scale", noise.scale, 1e-3, kHuge);
   read(n, "coverage", noise.coverage, 0.01, 1);
@@ -272,6 +273,9 @@ void read_scene(const Node& n, Scene& scene) {
       Light l;
       read_light(lights->element(i), l);
       scene.lights.push_back(l);
+    }
+    if (scene.lights.size() > size_t(physics::kMaxLights)) {
+      lights->error("at most " + std::to_string(physics::kMaxLights) + " lights, got " + std::to_string(scene.lights.size()));
     }
   }
   if (auto media = n.member("media")) {

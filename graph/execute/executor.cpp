@@ -5,7 +5,9 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "graph/execute/cache_key.h"
 #include "graph/rhi/device_error.h"
+#include "graph/scene/scene.h"
 
 namespace volgraph {
 namespace {
@@ -95,17 +97,6 @@ bool plan_fits(const Graph& graph, const Plan& plan) {
   return true;
 }
 
-// A resource of a history pair the pass binds although it keeps one bind group for
-// every frame (kNone when there is none).
-uint32_t swapped_resource_without_parity(const Graph& graph, const GraphPass& pass) {
-  if (pass.decl->parity_bind_groups) return kNone;
-  for (const ResourceUse& u : pass.uses) {
-    const GraphResource& r = graph.resources[u.resource];
-    if (r.previous != kNone || r.previous_of != kNone) return u.resource;
-  }
-  return kNone;
-}
-
 }  // namespace
 
 Executor::Executor(rhi::Device& device, const Graph& graph, const Scene* scene, const CompileOptions& options)
@@ -129,7 +120,7 @@ std::unique_ptr<Executor> Executor::for_plan(rhi::Device& device, const Graph& g
   return std::unique_ptr<Executor>(new Executor(device, graph, scene, device.create_graph_resources(graph), std::move(plan)));
 }
 
-// Each pass's execution and the plan's memory bound.
+// Each pass's execution, the plan's memory bound, then every execution's setup.
 void Executor::prepare() {
   for (const PlannedPass& p : plan_.order) {
     const GraphPass& pass = graph_.passes[p.pass];
@@ -137,14 +128,28 @@ void Executor::prepare() {
     if (!decl.make_execution) {
       throw DeviceError(DeviceError::Kind::unsupported, "pass \"" + pass.name + "\" (" + decl.name + ") has no GPU implementation yet");
     }
-    if (const uint32_t r = swapped_resource_without_parity(graph_, pass); r != kNone) {
-      throw DeviceError(DeviceError::Kind::unsupported,
-                        "pass \"" + pass.name + "\" (" + decl.name + ") reads " + graph_.resources[r].desc.name +
-                            ", whose objects swap every frame (a history pair), but keeps one bind group for every frame");
-    }
-    executions_.push_back(decl.make_execution());
+    executions_.push_back(shared_execution(pass));
   }
   resources_->bind(plan_);
+  for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
+    const bool first_of_its_pass = std::find(executions_.begin(), executions_.begin() + pos, executions_[pos]) == executions_.begin() + pos;
+    if (!first_of_its_pass) continue;  // a later step of a pass set up already
+    PassSetup setup(device_, graph_, plan_.order[pos].pass, *resources_, scene_);
+    executions_[pos]->setup(setup);
+  }
+  pass_keys_.assign(plan_.order.size(), 0);
+  content_keys_.assign(graph_.resources.size(), 0);
+}
+
+// The pass's execution: a new one, or for a step of a pass made of steps the one its
+// earlier steps share.
+std::shared_ptr<PassExecution> Executor::shared_execution(const GraphPass& pass) {
+  if (pass.group != kNone) {
+    for (uint32_t pos = 0; pos < executions_.size(); ++pos) {
+      if (graph_.passes[plan_.order[pos].pass].group == pass.group) return executions_[pos];
+    }
+  }
+  return std::shared_ptr<PassExecution>(pass.decl->make_execution());
 }
 
 // Whether this frame writes time stamps; their queries are made for the first timed frame.
@@ -189,17 +194,23 @@ std::vector<Readback> Executor::run_frame_and_read(std::span<const uint32_t> res
   auto encoder = device_.create_command_encoder("frame " + std::to_string(frame_));
   if (frame_ == 0 && !plan_.initial_barriers.empty()) encoder->barrier(device_barriers(plan_.initial_barriers));
   std::vector<double> cpu_ms(plan_.order.size());
+  std::vector<uint8_t> skipped(plan_.order.size(), 0);
   for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
     const GraphPass& pass = graph_.passes[plan_.order[pos].pass];
     encoder->push_debug_group(pass.name + " (" + pass.decl->name + ")");
+    // The plan's barriers are recorded even for a pass the cache skips: they move its
+    // outputs through the states the plan expects, keeping their contents.
     const std::vector<rhi::ResourceBarrier> barriers = barriers_before(pos);
     if (!barriers.empty()) encoder->barrier(barriers);
     if (timed) encoder->write_timestamp(queries_, 2 * pos);
     const auto start = std::chrono::steady_clock::now();
-    PassContext context(device_, *encoder, graph_, plan_.order[pos].pass, *resources_, scene_);
-    context.frame = frame_;
-    context.history_valid = frame_ > 0;
-    executions_[pos]->record(context);
+    skipped[pos] = update_cache_key(pos);
+    if (!skipped[pos]) {
+      PassContext context(device_, *encoder, graph_, plan_.order[pos].pass, *resources_, scene_);
+      context.frame = frame_;
+      context.history_valid = frame_ > 0;
+      executions_[pos]->record(context);
+    }
     cpu_ms[pos] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (timed) encoder->write_timestamp(queries_, 2 * pos + 1);
     encoder->pop_debug_group();
@@ -214,10 +225,31 @@ std::vector<Readback> Executor::run_frame_and_read(std::span<const uint32_t> res
   for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
     const GraphPass& p = graph_.passes[plan_.order[pos].pass];
     const double gpu = ns.empty() ? 0.0 : (ns[2 * pos + 1] - ns[2 * pos]) * 1e-6;
-    timings_.push_back({p.name, p.decl->name, gpu, cpu_ms[pos]});
+    timings_.push_back({p.name, p.decl->name, gpu, cpu_ms[pos], bool(skipped[pos])});
   }
   ++frame_;
   return collect(pending, resources);
+}
+
+// The pass's cache key this frame (cache_key.h), kept with the resources it writes;
+// true when the pass is cached, has run before and its key has not changed: it is
+// skipped, its persistent outputs keeping what it wrote.
+bool Executor::update_cache_key(uint32_t pos) {
+  const GraphPass& pass = graph_.passes[plan_.order[pos].pass];
+  CacheKeyInputs in;
+  in.pass = &pass;
+  in.frame = frame_;
+  in.scene_hash = scene_ ? scene_->hash(pass.decl->reads_scene) : 0;
+  for (const ResourceUse& u : pass.uses) {
+    if (u.direction != SlotDirection::output) in.input_keys.push_back(content_keys_[u.resource]);  // what it reads of others (or of last frame)
+  }
+  const uint64_t key = pass_cache_key(in);
+  const bool skip = pass.decl->cached && frame_ > 0 && key == pass_keys_[pos];
+  pass_keys_[pos] = key;
+  for (const ResourceUse& u : pass.uses) {
+    if (u.direction == SlotDirection::output || u.direction == SlotDirection::inout) content_keys_[u.resource] = key;
+  }
+  return skip;
 }
 
 rhi::ResourceBarrier Executor::barrier_of(uint32_t r, const AccessState& from, const AccessState& to) const {
@@ -225,17 +257,8 @@ rhi::ResourceBarrier Executor::barrier_of(uint32_t r, const AccessState& from, c
   return {resources_->texture(r), {}, from, to};
 }
 
-// The state the resource's last use in the frame left it in.
-AccessState Executor::last_state(uint32_t r) const {
-  AccessState last{};
-  for (uint32_t pos = 0; pos < plan_.order.size(); ++pos) {
-    const GraphPass& p = graph_.passes[plan_.order[pos].pass];
-    for (const ResourceUse& u : p.uses) {
-      if (u.resource == r) last = access_state(u.usage, p.kind, graph_.resources[r].desc.kind);
-    }
-  }
-  return last;
-}
+// The state the resource's last use in the frame left it in (the plan says).
+AccessState Executor::last_state(uint32_t r) const { return r < plan_.final_states.size() ? plan_.final_states[r] : AccessState{}; }
 
 void Executor::check_readable(uint32_t r) const {
   const ResourceDesc& d = graph_.resources[r].desc;

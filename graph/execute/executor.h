@@ -10,6 +10,7 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/plan.h"
+#include "graph/rhi/graph_resource_set.h"
 #include "graph/rhi/rhi.h"
 
 namespace volgraph {
@@ -19,6 +20,7 @@ struct PassTiming {
   std::string type;
   double gpu_ms = 0;  // from time stamps
   double cpu_ms = 0;  // recording on the CPU
+  bool cached = false;  // skipped: its cache key had not changed (PassDecl::cached)
 };
 
 struct Texels {
@@ -84,6 +86,8 @@ class Executor {
   void prepare();
   bool timing_frame();
   std::vector<rhi::ResourceBarrier> barriers_before(uint32_t position) const;
+  bool update_cache_key(uint32_t position);
+  std::shared_ptr<PassExecution> shared_execution(const GraphPass& pass);
   std::vector<rhi::ResourceBarrier> device_barriers(std::span<const Barrier> barriers) const;
   void swap_history_pairs();
   rhi::ResourceBarrier barrier_of(uint32_t resource, const AccessState& from, const AccessState& to) const;
@@ -99,11 +103,13 @@ class Executor {
   const Scene* scene_;
   std::unique_ptr<rhi::GraphResourceSet> resources_;
   Plan plan_;
-  std::vector<std::unique_ptr<PassExecution>> executions_;  // per plan position
+  std::vector<std::shared_ptr<PassExecution>> executions_;  // per plan position (a pass's steps share one)
   rhi::QuerySetId queries_;
   bool gpu_timing_ = true;
   std::vector<PassTiming> timings_;
   uint64_t frame_ = 0;
+  std::vector<uint64_t> pass_keys_;     // per plan position: its cache key last frame
+  std::vector<uint64_t> content_keys_;  // per resource: the key of the pass that last wrote it
   double frame_wall_ms_ = 0;
 };
 

@@ -4,44 +4,44 @@
 
 namespace volgraph {
 
-const ParamValue& PassContext::param(std::string_view name) const {
+const ParamValue& PassSetup::param_value(uint16_t index) const {
   const GraphPass& p = graph_pass();
-  const int i = p.decl->param_index(name);
-  if (i < 0) throw std::logic_error(p.decl->name + " has no parameter " + std::string(name));
-  if (size_t(i) < p.params.size()) return p.params[size_t(i)];
-  return p.decl->params[size_t(i)].default_value;
+  if (index < p.params.size()) return p.params[index];
+  return p.decl->params.at(index).default_value;
 }
-
-std::string_view PassContext::variant() const { return graph_pass().decl->variants[graph_pass().variant].name; }
 
 // Wired in the graph and given memory by the plan (an optional input whose producer was
 // culled is wired but unbound).
-bool PassContext::bound(std::string_view slot) const {
+// The use of `slot` by this pass — by any of its steps when it has steps, this one's first.
+const ResourceUse* PassSetup::use_of(SlotHandle slot) const {
   const GraphPass& p = graph_pass();
-  const int s = p.decl->slot_index(slot);
   for (const ResourceUse& u : p.uses) {
-    if (int(u.slot) != s) continue;
-    const bool buffer = graph.resources[u.resource].desc.kind == ResourceKind::buffer;
-    return buffer ? bool(resources_.buffer(u.resource)) : bool(resources_.texture(u.resource));
+    if (u.slot == slot.index) return &u;
   }
-  return false;
+  if (p.group == kNone) return nullptr;
+  for (const GraphPass& step : graph.passes) {
+    if (step.group != p.group) continue;
+    for (const ResourceUse& u : step.uses) {
+      if (u.slot == slot.index) return &u;
+    }
+  }
+  return nullptr;
 }
 
-uint32_t PassContext::resource(std::string_view slot) const {
-  const GraphPass& p = graph_pass();
-  const int s = p.decl->slot_index(slot);
-  for (const ResourceUse& u : p.uses) {
-    if (int(u.slot) == s) return u.resource;
-  }
-  throw std::logic_error(p.name + ": slot " + std::string(slot) + " is not bound");
+bool PassSetup::bound(SlotHandle slot) const {
+  const ResourceUse* u = use_of(slot);
+  if (!u) return false;
+  const bool buffer = graph.resources[u->resource].desc.kind == ResourceKind::buffer;
+  return buffer ? bool(resources_.buffer(u->resource)) : bool(resources_.texture(u->resource));
 }
 
-uint32_t PassContext::parity() const {
-  for (const ResourceUse& u : graph_pass().uses) {
-    const GraphResource& r = graph.resources[u.resource];
-    if (r.previous != kNone || r.previous_of != kNone) return uint32_t(frame & 1);
-  }
-  return 0;
+uint32_t PassSetup::resource(SlotHandle slot) const {
+  if (const ResourceUse* u = use_of(slot)) return u->resource;
+  throw std::logic_error(graph_pass().name + ": slot " + graph_pass().decl->slots.at(slot.index).name + " is not bound");
+}
+
+rhi::BindGroupId PassContext::bind_group(rhi::BindGroupLayoutId layout, std::vector<rhi::BindGroupEntry> entries) const {
+  return device.cached_bind_group({name(), layout, std::move(entries)});
 }
 
 }  // namespace volgraph

@@ -1,58 +1,104 @@
 // What a pass does on the GPU. Each pass type that can run makes one PassExecution per
-// pass of a graph (PassDecl::make_execution); the executor calls record() every frame
-// with the pass's resources, already in the state the plan promised.
+// pass of a graph (PassDecl::make_execution). Its lifecycle: setup() once, after the
+// graph is compiled and its resources exist (pipelines, layouts, constant blocks), then
+// record() every frame with the pass's resources already in the state the plan promised.
+// Bind groups are not kept: record() asks for them by content (PassContext::bind_group),
+// and the device's cache returns the same group for the same layout and entries, so a
+// history pair whose objects swap every frame simply gets two.
 #pragma once
 
 #include <memory>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "graph/graph.h"
+#include "graph/rhi/graph_resource_set.h"
 #include "graph/rhi/rhi.h"
 
 namespace volgraph {
 
 struct Scene;
 
-class PassContext {
+// What a pass sees of itself and its resources, at setup and at every frame.
+class PassSetup {
+ public:
+  PassSetup(rhi::Device& device, const Graph& graph, uint32_t pass, const rhi::GraphResourceSet& resources, const Scene* scene)
+      : device(device), graph(graph), pass(pass), scene(scene), resources_(resources) {}
+
+  rhi::Device& device;
+  const Graph& graph;
+  const uint32_t pass;
+  const Scene* scene;
+  const GraphPass& graph_pass() const { return graph.passes[pass]; }
+  const std::string& name() const { return graph_pass().name; }
+  // The frame's size the graph is compiled for (the camera's aspect); a pass's own
+  // extents come from its slots (extent()).
+  Extent frame_size() const { return graph.output_size; }
+
+  // The pass's parameter values, variant and slots, through its table's handles.
+  template <typename T>
+  const T& param(ParamHandle<T> handle) const {
+    return std::get<T>(param_value(handle.index));
+  }
+  const VariantDecl& variant() const { return graph_pass().decl->variants[graph_pass().variant]; }
+  bool variant_is(VariantHandle v) const { return graph_pass().variant == v.index; }
+  // Which step is recording (a pass made of steps, PassDecl::steps).
+  bool step_is(StepHandle s) const { return graph_pass().step == s.index; }
+  // The pass's own name (a step's graph pass is "<name>/<step>").
+  std::string pass_name() const { return name().substr(0, name().find('/')); }
+  bool bound(SlotHandle slot) const;  // optional inputs may be unbound (their producer culled)
+  uint32_t resource(SlotHandle slot) const;
+  const ResourceDesc& desc(SlotHandle slot) const { return graph.resources[resource(slot)].desc; }
+  Extent extent(SlotHandle slot) const { return desc(slot).extent; }
+  rhi::TextureId texture(SlotHandle slot) const { return resources_.texture(resource(slot)); }
+  rhi::TextureViewId view(SlotHandle slot) const { return resources_.view(resource(slot)); }
+  rhi::BufferId buffer(SlotHandle slot) const { return resources_.buffer(resource(slot)); }
+
+  // One of the device's shared samplers.
+  rhi::SamplerId sampler(rhi::StockSampler which) const { return device.stock_sampler(which); }
+
+ private:
+  const ParamValue& param_value(uint16_t index) const;
+  const ResourceUse* use_of(SlotHandle slot) const;
+  const rhi::GraphResourceSet& resources_;
+};
+
+// A frame of the pass: where it records, and what frame it is.
+class PassContext : public PassSetup {
  public:
   PassContext(rhi::Device& device, rhi::CommandEncoder& encoder, const Graph& graph, uint32_t pass,
               const rhi::GraphResourceSet& resources, const Scene* scene)
-      : device(device), encoder(encoder), graph(graph), pass(pass), scene(scene), resources_(resources) {}
+      : PassSetup(device, graph, pass, resources, scene), encoder(encoder) {}
 
-  rhi::Device& device;
   rhi::CommandEncoder& encoder;
-  const Graph& graph;
-  const uint32_t pass;
-  const GraphPass& graph_pass() const { return graph.passes[pass]; }
-  // The pass's parameter values (as its decl lists them), variant and slots' resources.
-  const ParamValue& param(std::string_view name) const;
-  std::string_view variant() const;
-  bool bound(std::string_view slot) const;  // optional inputs may be unbound (their producer culled)
-  uint32_t resource(std::string_view slot) const;
-  const ResourceDesc& desc(std::string_view slot) const { return graph.resources[resource(slot)].desc; }
-  rhi::TextureId texture(std::string_view slot) const { return resources_.texture(resource(slot)); }
-  rhi::TextureViewId view(std::string_view slot) const { return resources_.view(resource(slot)); }
-  rhi::BufferId buffer(std::string_view slot) const { return resources_.buffer(resource(slot)); }
-  const Scene* scene;
   uint64_t frame = 0;  // frames run before this one (temporal passes jitter and blend by it)
   // Whether history slots hold the last frame's content (false on the first frame:
   // they hold nothing, and a pass must not read them).
   bool history_valid = false;
-  // Which way round the history pairs' two objects are this frame (0 or 1; they swap
-  // every frame). A pass that binds either resource of a pair — a history slot, an
-  // output with one, or such an output downstream — sees other objects behind its slots
-  // on odd frames: it keeps a bind group per parity. 0 for every other pass.
-  uint32_t parity() const;
 
- private:
-  const rhi::GraphResourceSet& resources_;
+  // The bind group of `layout` holding `entries`, from the device's cache.
+  rhi::BindGroupId bind_group(rhi::BindGroupLayoutId layout, std::vector<rhi::BindGroupEntry> entries) const;
 };
 
 class PassExecution {
  public:
   virtual ~PassExecution() = default;
+  // Once, before the first frame: pipelines, layouts, blocks that do not change.
+  virtual void setup(PassSetup& setup) { (void)setup; }
   virtual void record(PassContext& context) = 0;
 };
+
+// The PassDecl of a pass type whose table is `Table` (a PassTable) and whose execution
+// is `Execution`, constructed from the table: `Execution(const Table&)`.
+template <typename Table, typename Execution>
+PassDecl pass_type() {
+  auto table = std::make_shared<const Table>();
+  PassDecl decl = table->decl;
+  if (decl.variants.empty()) decl.variants.push_back({"default", "the pass's only way"});
+  decl.make_execution = [table]() -> std::unique_ptr<PassExecution> { return std::make_unique<Execution>(*table); };
+  finish_steps(decl);  // after make_execution: the steps share it
+  return decl;
+}
 
 }  // namespace volgraph

@@ -7,7 +7,10 @@
 // [0, 1], and framebuffer row 0 is the top row (DESIGN.md's pixel convention).
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <map>
+#include <tuple>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -15,11 +18,15 @@
 #include <string_view>
 #include <vector>
 
-#include "graph/access.h"
-#include "graph/plan.h"
-#include "graph/resource.h"
+#include "graph/rhi/types.h"
+
+namespace volgraph {
+struct Graph;
+}
 
 namespace volgraph::rhi {
+
+class GraphResourceSet;  // graph/rhi/graph_resource_set.h
 
 // Typed handles owned by the Device; 0 is "none".
 template <typename Tag>
@@ -79,6 +86,9 @@ struct TextureDesc {
 
 enum class Filter : uint8_t { nearest, linear };
 enum class AddressMode : uint8_t { clamp_to_edge, repeat, mirror_repeat };
+
+// The samplers passes share (Device::stock_sampler): filter, then wrap mode.
+enum class StockSampler : uint8_t { nearest_clamp, linear_clamp, trilinear_clamp, linear_repeat, count };
 
 struct SamplerDesc {
   std::string label;
@@ -267,24 +277,17 @@ class CommandEncoder {
                                      uint64_t destination_offset = 0) = 0;
 };
 
-// The graph's resources on a device: first the driver's requirements for compile(),
-// then memory as the plan says (Vulkan: placed in the plan's heaps; WebGPU: pooled).
-class GraphResourceSet {
- public:
-  virtual ~GraphResourceSet() = default;
-  virtual RequirementsFn requirements() const = 0;
-  virtual void bind(const Plan& plan) = 0;
-  virtual TextureId texture(uint32_t resource) const = 0;
-  virtual TextureViewId view(uint32_t resource) const = 0;  // none for copy-only textures
-  virtual BufferId buffer(uint32_t resource) const = 0;
-  // The two resources trade their objects (a history pair, every frame; graph.h).
-  virtual void swap(uint32_t a, uint32_t b) = 0;
-};
-
 class Device {
  public:
   virtual ~Device() = default;
   virtual AdapterInfo info() const = 0;
+
+  // The bind group of desc.layout holding desc.entries: made on first request, then the
+  // same group for the same layout and entries (the label is the first request's).
+  // Passes ask for their groups this way at record time instead of keeping them.
+  BindGroupId cached_bind_group(const BindGroupDesc& desc);
+  // One sampler of each StockSampler kind, made on first use.
+  SamplerId stock_sampler(StockSampler which);
 
   virtual BufferId create_buffer(const BufferDesc& desc) = 0;
   virtual TextureId create_texture(const TextureDesc& desc) = 0;
@@ -321,6 +324,17 @@ class Device {
   virtual void submit(std::unique_ptr<CommandEncoder> commands) = 0;
   // The contents of a buffer created with copy_dst (waits for everything submitted).
   virtual std::vector<std::byte> read_buffer(BufferId buffer) = 0;
+
+ private:
+  struct BindGroupKey {
+    BindGroupLayoutId layout;
+    std::vector<std::array<uint64_t, 6>> entries;  // binding, buffer, offset, size, view, sampler
+    friend bool operator<(const BindGroupKey& a, const BindGroupKey& b) {
+      return std::tie(a.layout.id, a.entries) < std::tie(b.layout.id, b.entries);
+    }
+  };
+  std::map<BindGroupKey, BindGroupId> bind_groups_;
+  std::array<SamplerId, size_t(StockSampler::count)> stock_samplers_{};
 };
 
 }  // namespace volgraph::rhi

@@ -1,12 +1,16 @@
-// SPIR-V reflection (spirv_reflect.h): one walk over a module's word stream collects its
-// decorations, types and variables; each resource variable becomes a LayoutEntry, and
-// the stages' entries are merged per set and binding. Numbers are from the SPIR-V 1.3
-// specification (what glslang emits for Vulkan 1.1); § names the section.
+// SPIR-V reflection (spirv_reflect.h) through SPIRV-Cross's C API: it parses the module
+// and lists its resources with their decorations and types, its entry points, execution
+// modes and uniform block layouts. Two things are still read from the words here, in a
+// small scan: the module's framing (so that a malformed module's error says where), and
+// which textures and samplers an instruction samples through (`filtered`), which SPIRV-Cross
+// does not tell (see "Filtering" below). § names a section of the SPIR-V specification.
 #include "graph/rhi/spirv_reflect.h"
+
+#include <spirv_cross/spirv_cross_c.h>
 
 #include <algorithm>
 #include <map>
-#include <optional>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -16,83 +20,10 @@
 namespace volgraph::rhi {
 namespace {
 
-constexpr uint32_t kMagicNumber = 0x07230203;  // §3.1 Magic Number
-constexpr size_t kHeaderWords = 5;             // §2.3 Physical Layout of a SPIR-V Module and Instruction
-constexpr uint32_t kMaxSets = 4;               // DESIGN.md: at most 4 descriptor sets (WebGPU)
+constexpr size_t kHeaderWords = 5;  // §2.3 Physical Layout of a SPIR-V Module and Instruction
+constexpr uint32_t kMaxSets = 4;    // DESIGN.md: at most 4 descriptor sets (WebGPU)
 
-namespace op {                               // §3.32 Instructions
-constexpr uint32_t entry_point = 15;         // §3.32.5 Mode-Setting Instructions
-constexpr uint32_t execution_mode = 16;      // §3.32.5
-constexpr uint32_t type_image = 25;          // §3.32.6 Type-Declaration Instructions
-constexpr uint32_t type_sampler = 26;        // §3.32.6
-constexpr uint32_t type_sampled_image = 27;  // §3.32.6
-constexpr uint32_t type_array = 28;          // §3.32.6
-constexpr uint32_t type_runtime_array = 29;  // §3.32.6
-constexpr uint32_t type_struct = 30;         // §3.32.6
-constexpr uint32_t type_pointer = 32;        // §3.32.6
-constexpr uint32_t function = 54;            // §3.32.9 Function Instructions
-constexpr uint32_t function_parameter = 55;  // §3.32.9
-constexpr uint32_t function_call = 57;       // §3.32.9
-constexpr uint32_t variable = 59;            // §3.32.8 Memory Instructions
-constexpr uint32_t load = 61;                // §3.32.8
-constexpr uint32_t sampled_image = 86;       // §3.32.10 Image Instructions
-constexpr uint32_t image_sample_first = 87;  // §3.32.10: OpImageSampleImplicitLod …
-constexpr uint32_t image_sample_last = 94;   // … OpImageSampleProjDrefExplicitLod
-constexpr uint32_t image_gather = 96;        // §3.32.10
-constexpr uint32_t image_dref_gather = 97;   // §3.32.10
-constexpr uint32_t image_query_lod = 105;    // §3.32.10
-constexpr uint32_t decorate = 71;            // §3.32.3 Annotation Instructions
-constexpr uint32_t member_decorate = 72;     // §3.32.3
-}  // namespace op
-
-namespace decoration {  // §3.20 Decoration
-constexpr uint32_t block = 2;
-constexpr uint32_t buffer_block = 3;
-constexpr uint32_t non_writable = 24;
-constexpr uint32_t non_readable = 25;
-constexpr uint32_t binding = 33;
-constexpr uint32_t descriptor_set = 34;
-}  // namespace decoration
-
-namespace storage_class {  // §3.7 Storage Class
-constexpr uint32_t uniform_constant = 0;
-constexpr uint32_t uniform = 2;
-constexpr uint32_t push_constant = 9;
-constexpr uint32_t storage_buffer = 12;
-}  // namespace storage_class
-
-namespace execution_model {  // §3.3 Execution Model
-constexpr uint32_t vertex = 0;
-constexpr uint32_t fragment = 4;
-constexpr uint32_t gl_compute = 5;
-}  // namespace execution_model
-
-constexpr uint32_t kExecutionModeLocalSize = 17;  // §3.6 Execution Mode
-
-namespace dim {  // §3.8 Dim
-constexpr uint32_t two_d = 1;
-constexpr uint32_t three_d = 2;
-constexpr uint32_t cube = 3;
-}  // namespace dim
-
-namespace image_sampled {  // §3.32.6 OpTypeImage, the Sampled operand
-constexpr uint32_t with_sampler = 1;
-constexpr uint32_t storage = 2;
-}  // namespace image_sampled
-
-// §3.11 Image Format: the SPIR-V formats volgraph has a Format for.
-constexpr std::pair<uint32_t, Format> kImageFormats[] = {
-    {1, Format::rgba32_float},     // Rgba32f
-    {2, Format::rgba16_float},     // Rgba16f
-    {3, Format::r32_float},        // R32f
-    {4, Format::rgba8_unorm},      // Rgba8
-    {6, Format::rg32_float},       // Rg32f
-    {7, Format::rg16_float},       // Rg16f
-    {8, Format::r11g11b10_float},  // R11fG11fB10f
-    {9, Format::r16_float},        // R16f
-    {15, Format::r8_unorm},        // R8
-    {33, Format::r32_uint},        // R32ui
-};
+// ---- The word stream ---------------------------------------------------------------
 
 // One instruction: its opcode and the words after the first.
 struct Instruction {
@@ -107,10 +38,10 @@ uint32_t operand(const Instruction& instruction, size_t index) {
   return instruction.operands[index];
 }
 
-// §2.3: five header words, then instructions whose first word holds the word count
-// (high 16 bits) and the opcode (low 16 bits).
+// §2.3: five header words, then instructions whose first word holds the word count (high
+// 16 bits) and the opcode (low 16 bits). SPIRV-Cross checks this too, but does not say where.
 std::vector<Instruction> parse_instructions(std::span<const uint32_t> spirv) {
-  if (spirv.size() < kHeaderWords || spirv[0] != kMagicNumber) {
+  if (spirv.size() < kHeaderWords || spirv[0] != SpvMagicNumber) {
     throw std::runtime_error("SPIR-V: not a SPIR-V module (no header or magic number)");
   }
   std::vector<Instruction> instructions;
@@ -125,144 +56,221 @@ std::vector<Instruction> parse_instructions(std::span<const uint32_t> spirv) {
   return instructions;
 }
 
-struct Decorations {
-  std::optional<uint32_t> set;
-  std::optional<uint32_t> binding;
-  bool block = false;
-  bool buffer_block = false;
-  bool non_writable = false;
-  bool non_readable = false;
-};
+// ---- Filtering: which textures and samplers some instruction samples through ----------
+// Hand-written because SPIRV-Cross cannot tell: its combined image samplers
+// (spvc_compiler_build_combined_image_samplers) pair a texture with a sampler wherever an
+// OpSampledImage joins them, and texelFetch(sampler2D(t, s), …) joins them too
+// (OpSampledImage, then OpImage, then OpImageFetch). So this scan starts from the sampling
+// instructions and follows their sampled image back to the variables it is made of.
 
-// What reflection needs of one module.
-struct Module {
-  std::vector<uint32_t> execution_models;                                 // of its entry points
-  std::unordered_map<uint32_t, Decorations> decorations;                  // by target id
-  std::unordered_map<uint32_t, std::set<uint32_t>> non_writable_members;  // struct id → member indices
-  std::unordered_map<uint32_t, Instruction> types;                        // result id → declaration
-  std::vector<Instruction> variables;
-  // Texture and sampler variables some instruction samples through (filters with).
-  std::unordered_map<uint32_t, uint32_t> loaded_from;                          // OpLoad result → variable
-  std::unordered_map<uint32_t, std::pair<uint32_t, uint32_t>> sampled_images;  // result → image, sampler loads
-  std::set<uint32_t> sampled_through;                                          // OpSampledImage results sampled
-  std::set<uint32_t> filtered_variables;
-  // Textures and samplers handed to functions (by pointer): each parameter's function and
-  // position, and every call's arguments, to follow a parameter back to its variables.
-  uint32_t current_function = 0;
-  std::unordered_map<uint32_t, std::pair<uint32_t, size_t>> parameters;      // parameter → function, index
-  std::unordered_map<uint32_t, size_t> parameter_counts;                     // function → parameters so far
-  std::unordered_map<uint32_t, std::vector<std::vector<uint32_t>>> calls;    // function → each call's arguments
-};
-
-bool is_type_declaration(uint32_t opcode) {
+// §3.32.10: the instructions that sample (filter) through a sampled image, their operand 2.
+bool samples_through(uint32_t opcode) {
   switch (opcode) {
-    case op::type_image:
-    case op::type_sampler:
-    case op::type_sampled_image:
-    case op::type_array:
-    case op::type_runtime_array:
-    case op::type_struct:
-    case op::type_pointer: return true;
+    case SpvOpImageSampleImplicitLod:
+    case SpvOpImageSampleExplicitLod:
+    case SpvOpImageSampleDrefImplicitLod:
+    case SpvOpImageSampleDrefExplicitLod:
+    case SpvOpImageSampleProjImplicitLod:
+    case SpvOpImageSampleProjExplicitLod:
+    case SpvOpImageSampleProjDrefImplicitLod:
+    case SpvOpImageSampleProjDrefExplicitLod:
+    case SpvOpImageGather:
+    case SpvOpImageDrefGather:
+    case SpvOpImageQueryLod:
+    case SpvOpImageSparseSampleImplicitLod:
+    case SpvOpImageSparseSampleExplicitLod:
+    case SpvOpImageSparseSampleDrefImplicitLod:
+    case SpvOpImageSparseSampleDrefExplicitLod:
+    case SpvOpImageSparseGather:
+    case SpvOpImageSparseDrefGather: return true;
     default: return false;
   }
 }
 
-// OpDecorate: Target, Decoration, then the decoration's literals.
-void record_decoration(Module& module, const Instruction& decorate) {
-  Decorations& target = module.decorations[operand(decorate, 0)];
-  switch (operand(decorate, 1)) {
-    case decoration::descriptor_set: target.set = operand(decorate, 2); return;
-    case decoration::binding: target.binding = operand(decorate, 2); return;
-    case decoration::block: target.block = true; return;
-    case decoration::buffer_block: target.buffer_block = true; return;
-    case decoration::non_writable: target.non_writable = true; return;
-    case decoration::non_readable: target.non_readable = true; return;
-    default: return;
-  }
-}
+struct FunctionCall {
+  uint32_t function = 0;
+  std::span<const uint32_t> arguments;
+};
 
-// OpMemberDecorate: Structure Type, Member, Decoration, ...
-void record_member_decoration(Module& module, const Instruction& decorate) {
-  if (operand(decorate, 2) != decoration::non_writable) return;
-  module.non_writable_members[operand(decorate, 0)].insert(operand(decorate, 1));
-}
+// What the scan collects: where each id's value comes from (an OpLoad's result from its
+// pointer, an OpSampledImage's from its image and its sampler), each function's parameters
+// in order, every call, and the sampled images that some instruction samples through.
+struct SamplingScan {
+  std::unordered_map<uint32_t, std::vector<uint32_t>> sources;
+  std::unordered_map<uint32_t, std::vector<uint32_t>> parameters;
+  std::vector<FunctionCall> calls;
+  std::vector<uint32_t> sampled;
+  uint32_t current_function = 0;
+};
 
-// Instructions that sample through an OpSampledImage (its operand 2): they filter.
-bool samples_with_filter(uint32_t opcode) {
-  const bool sample = opcode >= op::image_sample_first && opcode <= op::image_sample_last;
-  return sample || opcode == op::image_gather || opcode == op::image_dref_gather || opcode == op::image_query_lod;
-}
-
-void record(Module& module, const Instruction& instruction) {
-  if (is_type_declaration(instruction.opcode)) {
-    module.types.emplace(operand(instruction, 0), instruction);
-    return;
-  }
-  if (samples_with_filter(instruction.opcode)) {
-    module.sampled_through.insert(operand(instruction, 2));
-    return;
-  }
+// Operands (§3.32.8, §3.32.9, §3.32.10): OpFunction: Result Type, Result, …;
+// OpFunctionParameter: Result Type, Result; OpFunctionCall: Result Type, Result, Function,
+// Arguments…; OpLoad: Result Type, Result, Pointer; OpSampledImage: Result Type, Result,
+// Image, Sampler; a sampling instruction: Result Type, Result, Sampled Image, ….
+void record(SamplingScan& scan, const Instruction& instruction) {
   switch (instruction.opcode) {
-    case op::entry_point: module.execution_models.push_back(operand(instruction, 0)); return;
-    case op::decorate: record_decoration(module, instruction); return;
-    case op::member_decorate: record_member_decoration(module, instruction); return;
-    case op::variable: module.variables.push_back(instruction); return;
-    case op::load: module.loaded_from[operand(instruction, 1)] = operand(instruction, 2); return;  // Result, Pointer
-    case op::function: module.current_function = operand(instruction, 1); return;  // Result Type, Result, …
-    case op::function_parameter:  // Result Type, Result
-      module.parameters[operand(instruction, 1)] = {module.current_function, module.parameter_counts[module.current_function]++};
+    case SpvOpFunction: scan.current_function = operand(instruction, 1); return;
+    case SpvOpFunctionParameter: scan.parameters[scan.current_function].push_back(operand(instruction, 1)); return;
+    case SpvOpFunctionCall:
+      scan.calls.push_back({operand(instruction, 2), instruction.operands.subspan(3)});
       return;
-    case op::function_call:  // Result Type, Result, Function, Arguments…
-      module.calls[operand(instruction, 2)].emplace_back(instruction.operands.begin() + 3, instruction.operands.end());
+    case SpvOpLoad: scan.sources[operand(instruction, 1)].push_back(operand(instruction, 2)); return;
+    case SpvOpSampledImage:
+      scan.sources[operand(instruction, 1)] = {operand(instruction, 2), operand(instruction, 3)};
       return;
-    case op::sampled_image:  // Result Type, Result, Image, Sampler
-      module.sampled_images[operand(instruction, 1)] = {operand(instruction, 2), operand(instruction, 3)};
+    default:
+      if (samples_through(instruction.opcode)) scan.sampled.push_back(operand(instruction, 2));
       return;
-    default: return;
   }
 }
 
-// The variables a pointer may be: itself, or — a function's parameter — whatever every
-// call passes there, followed through nested calls.
-void add_variables_behind(Module& module, uint32_t pointer, std::set<uint32_t>& visited) {
-  if (!visited.insert(pointer).second) return;
-  const auto parameter = module.parameters.find(pointer);
-  if (parameter == module.parameters.end()) {
-    module.filtered_variables.insert(pointer);
-    return;
-  }
-  const auto [function, index] = parameter->second;
-  for (const std::vector<uint32_t>& arguments : module.calls[function]) {
-    if (index < arguments.size()) add_variables_behind(module, arguments[index], visited);
+// A parameter's value comes from every argument a call passes there (calls may come
+// before the function they call, so this runs after the scan).
+void add_parameter_sources(SamplingScan& scan) {
+  for (const FunctionCall& call : scan.calls) {
+    const std::vector<uint32_t>& parameters = scan.parameters[call.function];
+    const size_t count = std::min(parameters.size(), call.arguments.size());
+    for (size_t i = 0; i < count; ++i) scan.sources[parameters[i]].push_back(call.arguments[i]);
   }
 }
 
-// The texture and sampler variables behind every sampled image some instruction samples.
-void find_filtered_variables(Module& module) {
-  std::set<uint32_t> visited;
-  auto add_loaded = [&](uint32_t loaded) {
-    const auto found = module.loaded_from.find(loaded);
-    if (found != module.loaded_from.end()) add_variables_behind(module, found->second, visited);
-  };
-  for (const uint32_t sampled : module.sampled_through) {
-    const auto found = module.sampled_images.find(sampled);
-    if (found == module.sampled_images.end()) continue;
-    add_loaded(found->second.first);
-    add_loaded(found->second.second);
+// Every id some sampling instruction's sampled image is made of, followed back through
+// loads, OpSampledImage and function parameters: the texture and sampler variables among
+// them are the filtered ones.
+std::set<uint32_t> ids_sampled_through(std::span<const Instruction> instructions) {
+  SamplingScan scan;
+  for (const Instruction& instruction : instructions) record(scan, instruction);
+  add_parameter_sources(scan);
+  std::set<uint32_t> reached;
+  std::vector<uint32_t> pending = scan.sampled;
+  while (!pending.empty()) {
+    const uint32_t id = pending.back();
+    pending.pop_back();
+    if (!reached.insert(id).second) continue;
+    const auto found = scan.sources.find(id);
+    if (found != scan.sources.end()) pending.insert(pending.end(), found->second.begin(), found->second.end());
   }
+  return reached;
 }
 
-Module read_module(std::span<const uint32_t> spirv) {
-  Module module;
-  for (const Instruction& instruction : parse_instructions(spirv)) record(module, instruction);
-  find_filtered_variables(module);
-  return module;
-}
+// ---- One module, parsed by SPIRV-Cross ----------------------------------------------
 
-Decorations decorations_of(const Module& module, uint32_t id) {
-  const auto found = module.decorations.find(id);
-  return found == module.decorations.end() ? Decorations{} : found->second;
-}
+struct ContextDeleter {
+  void operator()(spvc_context context) const { spvc_context_destroy(context); }
+};
+
+// A module's instructions (framing checked) and a reflection-only SPIRV-Cross compiler
+// over it. The context owns everything SPIRV-Cross hands out: the resource lists and names
+// stay valid while the Module lives. Throws std::runtime_error where SPIRV-Cross fails.
+class Module {
+ public:
+  explicit Module(std::span<const uint32_t> spirv) : instructions_(parse_instructions(spirv)) {
+    spvc_context context = nullptr;
+    if (spvc_context_create(&context) != SPVC_SUCCESS) {
+      throw std::runtime_error("SPIR-V: cannot create a SPIRV-Cross context");
+    }
+    context_.reset(context);
+    spvc_parsed_ir ir = nullptr;
+    check(spvc_context_parse_spirv(context, spirv.data(), spirv.size(), &ir));
+    check(spvc_context_create_compiler(context, SPVC_BACKEND_NONE, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler_));
+    check(spvc_compiler_create_shader_resources(compiler_, &resources_));
+  }
+
+  std::span<const Instruction> instructions() const { return instructions_; }
+
+  // Every declared resource of one SPIRV-Cross kind, used by the entry point or not.
+  std::span<const spvc_reflected_resource> resources(spvc_resource_type type) const {
+    const spvc_reflected_resource* list = nullptr;
+    size_t count = 0;
+    check(spvc_resources_get_resource_list_for_type(resources_, type, &list, &count));
+    return {list, count};
+  }
+
+  std::span<const spvc_entry_point> entry_points() const {
+    const spvc_entry_point* entries = nullptr;
+    size_t count = 0;
+    check(spvc_compiler_get_entry_points(compiler_, &entries, &count));
+    return {entries, count};
+  }
+
+  // Reflection of execution modes (and of which variables are used) is per entry point.
+  void use_entry_point(const spvc_entry_point& entry) {
+    check(spvc_compiler_set_entry_point(compiler_, entry.name, entry.execution_model));
+  }
+
+  bool has_execution_mode(SpvExecutionMode mode) const {
+    const SpvExecutionMode* modes = nullptr;
+    size_t count = 0;
+    check(spvc_compiler_get_execution_modes(compiler_, &modes, &count));
+    return std::ranges::count(std::span(modes, count), mode) > 0;
+  }
+
+  uint32_t execution_mode_argument(SpvExecutionMode mode, uint32_t index) const {
+    return spvc_compiler_get_execution_mode_argument_by_index(compiler_, mode, index);
+  }
+
+  spvc_type type(spvc_type_id id) const { return spvc_compiler_get_type_handle(compiler_, id); }
+
+  bool has_decoration(SpvId id, SpvDecoration decoration) const {
+    return spvc_compiler_has_decoration(compiler_, id, decoration) == SPVC_TRUE;
+  }
+
+  uint32_t decoration(SpvId id, SpvDecoration decoration) const {
+    return spvc_compiler_get_decoration(compiler_, id, decoration);
+  }
+
+  // A buffer variable's decorations, with those that all of its block's members carry.
+  bool buffer_block_has(spvc_variable_id variable, SpvDecoration decoration) const {
+    const SpvDecoration* decorations = nullptr;
+    size_t count = 0;
+    check(spvc_compiler_get_buffer_block_decorations(compiler_, variable, &decorations, &count));
+    return std::ranges::count(std::span(decorations, count), decoration) > 0;
+  }
+
+  uint64_t struct_size(spvc_type block) const {
+    size_t size = 0;
+    check(spvc_compiler_get_declared_struct_size(compiler_, block, &size));
+    return size;
+  }
+
+  uint64_t member_size(spvc_type block, uint32_t member) const {
+    size_t size = 0;
+    check(spvc_compiler_get_declared_struct_member_size(compiler_, block, member, &size));
+    return size;
+  }
+
+  uint64_t member_offset(spvc_type block, uint32_t member) const {
+    unsigned offset = 0;
+    check(spvc_compiler_type_struct_member_offset(compiler_, block, member, &offset));
+    return offset;
+  }
+
+  // "" when the module does not name it.
+  std::string member_name(spvc_type_id block, uint32_t member) const {
+    const char* name = spvc_compiler_get_member_name(compiler_, block, member);
+    return name == nullptr ? "" : name;
+  }
+
+  // The specialisation constants a compute shader's workgroup size comes from (id 0: a literal).
+  std::array<spvc_specialization_constant, 3> workgroup_size_constants() const {
+    std::array<spvc_specialization_constant, 3> constants{};
+    spvc_compiler_get_work_group_size_specialization_constants(compiler_, &constants[0], &constants[1], &constants[2]);
+    return constants;
+  }
+
+ private:
+  void check(spvc_result result) const {
+    if (result == SPVC_SUCCESS) return;
+    throw std::runtime_error(std::string("SPIR-V: ") + spvc_context_get_last_error_string(context_.get()));
+  }
+
+  std::vector<Instruction> instructions_;
+  std::unique_ptr<spvc_context_s, ContextDeleter> context_;
+  spvc_compiler compiler_ = nullptr;
+  spvc_resources resources_ = nullptr;
+};
+
+// ---- Names for error messages -------------------------------------------------------
 
 constexpr std::pair<uint32_t, std::string_view> kStageNames[] = {
     {shader_stage::vertex, "vertex"}, {shader_stage::fragment, "fragment"}, {shader_stage::compute, "compute"}};
@@ -299,6 +307,15 @@ std::string describe(const LayoutEntry& entry) {
   return text;
 }
 
+// "uniform block Params (48 bytes: modes at 0, lobes at 16, volumetric at 32)".
+std::string describe(const UniformBlockLayout& block) {
+  std::string text = "uniform block " + block.name + " (" + std::to_string(block.size) + " bytes";
+  for (size_t i = 0; i < block.members.size(); ++i) {
+    text += (i == 0 ? ": " : ", ") + block.members[i].name + " at " + std::to_string(block.members[i].offset);
+  }
+  return text + ")";
+}
+
 [[noreturn]] void fail(std::string_view label, uint32_t stage, const std::string& reason) {
   throw std::runtime_error(std::string(label) + ": " + stage_names(stage) + " shader: " + reason);
 }
@@ -315,84 +332,121 @@ struct Where {
   }
 };
 
-const Instruction& type_of(const Module& module, uint32_t id, const Where& where) {
-  const auto found = module.types.find(id);
-  if (found == module.types.end()) where.fail("type %" + std::to_string(id) + " is not a resource type");
-  return found->second;
+// "conflict: set 1, binding 2 declared differently: vertex shader: uniform buffer; fragment
+// shader: sampled texture texture2d".
+[[noreturn]] void fail_conflict(std::string_view label, uint32_t set, uint32_t binding, uint32_t first_stages,
+                                const std::string& first, uint32_t second_stages, const std::string& second) {
+  throw std::runtime_error(std::string(label) + ": set " + std::to_string(set) + ", binding " +
+                           std::to_string(binding) + " declared differently: " + stage_names(first_stages) +
+                           " shader: " + first + "; " + stage_names(second_stages) + " shader: " + second);
 }
 
-// OpTypePointer: Result, Storage Class, Type.
-const Instruction& pointee_of(const Module& module, uint32_t pointer_id, const Where& where) {
-  const Instruction& pointer = type_of(module, pointer_id, where);
-  if (pointer.opcode != op::type_pointer) where.fail("variable type is not a pointer");
-  return type_of(module, operand(pointer, 2), where);
+// ---- One stage ------------------------------------------------------------------------
+
+SpvExecutionModel execution_model_of(uint32_t stage, std::string_view label) {
+  switch (stage) {
+    case shader_stage::vertex: return SpvExecutionModelVertex;
+    case shader_stage::fragment: return SpvExecutionModelFragment;
+    case shader_stage::compute: return SpvExecutionModelGLCompute;
+    default: fail(label, stage, "stage bits " + std::to_string(stage) + " are not one shader_stage bit");
+  }
 }
 
-ResourceKind image_kind(uint32_t image_dim, const Where& where) {
-  if (image_dim == dim::two_d) return ResourceKind::texture2d;
-  if (image_dim == dim::three_d) return ResourceKind::texture3d;
-  if (image_dim == dim::cube) where.fail("cube textures have no ResourceKind");
-  where.fail("image Dim " + std::to_string(image_dim) + " is neither 2D nor 3D");
+// Parses one stage's module and makes its entry point of that stage the one reflected.
+Module read_stage(const ShaderStageCode& code, std::string_view label) {
+  Module module(code.spirv);
+  const SpvExecutionModel model = execution_model_of(code.stage, label);
+  for (const spvc_entry_point& entry : module.entry_points()) {
+    if (entry.execution_model != model) continue;
+    module.use_entry_point(entry);
+    return module;
+  }
+  fail(label, code.stage, "the module has no entry point of that stage");
 }
 
-Format storage_format(uint32_t image_format, const Where& where) {
-  const auto* known = std::ranges::find(kImageFormats, image_format, &std::pair<uint32_t, Format>::first);
+// A resource's set and binding, checked: both declared, the set below kMaxSets, no array.
+Where where_of(const Module& module, const spvc_reflected_resource& resource, uint32_t stage, std::string_view label) {
+  const bool bound = module.has_decoration(resource.id, SpvDecorationDescriptorSet) &&
+                     module.has_decoration(resource.id, SpvDecorationBinding);
+  if (!bound) fail(label, stage, "a resource without DescriptorSet and Binding");
+  const Where where{label, stage, module.decoration(resource.id, SpvDecorationDescriptorSet),
+                    module.decoration(resource.id, SpvDecorationBinding)};
+  if (where.set >= kMaxSets) where.fail("at most " + std::to_string(kMaxSets) + " sets (0 to 3)");
+  if (spvc_type_get_num_array_dimensions(module.type(resource.type_id)) > 0) {
+    where.fail("arrays of resources are not supported: one resource per binding");
+  }
+  return where;
+}
+
+// ---- Bind group layout entries -------------------------------------------------------
+
+// §3.11 Image Format: the SPIR-V formats volgraph has a Format for.
+constexpr std::pair<SpvImageFormat, Format> kImageFormats[] = {
+    {SpvImageFormatRgba32f, Format::rgba32_float},        {SpvImageFormatRgba16f, Format::rgba16_float},
+    {SpvImageFormatR32f, Format::r32_float},              {SpvImageFormatRgba8, Format::rgba8_unorm},
+    {SpvImageFormatRg32f, Format::rg32_float},            {SpvImageFormatRg16f, Format::rg16_float},
+    {SpvImageFormatR11fG11fB10f, Format::r11g11b10_float}, {SpvImageFormatR16f, Format::r16_float},
+    {SpvImageFormatR8, Format::r8_unorm},                 {SpvImageFormatR32ui, Format::r32_uint},
+};
+
+ResourceKind image_kind(SpvDim dim, const Where& where) {
+  if (dim == SpvDim2D) return ResourceKind::texture2d;
+  if (dim == SpvDim3D) return ResourceKind::texture3d;
+  if (dim == SpvDimCube) where.fail("cube textures have no ResourceKind");
+  where.fail("image Dim " + std::to_string(dim) + " is neither 2D nor 3D");
+}
+
+Format storage_format(SpvImageFormat image_format, const Where& where) {
+  const auto* known = std::ranges::find(kImageFormats, image_format, &std::pair<SpvImageFormat, Format>::first);
   const bool mapped = known != std::end(kImageFormats);
   if (mapped && format_info(known->second).storage_capable) return known->second;
   where.fail("storage image format " + std::to_string(image_format) +
              " (SPIR-V Image Format) is not a storage format of both backends");
 }
 
-// OpTypeImage: Result, Sampled Type, Dim, Depth, Arrayed, MS, Sampled, Image Format.
-LayoutEntry image_entry(const Instruction& image, const Where& where) {
-  if (operand(image, 4) != 0) where.fail("arrayed images are not supported");
-  if (operand(image, 5) != 0) where.fail("multisampled images are not supported");
-  const ResourceKind kind = image_kind(operand(image, 2), where);
-  const uint32_t sampled = operand(image, 6);
-  if (sampled == image_sampled::with_sampler) return {.type = BindingType::sampled_texture, .texture_kind = kind};
-  if (sampled != image_sampled::storage) where.fail("image is neither sampled nor storage (Sampled 0)");
-  return {.type = BindingType::storage_texture,
-          .texture_kind = kind,
-          .storage_format = storage_format(operand(image, 7), where)};
+// A separate texture or a storage image: 2D or 3D, neither arrayed nor multisampled.
+LayoutEntry image_entry(spvc_type image, BindingType type, const Where& where) {
+  if (spvc_type_get_image_arrayed(image)) where.fail("arrayed images are not supported");
+  if (spvc_type_get_image_multisampled(image)) where.fail("multisampled images are not supported");
+  LayoutEntry entry{.type = type, .texture_kind = image_kind(spvc_type_get_image_dimension(image), where)};
+  if (type == BindingType::storage_texture) {
+    entry.storage_format = storage_format(spvc_type_get_image_storage_format(image), where);
+  }
+  return entry;
 }
 
-// OpTypeStruct: Result, then one type per member.
-bool all_members_non_writable(const Module& module, const Instruction& block) {
-  const size_t member_count = block.operands.size() - 1;
-  const auto found = module.non_writable_members.find(operand(block, 0));
-  return member_count > 0 && found != module.non_writable_members.end() && found->second.size() == member_count;
-}
-
-// Uniform + Block: a uniform buffer. StorageBuffer + Block, or Uniform + BufferBlock
-// (SPIR-V before 1.3, §3.20): a storage buffer, read-only when it or all members are NonWritable.
-LayoutEntry buffer_entry(const Module& module, const Instruction& block, uint32_t storage, bool non_writable,
-                         const Where& where) {
-  const Decorations decorations = decorations_of(module, operand(block, 0));
-  const bool is_storage = storage == storage_class::storage_buffer || decorations.buffer_block;
-  if (!is_storage && !decorations.block) where.fail("uniform struct without the Block decoration");
-  if (!is_storage) return {.type = BindingType::uniform_buffer};
-  const bool read_only = non_writable || all_members_non_writable(module, block);
+// A storage buffer is read-only when the variable, or every member of its block, is NonWritable.
+LayoutEntry storage_buffer_entry(const Module& module, const spvc_reflected_resource& resource) {
+  const bool read_only = module.buffer_block_has(resource.id, SpvDecorationNonWritable);
   return {.type = read_only ? BindingType::read_only_storage_buffer : BindingType::storage_buffer};
 }
 
-LayoutEntry resource_entry(const Module& module, const Instruction& type, uint32_t storage, bool non_writable,
+// The entry of one resource of SPIRV-Cross's kind `kind`; what the rhi cannot express throws.
+LayoutEntry resource_entry(const Module& module, spvc_resource_type kind, const spvc_reflected_resource& resource,
                            const Where& where) {
-  switch (type.opcode) {
-    case op::type_sampler: return {.type = BindingType::sampler};
-    case op::type_image: return image_entry(type, where);
-    case op::type_struct: return buffer_entry(module, type, storage, non_writable, where);
-    case op::type_sampled_image:
+  switch (kind) {
+    case SPVC_RESOURCE_TYPE_UNIFORM_BUFFER: return {.type = BindingType::uniform_buffer};
+    case SPVC_RESOURCE_TYPE_STORAGE_BUFFER: return storage_buffer_entry(module, resource);
+    case SPVC_RESOURCE_TYPE_SEPARATE_SAMPLERS: return {.type = BindingType::sampler};
+    case SPVC_RESOURCE_TYPE_SEPARATE_IMAGE:
+      return image_entry(module.type(resource.base_type_id), BindingType::sampled_texture, where);
+    case SPVC_RESOURCE_TYPE_STORAGE_IMAGE:
+      return image_entry(module.type(resource.base_type_id), BindingType::storage_texture, where);
+    case SPVC_RESOURCE_TYPE_SAMPLED_IMAGE:
       where.fail("combined image samplers are not supported: declare a texture and a sampler");
-    case op::type_array:
-    case op::type_runtime_array: where.fail("arrays of resources are not supported: one resource per binding");
-    default: where.fail("unsupported resource type (opcode " + std::to_string(type.opcode) + ")");
+    case SPVC_RESOURCE_TYPE_SUBPASS_INPUT: where.fail("subpass inputs are not supported");
+    case SPVC_RESOURCE_TYPE_ATOMIC_COUNTER: where.fail("atomic counters are not supported");
+    case SPVC_RESOURCE_TYPE_ACCELERATION_STRUCTURE: where.fail("acceleration structures are not supported");
+    default: where.fail("unsupported resource (SPIRV-Cross resource type " + std::to_string(kind) + ")");
   }
 }
 
-bool is_resource_storage(uint32_t storage) {
-  return storage == storage_class::uniform_constant || storage == storage_class::uniform ||
-         storage == storage_class::storage_buffer;
-}
+// The SPIRV-Cross resource kinds that take a binding (push constants are rejected before).
+constexpr spvc_resource_type kBoundResourceKinds[] = {
+    SPVC_RESOURCE_TYPE_UNIFORM_BUFFER,  SPVC_RESOURCE_TYPE_STORAGE_BUFFER,    SPVC_RESOURCE_TYPE_STORAGE_IMAGE,
+    SPVC_RESOURCE_TYPE_SEPARATE_IMAGE,  SPVC_RESOURCE_TYPE_SEPARATE_SAMPLERS, SPVC_RESOURCE_TYPE_SAMPLED_IMAGE,
+    SPVC_RESOURCE_TYPE_SUBPASS_INPUT,   SPVC_RESOURCE_TYPE_ATOMIC_COUNTER,    SPVC_RESOURCE_TYPE_ACCELERATION_STRUCTURE,
+};
 
 // A resource variable's set and its entry (visible to `stage`).
 struct DeclaredBinding {
@@ -400,39 +454,31 @@ struct DeclaredBinding {
   LayoutEntry entry;
 };
 
-// OpVariable: Result Type, Result, Storage Class. Not a resource: nullopt.
-std::optional<DeclaredBinding> reflect_variable(const Module& module, const Instruction& variable, uint32_t stage,
-                                                std::string_view label) {
-  const uint32_t storage = operand(variable, 2);
-  if (storage == storage_class::push_constant)
-    fail(label, stage, "push constants are not supported: use a uniform buffer");
-  if (!is_resource_storage(storage)) return std::nullopt;
-  const Decorations decorations = decorations_of(module, operand(variable, 1));
-  if (!decorations.set || !decorations.binding) fail(label, stage, "a resource without DescriptorSet and Binding");
-  const Where where{label, stage, *decorations.set, *decorations.binding};
-  if (where.set >= kMaxSets) where.fail("at most " + std::to_string(kMaxSets) + " sets (0 to 3)");
-  const Instruction& type = pointee_of(module, operand(variable, 0), where);
-  LayoutEntry entry = resource_entry(module, type, storage, decorations.non_writable, where);
+DeclaredBinding declared_binding(const Module& module, spvc_resource_type kind, const spvc_reflected_resource& resource,
+                                 const std::set<uint32_t>& sampled_through, uint32_t stage, std::string_view label) {
+  const Where where = where_of(module, resource, stage, label);
+  LayoutEntry entry = resource_entry(module, kind, resource, where);
   entry.binding = where.binding;
   entry.visibility = stage;
-  entry.filtered = module.filtered_variables.contains(operand(variable, 1));
-  if (decorations.non_writable) entry.storage_access = StorageAccess::read_only;
-  if (decorations.non_readable) entry.storage_access = StorageAccess::write_only;
-  return DeclaredBinding{where.set, entry};
+  entry.filtered = sampled_through.contains(resource.id);
+  if (module.has_decoration(resource.id, SpvDecorationNonWritable)) entry.storage_access = StorageAccess::read_only;
+  if (module.has_decoration(resource.id, SpvDecorationNonReadable)) entry.storage_access = StorageAccess::write_only;
+  return {where.set, entry};
 }
 
-uint32_t execution_model_of(uint32_t stage, std::string_view label) {
-  switch (stage) {
-    case shader_stage::vertex: return execution_model::vertex;
-    case shader_stage::fragment: return execution_model::fragment;
-    case shader_stage::compute: return execution_model::gl_compute;
-    default: fail(label, stage, "stage bits " + std::to_string(stage) + " are not one shader_stage bit");
+// Every resource one stage declares, push constants rejected.
+std::vector<DeclaredBinding> declared_bindings(const Module& module, uint32_t stage, std::string_view label) {
+  if (!module.resources(SPVC_RESOURCE_TYPE_PUSH_CONSTANT).empty()) {
+    fail(label, stage, "push constants are not supported: use a uniform buffer");
   }
-}
-
-void check_entry_point(const Module& module, uint32_t stage, std::string_view label) {
-  if (std::ranges::count(module.execution_models, execution_model_of(stage, label)) > 0) return;
-  fail(label, stage, "the module has no entry point of that stage");
+  const std::set<uint32_t> sampled_through = ids_sampled_through(module.instructions());
+  std::vector<DeclaredBinding> bindings;
+  for (const spvc_resource_type kind : kBoundResourceKinds) {
+    for (const spvc_reflected_resource& resource : module.resources(kind)) {
+      bindings.push_back(declared_binding(module, kind, resource, sampled_through, stage, label));
+    }
+  }
+  return bindings;
 }
 
 bool same_resource(const LayoutEntry& a, const LayoutEntry& b) {
@@ -448,23 +494,12 @@ void merge(MergedBindings& merged, const DeclaredBinding& declared, std::string_
   LayoutEntry& entry = found->second;
   if (inserted) return;
   if (!same_resource(entry, declared.entry)) {
-    throw std::runtime_error(std::string(label) + ": set " + std::to_string(declared.set) + ", binding " +
-                             std::to_string(entry.binding) + " declared differently: " + stage_names(entry.visibility) +
-                             " shader: " + describe(entry) + "; " + stage_names(declared.entry.visibility) +
-                             " shader: " + describe(declared.entry));
+    fail_conflict(label, declared.set, entry.binding, entry.visibility, describe(entry), declared.entry.visibility,
+                  describe(declared.entry));
   }
   entry.visibility |= declared.entry.visibility;
   entry.filtered = entry.filtered || declared.entry.filtered;
   if (entry.storage_access != declared.entry.storage_access) entry.storage_access = StorageAccess::read_write;
-}
-
-void merge_stage(MergedBindings& merged, const ShaderStageCode& code, std::string_view label) {
-  const Module module = read_module(code.spirv);
-  check_entry_point(module, code.stage, label);
-  for (const Instruction& variable : module.variables) {
-    const std::optional<DeclaredBinding> declared = reflect_variable(module, variable, code.stage, label);
-    if (declared) merge(merged, *declared, label);
-  }
 }
 
 // The map is ordered by set, then binding: entries arrive sorted.
@@ -479,22 +514,122 @@ std::vector<BindGroupLayoutDesc> layouts_of(const MergedBindings& merged, std::s
   return layouts;
 }
 
+// ---- Uniform block layouts ------------------------------------------------------------
+
+// "member 2" where the module does not name it.
+std::string member_name_or_index(const Module& module, spvc_type_id block, uint32_t member) {
+  std::string name = module.member_name(block, member);
+  return name.empty() ? "member " + std::to_string(member) : name;
+}
+
+// One uniform buffer's block, as SPIR-V lays it out (Offset decorations; std140 from glslang).
+UniformBlockLayout block_layout(const Module& module, const spvc_reflected_resource& resource, const Where& where) {
+  const spvc_type block = module.type(resource.base_type_id);
+  UniformBlockLayout layout{.set = where.set,
+                            .binding = where.binding,
+                            .name = resource.name == nullptr ? "" : resource.name,
+                            .size = module.struct_size(block),
+                            .members = {}};
+  const uint32_t member_count = spvc_type_get_num_member_types(block);
+  for (uint32_t member = 0; member < member_count; ++member) {
+    layout.members.push_back({.name = member_name_or_index(module, resource.base_type_id, member),
+                              .offset = module.member_offset(block, member),
+                              .size = module.member_size(block, member)});
+  }
+  return layout;
+}
+
+bool same_layout(const UniformBlockLayout& a, const UniformBlockLayout& b) {
+  auto same_member = [](const UniformMember& x, const UniformMember& y) {
+    return x.name == y.name && x.offset == y.offset && x.size == y.size;
+  };
+  return a.name == b.name && a.size == b.size && std::ranges::equal(a.members, b.members, same_member);
+}
+
+struct StagedBlock {
+  UniformBlockLayout layout;
+  uint32_t stages = 0;
+};
+
+// Adds one stage's block; a block another stage declared already must be laid out alike.
+void merge_block(std::map<BindingKey, StagedBlock>& merged, UniformBlockLayout layout, uint32_t stage,
+                 std::string_view label) {
+  const BindingKey key{layout.set, layout.binding};
+  const auto [found, inserted] = merged.try_emplace(key, StagedBlock{layout, stage});
+  if (inserted) return;
+  if (!same_layout(found->second.layout, layout)) {
+    fail_conflict(label, key.first, key.second, found->second.stages, describe(found->second.layout), stage,
+                  describe(layout));
+  }
+  found->second.stages |= stage;
+}
+
+// "Params (set 0, binding 5)".
+std::string block_title(const UniformBlockLayout& block) {
+  return block.name + " (set " + std::to_string(block.set) + ", binding " + std::to_string(block.binding) + ")";
+}
+
 }  // namespace
 
 std::vector<BindGroupLayoutDesc> reflect_bind_group_layouts(std::span<const ShaderStageCode> stages,
                                                             std::string_view label) {
   MergedBindings merged;
-  for (const ShaderStageCode& code : stages) merge_stage(merged, code, label);
+  for (const ShaderStageCode& code : stages) {
+    const Module module = read_stage(code, label);
+    for (const DeclaredBinding& declared : declared_bindings(module, code.stage, label)) merge(merged, declared, label);
+  }
   return layouts_of(merged, label);
 }
 
-// OpExecutionMode: Entry Point, Mode, then the mode's literals (LocalSize: x, y, z).
 std::array<uint32_t, 3> reflect_workgroup_size(std::span<const uint32_t> spirv) {
-  for (const Instruction& instruction : parse_instructions(spirv)) {
-    if (instruction.opcode != op::execution_mode || operand(instruction, 1) != kExecutionModeLocalSize) continue;
-    return {operand(instruction, 2), operand(instruction, 3), operand(instruction, 4)};
+  const Module module(spirv);
+  if (!module.has_execution_mode(SpvExecutionModeLocalSize)) {
+    throw std::runtime_error("SPIR-V: no LocalSize execution mode with literal sizes");
   }
-  throw std::runtime_error("SPIR-V: no LocalSize execution mode with literal sizes");
+  for (const spvc_specialization_constant& constant : module.workgroup_size_constants()) {
+    if (constant.id == 0) continue;
+    throw std::runtime_error("SPIR-V: the workgroup size is given by specialisation constants (constant_id " +
+                             std::to_string(constant.constant_id) + "), not literal sizes");
+  }
+  return {module.execution_mode_argument(SpvExecutionModeLocalSize, 0),
+          module.execution_mode_argument(SpvExecutionModeLocalSize, 1),
+          module.execution_mode_argument(SpvExecutionModeLocalSize, 2)};
+}
+
+std::vector<UniformBlockLayout> reflect_uniform_blocks(std::span<const ShaderStageCode> stages,
+                                                       std::string_view label) {
+  std::map<BindingKey, StagedBlock> merged;
+  for (const ShaderStageCode& code : stages) {
+    const Module module = read_stage(code, label);
+    for (const spvc_reflected_resource& resource : module.resources(SPVC_RESOURCE_TYPE_UNIFORM_BUFFER)) {
+      const Where where = where_of(module, resource, code.stage, label);
+      merge_block(merged, block_layout(module, resource, where), code.stage, label);
+    }
+  }
+  std::vector<UniformBlockLayout> blocks;
+  for (auto& [key, staged] : merged) blocks.push_back(std::move(staged.layout));
+  return blocks;
+}
+
+void check_uniform_block(const UniformBlockLayout& block, uint64_t host_size, std::span<const uint64_t> host_offsets,
+                         std::string_view host_name) {
+  const std::string differ = "host struct " + std::string(host_name) + " does not match uniform block " +
+                             block_title(block) + ": ";
+  if (host_offsets.size() != block.members.size()) {
+    throw std::runtime_error(differ + "the block has " + std::to_string(block.members.size()) +
+                             " members, the host struct " + std::to_string(host_offsets.size()));
+  }
+  for (size_t i = 0; i < host_offsets.size(); ++i) {
+    const UniformMember& member = block.members[i];
+    if (host_offsets[i] == member.offset) continue;
+    throw std::runtime_error(differ + "member " + std::to_string(i) + " (" + member.name + ", " +
+                             std::to_string(member.size) + " bytes) is at offset " + std::to_string(member.offset) +
+                             " in the block, " + std::to_string(host_offsets[i]) + " in the host struct");
+  }
+  if (host_size != block.size) {
+    throw std::runtime_error(differ + "the block is " + std::to_string(block.size) + " bytes, the host struct " +
+                             std::to_string(host_size) + " (the sizes must be equal)");
+  }
 }
 
 }  // namespace volgraph::rhi

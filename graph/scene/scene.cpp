@@ -38,3 +38,120 @@ SceneFeatures Scene::features() const {
 }
 
 }  // namespace volgraph
+
+namespace volgraph {
+namespace {
+
+// FNV-1a over the values of a scene part, field by field (Where and names excluded:
+// they do not change what a pass computes).
+class SceneHasher {
+ public:
+  uint64_t value() const { return h_; }
+  void add(const void* data, size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < bytes; ++i) h_ = (h_ ^ p[i]) * 0x100000001b3ull;
+  }
+  void add(double v) { add(&v, sizeof v); }
+  void add(int64_t v) { add(&v, sizeof v); }
+  void add(bool v) { add(int64_t(v)); }
+  void add(const Vec3& v) { add(v.data(), sizeof(double) * 3); }
+  void add(const std::string& s) {
+    add(int64_t(s.size()));
+    add(s.data(), s.size());
+  }
+  void add(const Transform& t) {
+    add(t.translate);
+    add(t.rotate_deg);
+    add(t.scale);
+  }
+  void add(const Medium& m) {
+    add(m.sigma_s);
+    add(m.sigma_a);
+    add(m.g);
+    add(m.emission);
+  }
+
+ private:
+  uint64_t h_ = 0xcbf29ce484222325ull;
+};
+
+void hash_camera(SceneHasher& h, const Camera& c) {
+  h.add(c.position);
+  h.add(c.target);
+  h.add(c.up);
+  h.add(c.fov_y_deg);
+  h.add(c.near);
+  h.add(c.far);
+}
+
+void hash_lights(SceneHasher& h, const std::vector<Light>& lights) {
+  h.add(int64_t(lights.size()));
+  for (const Light& l : lights) {
+    h.add(int64_t(l.type));
+    h.add(l.direction);
+    h.add(l.position);
+    h.add(l.irradiance);
+    h.add(l.intensity);
+    h.add(l.inner_cone_deg);
+    h.add(l.outer_cone_deg);
+    h.add(l.cast_shadows);
+  }
+}
+
+void hash_media(SceneHasher& h, const Media& media) {
+  h.add(media.fog.has_value());
+  if (media.fog) h.add(*media.fog);
+  h.add(media.height_fog.has_value());
+  if (media.height_fog) {
+    h.add(media.height_fog->medium);
+    h.add(media.height_fog->base_height);
+    h.add(media.height_fog->falloff);
+  }
+  h.add(int64_t(media.volumes.size()));
+  for (const MediumVolume& v : media.volumes) {
+    h.add(int64_t(v.shape));
+    h.add(v.size);
+    h.add(v.transform);
+    h.add(v.medium);
+    h.add(int64_t(v.noise.octaves));
+    h.add(v.noise.scale);
+    h.add(v.noise.coverage);
+    h.add(v.noise.edge_fade);
+  }
+}
+
+void hash_geometry(SceneHasher& h, const Scene& scene) {
+  h.add(int64_t(scene.materials.size()));
+  for (const Material& m : scene.materials) {
+    h.add(m.name);
+    h.add(m.albedo);
+    h.add(m.albedo_texture);
+    h.add(m.emissive);
+    h.add(m.transmission);
+    h.add(m.ior);
+  }
+  h.add(int64_t(scene.objects.size()));
+  for (const Object& o : scene.objects) {
+    h.add(int64_t(o.shape));
+    h.add(o.size);
+    h.add(o.file);
+    h.add(o.material);
+    h.add(o.transform);
+    h.add(o.cast_shadows);
+  }
+}
+
+}  // namespace
+
+uint64_t Scene::hash(ScenePartMask parts) const {
+  SceneHasher h;
+  h.add(int64_t(parts));
+  if (parts & part_bit(ScenePart::camera)) hash_camera(h, camera);
+  if (parts & part_bit(ScenePart::lights)) hash_lights(h, lights);
+  if (parts & part_bit(ScenePart::media)) hash_media(h, media);
+  if (parts & part_bit(ScenePart::geometry)) hash_geometry(h, *this);
+  if (parts & part_bit(ScenePart::background)) h.add(background);
+  return h.value();
+}
+
+}  // namespace volgraph

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -80,7 +81,7 @@ struct HeightFog {
 };
 
 // Procedural density inside a local volume: fractal gradient noise (octaves summed at
-// doubling frequency and halving amplitude, passes/shading/noise.h defines it exactly)
+// doubling frequency and halving amplitude, physics/noise.h defines it exactly)
 // mapped to a density multiplier in [0, 1] by `coverage`, times the edge fade; the
 // multiplier scales the medium's σs, σa and emission alike. The noise lives in the
 // volume's local space (it moves, turns and scales with the volume's transform).
@@ -115,6 +116,9 @@ struct Scene {
   Media media;
 
   SceneFeatures features() const;
+  // A hash of the parts named (every value in them): equal scenes give equal hashes, and
+  // a change to any value in a part changes it (but for collisions, 1 in 2^64).
+  uint64_t hash(ScenePartMask parts) const;
   const Material* find_material(const std::string& name) const;
 };
 

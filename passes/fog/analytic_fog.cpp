@@ -1,7 +1,7 @@
 // analytic_fog: single scattering in the scene's global homogeneous fog, without shadows,
 // per pixel in closed form or by a short fixed quadrature:
 // - point lights: the airlight of Sun, Ramamoorthi, Narasimhan, Nayar 2005 with extinction
-//   and HG phase, σs·I·A (shaders/include/airlight.glsl ↔ passes/shading/airlight.h:
+//   and HG phase, σs·I·A (shaders/include/airlight.glsl ↔ physics/airlight.h:
 //   composite Gauss–Legendre, relative error ≤ 3e-5 in float where measured; the ray's
 //   distance to the light is clamped to 1e-4 m, so a light on the ray stays finite);
 // - spot lights: treated as point lights, weighted by their cone's falloff toward the ray's
@@ -24,22 +24,25 @@ std::vector<ParamProblem> check_global_fog(const PassDecl&, const Scene& scene, 
   return {{"", "analytic_fog renders the scene's global media.fog, and the scene has none"}};
 }
 
+struct AnalyticFogTable : fog::PixelFogTable {
+  AnalyticFogTable()
+      : PixelFogTable("analytic_fog",
+                      "Single scattering of point, spot and directional lights in homogeneous global fog, unshadowed (Sun et al. 2005 airlight).") {
+    decl.check_scene = check_global_fog;
+  }
+  VariantHandle airlight =
+      variant("airlight", "point and spot lights by the airlight integral with extinction; directional lights in closed form");
+  ParamHandle<std::array<double, 3>> ambient = vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the fog scatters");
+};
+
+class AnalyticFogExecution final : public fog::PixelFogExecution {
+ public:
+  explicit AnalyticFogExecution(const AnalyticFogTable& t)
+      : PixelFogExecution(t, "analytic_fog.comp", [&t](const PassSetup& s) { return fog::PixelFogInputs{.ambient = s.param(t.ambient)}; }) {}
+};
+
 }  // namespace
 
-PassDecl analytic_fog_pass() {
-  PassDecl d;
-  d.name = "analytic_fog";
-  d.kind = PassKind::compute;
-  d.doc = "Single scattering of point, spot and directional lights in homogeneous global fog, unshadowed (Sun et al. 2005 airlight).";
-  d.variants = {{"airlight", "point and spot lights by the airlight integral with extinction; directional lights in closed form"}};
-  d.params = {
-      param_vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the fog scatters"),
-  };
-  d.slots = fog::pixel_fog_slots();
-  d.needs = feature_bit(SceneFeature::medium);
-  d.check_scene = check_global_fog;
-  d.make_execution = fog::pixel_fog_execution("analytic_fog.comp", [](const PassContext& c) { return fog::PixelFogInputs{{}, fog::ambient_param(c)}; });
-  return d;
-}
+PassDecl analytic_fog_pass() { return pass_type<AnalyticFogTable, AnalyticFogExecution>(); }
 
 }  // namespace volgraph

@@ -4,22 +4,28 @@
 // shader computes its term; both use bind group 0 of the first's layout.
 #pragma once
 
+#include <array>
+
 #include "graph/execute/pass_execution.h"
-#include "passes/shading/programs.h"
+#include "passes/plumbing/programs.h"
 
 namespace volgraph::fog {
 
 class ApplyDraws {
  public:
-  // Pipelines for `color`'s format; shaders by name in shaders/.
-  void prepare(PassContext& c, const char* transmittance_fragment, const char* scattering_fragment);
+  // At setup: pipelines for the format of the pass's slot `color` (the inout the draws
+  // render onto); shaders by name in shaders/.
+  void prepare(const PassSetup& s, SlotHandle color, const char* transmittance_fragment, const char* scattering_fragment);
   bool prepared() const { return bool(attenuate_.pipeline); }
   rhi::BindGroupLayoutId layout() const { return attenuate_.layouts[0]; }
+  // Both draws' programs (to check the uniform blocks the group holds against each).
+  std::array<const plumbing::RenderProgram*, 2> programs() const { return {&attenuate_, &add_}; }
   // One render pass onto `color` (loaded), both draws with `group` at set 0.
   void record(PassContext& c, rhi::BindGroupId group) const;
 
  private:
-  shading::RenderProgram attenuate_, add_;
+  SlotHandle color_;
+  plumbing::RenderProgram attenuate_, add_;
 };
 
 }  // namespace volgraph::fog

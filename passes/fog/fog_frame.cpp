@@ -1,7 +1,7 @@
 #include "passes/fog/fog_frame.h"
 
 #include "graph/scene/scene.h"
-#include "passes/shading/camera.h"
+#include "physics/camera.h"
 
 namespace volgraph::fog {
 namespace {
@@ -26,7 +26,7 @@ std::array<double, 3> froxel_jitter(uint64_t frame) {
 }
 
 GpuViewRays pack_view_rays(const Camera& camera, Extent output) {
-  const shading::ViewRays rays = shading::view_rays(camera, double(output.width) / double(output.height));
+  const physics::ViewRays rays = physics::view_rays(camera, double(output.width) / double(output.height));
   GpuViewRays v{};
   put(v.position, rays.position, camera.near);
   put(v.forward, rays.forward, camera.far);
@@ -35,27 +35,27 @@ GpuViewRays pack_view_rays(const Camera& camera, Extent output) {
   return v;
 }
 
-GpuFogFrame make_fog_frame(const PassContext& c, const FogFrameInputs& inputs) {
-  const Scene& scene = *c.scene;
+GpuFogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs) {
+  const Scene& scene = *s.scene;
   GpuFogFrame f{};
-  f.view = pack_view_rays(scene.camera, c.graph.output_size);
+  f.view = pack_view_rays(scene.camera, s.frame_size());
   f.grid.size[0] = inputs.grid.width;
   f.grid.size[1] = inputs.grid.height;
   f.grid.size[2] = inputs.grid.depth;
   f.grid.range[0] = float(inputs.range.near);
   f.grid.range[1] = float(inputs.range.far);
-  f.grid.range[2] = inputs.range.distribution == shading::FroxelDistribution::linear ? 0.0f : 1.0f;
-  const std::array<double, 3> jitter = inputs.jitter ? froxel_jitter(c.frame) : std::array<double, 3>{0, 0, 0};
-  put(f.jitter, {jitter[0], jitter[1], jitter[2]}, double(c.frame));
+  f.grid.range[2] = inputs.range.distribution == physics::FroxelDistribution::linear ? 0.0f : 1.0f;
+  const std::array<double, 3> jitter = inputs.jitter ? froxel_jitter(frame) : std::array<double, 3>{0, 0, 0};
+  put(f.jitter, {jitter[0], jitter[1], jitter[2]}, double(frame));
   put(f.ambient, inputs.ambient_radiance, 0);
-  f.light_list = shading::pack_lights(scene.lights);
-  f.media = shading::pack_media(scene.media);
+  f.light_list = plumbing::pack_lights(scene.lights);
+  f.media = physics::pack_media(scene.media);
   return f;
 }
 
 std::vector<ParamProblem> media_fit_problems(const Scene& scene, const std::string& what) {
-  if (scene.media.volumes.size() <= size_t(shading::kMaxMediumVolumes)) return {};
-  return {{"", "at most " + std::to_string(shading::kMaxMediumVolumes) + " media volumes are " + what + ", the scene has " +
+  if (scene.media.volumes.size() <= size_t(physics::kMaxMediumVolumes)) return {};
+  return {{"", "at most " + std::to_string(physics::kMaxMediumVolumes) + " media volumes are " + what + ", the scene has " +
                    std::to_string(scene.media.volumes.size())}};
 }
 

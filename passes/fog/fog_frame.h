@@ -3,32 +3,46 @@
 // read it, so the grid, camera, lights and media they see are the same by construction.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "graph/execute/pass_execution.h"
 #include "graph/pass_decl.h"
-#include "passes/shading/froxel.h"
-#include "passes/shading/light_list.h"
-#include "passes/shading/media_field.h"
+#include "physics/froxel.h"
+#include "passes/plumbing/light_list.h"
+#include "physics/media_field.h"
 
 namespace volgraph::fog {
 
+// std140 mirrors of ViewRays (view_rays.glsl), FroxelGrid (froxel.glsl) and FogFrame
+// (fog_frame.glsl); the shaders hold a FogFrame as the one member of their Frame block
+// (plumbing::check_wrapped_uniform_mirror).
 struct GpuViewRays {
   float position[4], forward[4], right[4], up[4];
+  static constexpr std::array<uint64_t, 4> offsets() {
+    return {offsetof(GpuViewRays, position), offsetof(GpuViewRays, forward), offsetof(GpuViewRays, right),
+            offsetof(GpuViewRays, up)};
+  }
 };
 struct GpuFroxelGrid {
   uint32_t size[4];
   float range[4];
+  static constexpr std::array<uint64_t, 2> offsets() { return {offsetof(GpuFroxelGrid, size), offsetof(GpuFroxelGrid, range)}; }
 };
 struct GpuFogFrame {
   GpuViewRays view;
   GpuFroxelGrid grid;
   float jitter[4];
   float ambient[4];
-  shading::GpuLightList light_list;
-  shading::GpuMediaField media;
+  plumbing::GpuLightList light_list;
+  physics::GpuMediaField media;
+  static constexpr std::array<uint64_t, 6> offsets() {
+    return {offsetof(GpuFogFrame, view),    offsetof(GpuFogFrame, grid),       offsetof(GpuFogFrame, jitter),
+            offsetof(GpuFogFrame, ambient), offsetof(GpuFogFrame, light_list), offsetof(GpuFogFrame, media)};
+  }
 };
 
 // Bytes of the `frame` buffer slot (the block rounded up to 256).
@@ -36,7 +50,7 @@ constexpr uint64_t kFogFrameBytes = (sizeof(GpuFogFrame) + 255) / 256 * 256;
 
 struct FogFrameInputs {
   Extent grid;                  // froxels
-  shading::FroxelRange range;
+  physics::FroxelRange range;
   Vec3 ambient_radiance{0, 0, 0};
   bool jitter = true;
 };
@@ -45,7 +59,8 @@ struct FogFrameInputs {
 // planes in position.w and forward.w.
 GpuViewRays pack_view_rays(const Camera& camera, Extent output);
 
-GpuFogFrame make_fog_frame(const PassContext& c, const FogFrameInputs& inputs);
+// The frame block of frame `frame` (its jitter) for the scene and frame size `s` sees.
+GpuFogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs);
 
 // The scene's media must fit the frame block (at most kMaxMediumVolumes local volumes):
 // the problems of a pass that packs them (`what`: how the pass uses them, "voxelized").

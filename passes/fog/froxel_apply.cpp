@@ -6,53 +6,57 @@
 #include "graph/execute/pass_execution.h"
 #include "passes/fog/fog_passes.h"
 #include "passes/fog/apply_draws.h"
+#include "passes/fog/fog_frame.h"
 
 namespace volgraph {
 namespace {
 
+struct FroxelApplyTable : PassTable {
+  FroxelApplyTable()
+      : PassTable("froxel_apply", PassKind::graphics,
+                  "Applies the integrated froxel volumes to the scene's colour: L = T·L_surface + L_scat at each pixel's depth.") {
+    decl.needs = feature_bit(SceneFeature::medium);
+  }
+  // Variants.
+  VariantHandle trilinear = variant("trilinear", "one trilinear lookup per pixel at its view depth");
+  // Slots.
+  SlotHandle color = inout("color", ResourceKind::texture2d, Usage::color_attachment_load, "the scene's linear radiance");
+  SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
+  SlotHandle integrated_scattering = input("integrated_scattering", ResourceKind::texture3d, Usage::sampled, "from scatter_integrate");
+  SlotHandle integrated_transmittance =
+      input("integrated_transmittance", ResourceKind::texture3d, Usage::sampled, "from scatter_integrate");
+  SlotHandle frame = input("frame", ResourceKind::buffer, Usage::uniform_read, "froxel_voxelize's frame block");
+};
+
 class FroxelApplyExecution final : public PassExecution {
  public:
+  explicit FroxelApplyExecution(const FroxelApplyTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    draws_.prepare(s, t_.color, "froxel_apply_transmittance.frag", "froxel_apply_scattering.frag");
+    for (const plumbing::RenderProgram* p : draws_.programs()) {
+      plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(*p, 0, 0, s.name() + " frame");  // froxel_voxelize's
+    }
+  }
+
   void record(PassContext& c) override {
-    if (!draws_.prepared()) prepare(c);
-    draws_.record(c, group_);
+    using rhi::BindGroupEntry;
+    const rhi::BindGroupId group = c.bind_group(
+        draws_.layout(),
+        {BindGroupEntry::of(0, c.buffer(t_.frame)), BindGroupEntry::of(1, c.view(t_.depth)),
+         BindGroupEntry::of(2, c.view(t_.integrated_scattering)), BindGroupEntry::of(3, c.view(t_.integrated_transmittance)),
+         BindGroupEntry::of(4, c.sampler(rhi::StockSampler::trilinear_clamp)),
+         BindGroupEntry::of(5, c.sampler(rhi::StockSampler::nearest_clamp))});
+    draws_.record(c, group);
   }
 
  private:
-  void prepare(PassContext& c) {
-    using namespace rhi;
-    draws_.prepare(c, "froxel_apply_transmittance.frag", "froxel_apply_scattering.frag");
-    SamplerDesc trilinear{"trilinear"};
-    trilinear.filter = trilinear.mip_filter = Filter::linear;
-    group_ = c.device.create_bind_group(
-        {"froxel_apply", draws_.layout(),
-         {BindGroupEntry::of(0, c.buffer("frame")), BindGroupEntry::of(1, c.view("depth")),
-          BindGroupEntry::of(2, c.view("integrated_scattering")), BindGroupEntry::of(3, c.view("integrated_transmittance")),
-          BindGroupEntry::of(4, c.device.create_sampler(trilinear)), BindGroupEntry::of(5, c.device.create_sampler({"nearest"}))}});
-  }
-
+  const FroxelApplyTable& t_;
   fog::ApplyDraws draws_;
-  rhi::BindGroupId group_;
 };
 
 }  // namespace
 
-PassDecl froxel_apply_pass() {
-  PassDecl d;
-  d.name = "froxel_apply";
-  d.kind = PassKind::graphics;
-  d.doc = "Applies the integrated froxel volumes to the scene's colour: L = T·L_surface + L_scat at each pixel's depth.";
-  d.variants = {{"trilinear", "one trilinear lookup per pixel at its view depth"}};
-  d.slots = {
-      slot_inout("color", ResourceKind::texture2d, Usage::color_attachment_load, "the scene's linear radiance"),
-      slot_in("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth"),
-      slot_in("integrated_scattering", ResourceKind::texture3d, Usage::sampled, "from scatter_integrate"),
-      slot_in("integrated_transmittance", ResourceKind::texture3d, Usage::sampled, "from scatter_integrate"),
-      slot_in("frame", ResourceKind::buffer, Usage::uniform_read, "froxel_voxelize's frame block"),
-  };
-  d.slots[1].format = Format::d32_float;
-  d.needs = feature_bit(SceneFeature::medium);
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new FroxelApplyExecution()); };
-  return d;
-}
+PassDecl froxel_apply_pass() { return pass_type<FroxelApplyTable, FroxelApplyExecution>(); }
 
 }  // namespace volgraph

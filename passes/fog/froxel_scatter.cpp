@@ -7,105 +7,96 @@
 // lookup in that map (the other lights keep the march).
 // Shaders: shaders/froxel_scatter.comp, froxel_scatter_shadowed.comp,
 // froxel_scatter_media_shadowed.comp (shaders/include/froxel_scatter_body.glsl).
+#include <cstddef>
+
 #include "graph/execute/pass_execution.h"
 #include "passes/fog/fog_passes.h"
-#include "passes/shading/programs.h"
+#include "passes/plumbing/programs.h"
+#include "passes/uniform_mirrors.h"
+#include "shaders/include/phase_codes.h"
 
 namespace volgraph {
 namespace {
 
-// The variants (the first is the default) and the shader's PHASE_* code of each.
-const std::vector<VariantDecl> kPhaseVariants = {
-    {"hg", "Henyey–Greenstein with the medium's g"},
-    {"isotropic", "p = 1/4π"},
-    {"rayleigh", "3/(16π)·(1 + cos²θ)"},
-    {"schlick", "Schlick's approximation of HG, k = 1.55g − 0.55g³ (clamped)"},
-    {"dual_hg", "forward HG (the medium's g) and backward HG (g_back) mixed by w_forward (eq. 14.17)"},
+struct FroxelScatterTable : PassTable {
+  FroxelScatterTable()
+      : PassTable("froxel_scatter", PassKind::compute,
+                  "Per froxel, the light scattered toward the camera per metre: lights × phase × visibility, ambient, emission.") {
+    decl.needs = feature_bit(SceneFeature::medium);
+  }
+  // Variants: the phase function (the first is the default).
+  VariantHandle hg = variant("hg", "Henyey–Greenstein with the medium's g", PHASE_HG);
+  VariantHandle isotropic = variant("isotropic", "p = 1/4π", PHASE_ISOTROPIC);
+  VariantHandle rayleigh = variant("rayleigh", "3/(16π)·(1 + cos²θ)", PHASE_RAYLEIGH);
+  VariantHandle schlick = variant("schlick", "Schlick's approximation of HG, k = 1.55g − 0.55g³ (clamped)", PHASE_SCHLICK);
+  VariantHandle dual_hg = variant("dual_hg", "forward HG (the medium's g) and backward HG (g_back) mixed by w_forward", PHASE_DUAL_HG);
+  // Parameters.
+  ParamHandle<double> g_back = number("g_back", -0.3, -0.999, 0.999, "", "dual_hg: the backward lobe's g");
+  ParamHandle<double> w_forward = number("w_forward", 0.7, 0, 1, "", "dual_hg: the forward lobe's weight");
+  ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
+  ParamHandle<int64_t> shadow_steps = integer("shadow_steps", 0, 0, 256, "",
+      "volumetric self-shadowing: steps of the march through the media toward each light not covered by media_shadow (0: off)");
+  ParamHandle<double> shadow_distance = number("shadow_distance", 50, 0.01, 1e5, "m", "how far that march goes toward directional lights");
+  ParamHandle<bool> skip_empty = flag("skip_empty", true, "froxels without scattering skip the light loop (off: to measure the saving)");
+  // Slots.
+  SlotHandle media_scattering = input("media_scattering", ResourceKind::texture3d, Usage::sampled, "from froxel_voxelize");
+  SlotHandle media_emission = input("media_emission", ResourceKind::texture3d, Usage::sampled, "from froxel_voxelize");
+  SlotHandle frame = input("frame", ResourceKind::buffer, Usage::uniform_read, "froxel_voxelize's frame block");
+  SlotHandle shadow_map = optional_input("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map",
+                                         {.format = Format::d32_float});
+  SlotHandle light_view = optional_input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view");
+  SlotHandle media_shadow = optional_input("media_shadow", ResourceKind::texture3d, Usage::sampled,
+                                           "opacity_shadow_map's optical depth over the same light view (with shadow_map and light_view)");
+  SlotHandle in_scatter = output_like("in_scatter", media_scattering, Usage::storage_write, "scattered radiance per metre, rgb");
 };
-
-int32_t phase_code(std::string_view variant) {
-  if (variant == "isotropic") return 0;
-  if (variant == "rayleigh") return 1;
-  if (variant == "schlick") return 3;
-  if (variant == "dual_hg") return 4;
-  return 2;  // hg
-}
 
 class FroxelScatterExecution final : public PassExecution {
  public:
+  explicit FroxelScatterExecution(const FroxelScatterTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
+    media_shadowed_ = shadowed_ && s.bound(t_.media_shadow);
+    program_ = plumbing::create_compute_program(s.device, media_shadowed_ ? "froxel_scatter_media_shadowed.comp"
+                                                          : shadowed_      ? "froxel_scatter_shadowed.comp"
+                                                                           : "froxel_scatter.comp");
+    const GpuFroxelScatterParams params{{s.variant().shader_code, s.param(t_.skip_empty) ? 1 : 0, 0, 0},
+                                        {float(s.param(t_.g_back)), float(s.param(t_.w_forward)), 0, 0},
+                                        {float(s.param(t_.shadow_steps)), float(s.param(t_.shadow_distance)), 0, 0}};
+    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 5, s.name() + " params", params);
+  }
+
   void record(PassContext& c) override {
-    if (!program_.pipeline) prepare(c);
-    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_, shadow_group_}, c.desc("in_scatter").extent);
+    using rhi::BindGroupEntry;
+    const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
+    const rhi::BindGroupId media = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, c.buffer(t_.frame)),
+                                                                      BindGroupEntry::of(1, c.view(t_.media_scattering)),
+                                                                      BindGroupEntry::of(2, c.view(t_.media_emission)),
+                                                                      BindGroupEntry::of(3, nearest),
+                                                                      BindGroupEntry::of(4, c.view(t_.in_scatter)),
+                                                                      BindGroupEntry::of(5, params_)});
+    rhi::BindGroupId shadow;
+    if (shadowed_) {
+      std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, c.view(t_.shadow_map)), BindGroupEntry::of(1, nearest),
+                                             BindGroupEntry::of(2, c.buffer(t_.light_view))};
+      if (media_shadowed_) {
+        entries.push_back(BindGroupEntry::of(3, c.view(t_.media_shadow)));
+        entries.push_back(BindGroupEntry::of(4, c.sampler(rhi::StockSampler::linear_clamp)));
+      }
+      shadow = c.bind_group(program_.layouts[1], std::move(entries));
+    }
+    plumbing::dispatch(c.encoder, c.name(), program_, {media, shadow}, c.extent(t_.in_scatter));
   }
 
  private:
-  void prepare(PassContext& c) {
-    using namespace rhi;
-    const bool shadowed = c.bound("shadow_map") && c.bound("light_view") && std::get<bool>(c.param("shadows"));
-    const bool media_shadowed = shadowed && c.bound("media_shadow");
-    program_ = shading::create_compute_program(c.device, media_shadowed ? "froxel_scatter_media_shadowed.comp"
-                                                         : shadowed     ? "froxel_scatter_shadowed.comp"
-                                                                        : "froxel_scatter.comp");
-    struct {
-      int32_t modes[4];
-      float lobes[4];
-      float volumetric[4];
-    } params{{phase_code(c.variant()), std::get<bool>(c.param("skip_empty")) ? 1 : 0, 0, 0},
-             {float(std::get<double>(c.param("g_back"))), float(std::get<double>(c.param("w_forward"))), 0, 0},
-             {float(std::get<int64_t>(c.param("shadow_steps"))), float(std::get<double>(c.param("shadow_distance"))), 0, 0}};
-    params_ = c.device.create_buffer({"froxel_scatter params", sizeof(params), buffer_usage::uniform | buffer_usage::copy_dst});
-    c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
-    const SamplerId nearest = c.device.create_sampler({"nearest"});
-    group_ = c.device.create_bind_group({"froxel_scatter", program_.layouts[0],
-                                         {BindGroupEntry::of(0, c.buffer("frame")), BindGroupEntry::of(1, c.view("media_scattering")),
-                                          BindGroupEntry::of(2, c.view("media_emission")), BindGroupEntry::of(3, nearest),
-                                          BindGroupEntry::of(4, c.view("in_scatter")), BindGroupEntry::of(5, params_)}});
-    if (!shadowed) return;
-    std::vector<BindGroupEntry> shadow = {BindGroupEntry::of(0, c.view("shadow_map")), BindGroupEntry::of(1, nearest),
-                                          BindGroupEntry::of(2, c.buffer("light_view"))};
-    if (media_shadowed) {
-      shadow.push_back(BindGroupEntry::of(3, c.view("media_shadow")));
-      shadow.push_back(BindGroupEntry::of(4, c.device.create_sampler({"media shadow", Filter::linear})));
-    }
-    shadow_group_ = c.device.create_bind_group({"froxel_scatter shadow", program_.layouts[1], shadow});
-  }
-
-  shading::ComputeProgram program_;
+  const FroxelScatterTable& t_;
+  bool shadowed_ = false, media_shadowed_ = false;
+  plumbing::ComputeProgram program_;
   rhi::BufferId params_;
-  rhi::BindGroupId group_, shadow_group_;
 };
 
 }  // namespace
 
-PassDecl froxel_scatter_pass() {
-  PassDecl d;
-  d.name = "froxel_scatter";
-  d.kind = PassKind::compute;
-  d.doc = "Per froxel, the light scattered toward the camera per metre: lights × phase × visibility, ambient, emission.";
-  d.variants = kPhaseVariants;
-  d.params = {
-      param_number("g_back", -0.3, -0.999, 0.999, "", "dual_hg: the backward lobe's g"),
-      param_number("w_forward", 0.7, 0, 1, "", "dual_hg: the forward lobe's weight"),
-      param_bool("shadows", true, "sample the shadow map when one is wired"),
-      param_int("shadow_steps", 0, 0, 256, "", "volumetric self-shadowing: steps of the march through the media toward each light not covered by media_shadow (0: off)"),
-      param_number("shadow_distance", 50, 0.01, 1e5, "m", "how far that march goes toward directional lights"),
-      param_bool("skip_empty", true, "froxels without scattering skip the light loop (off: to measure the saving)"),
-  };
-  SlotDecl in_scatter = slot_out_like("in_scatter", "media_scattering", Usage::storage_write, "scattered radiance per metre, rgb");
-  d.slots = {
-      slot_in("media_scattering", ResourceKind::texture3d, Usage::sampled, "from froxel_voxelize"),
-      slot_in("media_emission", ResourceKind::texture3d, Usage::sampled, "from froxel_voxelize"),
-      slot_in("frame", ResourceKind::buffer, Usage::uniform_read, "froxel_voxelize's frame block"),
-      slot_optional_in("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map"),
-      slot_optional_in("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view"),
-      slot_optional_in("media_shadow", ResourceKind::texture3d, Usage::sampled,
-                       "opacity_shadow_map's optical depth over the same light view (with shadow_map and light_view)"),
-      in_scatter,
-  };
-  d.slots[3].format = Format::d32_float;
-  d.needs = feature_bit(SceneFeature::medium);
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new FroxelScatterExecution()); };
-  return d;
-}
+PassDecl froxel_scatter_pass() { return pass_type<FroxelScatterTable, FroxelScatterExecution>(); }
 
 }  // namespace volgraph

@@ -7,7 +7,7 @@
 // result (`accumulated`) goes to scatter_integrate and is kept as the next frame's
 // history (a history pair: two volumes swapped every frame). On the first frame it is
 // this frame's value, unchanged. Shader: shaders/froxel_temporal.comp; reprojection:
-// shaders/include/froxel.glsl `froxel_uvw` ↔ passes/shading/froxel.h.
+// shaders/include/froxel.glsl `froxel_uvw` ↔ physics/froxel.h.
 #include "graph/execute/pass_execution.h"
 #include "passes/fog/fog_passes.h"
 #include "passes/fog/temporal.h"
@@ -15,39 +15,42 @@
 namespace volgraph {
 namespace {
 
+struct FroxelTemporalTable : fog::TemporalTable {
+  FroxelTemporalTable()
+      : TemporalTable("froxel_temporal",
+                      "Temporal accumulation of the froxel in-scattering volume: reprojected history blended with this frame's (jittered) volume.") {}
+  VariantHandle reprojected =
+      variant("reprojected", "the last frame's result read trilinearly where the last frame's camera saw each froxel's centre");
+  // Slots (the parameters are TemporalTable's).
+  SlotHandle in_scatter = input("in_scatter", ResourceKind::texture3d, Usage::sampled, "this frame's in-scattering, from froxel_scatter");
+  SlotHandle frame = input("frame", ResourceKind::buffer, Usage::uniform_read, "froxel_voxelize's frame block");
+  SlotHandle accumulated = output_like("accumulated", in_scatter, Usage::storage_write,
+                                       "in-scattering blended over frames, rgb; a: the frames it averages");
+  SlotHandle history = TemporalTable::history("history", accumulated, "the last frame's accumulated volume");
+};
+
 class FroxelTemporalExecution final : public fog::TemporalExecution {
  public:
-  FroxelTemporalExecution() : TemporalExecution("froxel_temporal.comp", "accumulated") {}
+  explicit FroxelTemporalExecution(const FroxelTemporalTable& table)
+      : TemporalExecution(table, "froxel_temporal.comp", table.accumulated, 6), t_(table) {}
 
  private:
   std::vector<rhi::BindGroupEntry> entries(PassContext& c) override {
     using rhi::BindGroupEntry;
-    return {BindGroupEntry::of(0, c.buffer("frame")), BindGroupEntry::of(1, c.view("in_scatter")),
-            BindGroupEntry::of(2, c.view("history")), BindGroupEntry::of(3, nearest()), BindGroupEntry::of(4, linear()),
-            BindGroupEntry::of(5, c.view("accumulated")), BindGroupEntry::of(6, params())};
+    return {BindGroupEntry::of(0, c.buffer(t_.frame)),
+            BindGroupEntry::of(1, c.view(t_.in_scatter)),
+            BindGroupEntry::of(2, c.view(t_.history)),
+            BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)),
+            BindGroupEntry::of(4, c.sampler(rhi::StockSampler::linear_clamp)),
+            BindGroupEntry::of(5, c.view(t_.accumulated)),
+            BindGroupEntry::of(6, params())};
   }
+
+  const FroxelTemporalTable& t_;
 };
 
 }  // namespace
 
-PassDecl froxel_temporal_pass() {
-  PassDecl d;
-  d.name = "froxel_temporal";
-  d.kind = PassKind::compute;
-  d.doc = "Temporal accumulation of the froxel in-scattering volume: reprojected history blended with this frame's (jittered) volume.";
-  d.variants = {{"reprojected", "the last frame's result read trilinearly where the last frame's camera saw each froxel's centre"}};
-  d.params = fog::temporal_params();
-  d.slots = {
-      slot_in("in_scatter", ResourceKind::texture3d, Usage::sampled, "this frame's in-scattering, from froxel_scatter"),
-      slot_in("frame", ResourceKind::buffer, Usage::uniform_read, "froxel_voxelize's frame block"),
-      slot_out_like("accumulated", "in_scatter", Usage::storage_write,
-                    "in-scattering blended over frames, rgb; a: the frames it averages"),
-      slot_history("history", "accumulated", "the last frame's accumulated volume"),
-  };
-  d.needs = feature_bit(SceneFeature::medium);
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new FroxelTemporalExecution()); };
-  d.parity_bind_groups = true;
-  return d;
-}
+PassDecl froxel_temporal_pass() { return pass_type<FroxelTemporalTable, FroxelTemporalExecution>(); }
 
 }  // namespace volgraph

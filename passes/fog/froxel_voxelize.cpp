@@ -7,93 +7,98 @@
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/fog/fog_passes.h"
-#include "passes/shading/programs.h"
+#include "passes/plumbing/programs.h"
 
 namespace volgraph {
 namespace {
 
-class FroxelVoxelizeExecution final : public PassExecution {
- public:
-  void record(PassContext& c) override {
-    if (!program_.pipeline) prepare(c);
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, frame_inputs(c));
-    const auto bytes = std::as_bytes(std::span(&frame, 1));
-    c.device.write_buffer(own_frame_, 0, bytes);           // for this pass's shader
-    c.encoder.update_buffer(c.buffer("frame"), 0, bytes);  // for the fog passes after it
-    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_}, c.desc("media_scattering").extent);
-  }
+struct FroxelVoxelizeTable : PassTable {
+  FroxelVoxelizeTable();
+  // Variants.
+  VariantHandle jittered =
+      variant("jittered", "one sample per froxel, at its centre plus a per-frame jitter (Halton 2, 3, 5) when `jitter` is on");
+  // Parameters.
+  ParamHandle<int64_t> tile = integer("tile", 8, 1, 64, "pixels", "froxels are tile × tile pixels of the output");
+  ParamHandle<int64_t> slices = integer("slices", 64, 1, 512, "", "froxels in view depth");
+  ParamHandle<double> near = number("near", 0.1, 1e-3, 1e5, "m", "view depth where the grid starts");
+  ParamHandle<double> far = number("far", 100, 1e-2, 1e6, "m", "view depth where the grid ends");
+  ParamHandle<std::string> distribution =
+      choice("distribution", "exponential", {"exponential", "linear"}, "how slices are spaced in view depth");
+  ParamHandle<bool> jitter = flag("jitter", true, "move the sample inside its froxel every frame (frame 0 samples the centre)");
+  ParamHandle<std::array<double, 3>> ambient =
+      vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the media scatter (froxel_scatter adds it)");
+  // Slots.
+  SlotHandle media_scattering = media_volume("media_scattering", "σs rgb (1/m) and g");
+  SlotHandle media_absorption = media_volume("media_absorption", "σa rgb (1/m)");
+  SlotHandle media_emission = media_volume("media_emission", "emitted radiance per metre, rgb");
+  SlotHandle frame = output("frame", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(fog::kFogFrameBytes),
+                            "the camera, grid, lights and media the other fog passes use");
 
  private:
-  static fog::FogFrameInputs frame_inputs(const PassContext& c) {
-    fog::FogFrameInputs in;
-    in.grid = c.desc("media_scattering").extent;
-    in.range.near = std::get<double>(c.param("near"));
-    in.range.far = std::get<double>(c.param("far"));
-    in.range.distribution = std::get<std::string>(c.param("distribution")) == "linear" ? shading::FroxelDistribution::linear
-                                                                                       : shading::FroxelDistribution::exponential;
-    in.ambient_radiance = std::get<std::array<double, 3>>(c.param("ambient"));
-    in.jitter = std::get<bool>(c.param("jitter"));
-    return in;
+  SlotHandle media_volume(std::string name, std::string doc) {
+    return output(std::move(name), ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
+                  SizeSpec::of_output_divided("tile", "slices"), std::move(doc));
   }
-
-  void prepare(PassContext& c) {
-    using rhi::BindGroupEntry;
-    program_ = shading::create_compute_program(c.device, "froxel_voxelize.comp");
-    own_frame_ = c.device.create_buffer({"froxel_voxelize frame", sizeof(fog::GpuFogFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
-    group_ = c.device.create_bind_group({"froxel_voxelize", program_.layouts[0],
-                                         {BindGroupEntry::of(0, own_frame_), BindGroupEntry::of(1, c.view("media_scattering")),
-                                          BindGroupEntry::of(2, c.view("media_absorption")),
-                                          BindGroupEntry::of(3, c.view("media_emission"))}});
-  }
-
-  shading::ComputeProgram program_;
-  rhi::BufferId own_frame_;
-  rhi::BindGroupId group_;
 };
 
 // The media must fit the shader's block (at most kMaxMediumVolumes local volumes), and
 // the range must be a range.
-std::vector<ParamProblem> check_media(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params) {
+std::vector<ParamProblem> check_media(const PassDecl&, const Scene& scene, const std::vector<ParamValue>& params) {
+  static const FroxelVoxelizeTable table;
   std::vector<ParamProblem> problems = fog::media_fit_problems(scene, "voxelized");
-  const double near = std::get<double>(params[size_t(decl.param_index("near"))]);
-  const double far = std::get<double>(params[size_t(decl.param_index("far"))]);
+  const double near = param_in(params, table.near);
+  const double far = param_in(params, table.far);
   if (far <= near) problems.push_back({"far", "far (" + std::to_string(far) + " m) must exceed near (" + std::to_string(near) + " m)"});
   return problems;
 }
 
-SlotDecl media_volume(std::string name, std::string doc) {
-  return slot_out(std::move(name), ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-                  SizeSpec::of_output_divided("tile", "slices"), std::move(doc));
+FroxelVoxelizeTable::FroxelVoxelizeTable()
+    : PassTable("froxel_voxelize", PassKind::compute,
+                "The scene's media at every froxel of a camera-frustum grid (`tile` × `tile` pixels a froxel, 8 by default; `slices` deep).") {
+  decl.needs = feature_bit(SceneFeature::medium);
+  decl.check_scene = check_media;
 }
+
+class FroxelVoxelizeExecution final : public PassExecution {
+ public:
+  explicit FroxelVoxelizeExecution(const FroxelVoxelizeTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    program_ = plumbing::create_compute_program(s.device, "froxel_voxelize.comp");
+    // Written every frame, here and to `frame` for the fog passes after it: checked once.
+    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");
+    own_frame_ = s.device.create_buffer({s.name() + " frame", sizeof(fog::GpuFogFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    inputs_.grid = s.extent(t_.media_scattering);
+    inputs_.range.near = s.param(t_.near);
+    inputs_.range.far = s.param(t_.far);
+    inputs_.range.distribution = s.param(t_.distribution) == "linear" ? physics::FroxelDistribution::linear
+                                                                       : physics::FroxelDistribution::exponential;
+    inputs_.ambient_radiance = s.param(t_.ambient);
+    inputs_.jitter = s.param(t_.jitter);
+  }
+
+  void record(PassContext& c) override {
+    using rhi::BindGroupEntry;
+    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, inputs_);
+    const auto bytes = std::as_bytes(std::span(&frame, 1));
+    c.device.write_buffer(own_frame_, 0, bytes);               // for this pass's shader
+    c.encoder.update_buffer(c.buffer(t_.frame), 0, bytes);  // for the fog passes after it
+    const rhi::BindGroupId group = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, own_frame_),
+                                                                      BindGroupEntry::of(1, c.view(t_.media_scattering)),
+                                                                      BindGroupEntry::of(2, c.view(t_.media_absorption)),
+                                                                      BindGroupEntry::of(3, c.view(t_.media_emission))});
+    plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.media_scattering));
+  }
+
+ private:
+  const FroxelVoxelizeTable& t_;
+  plumbing::ComputeProgram program_;
+  rhi::BufferId own_frame_;
+  fog::FogFrameInputs inputs_;
+};
 
 }  // namespace
 
-PassDecl froxel_voxelize_pass() {
-  PassDecl d;
-  d.name = "froxel_voxelize";
-  d.kind = PassKind::compute;
-  d.doc = "The scene's media at every froxel of a camera-frustum grid (`tile` × `tile` pixels a froxel, 8 by default; `slices` deep).";
-  d.variants = {{"jittered", "one sample per froxel, at its centre plus a per-frame jitter (Halton 2, 3, 5) when `jitter` is on"}};
-  d.params = {
-      param_int("tile", 8, 1, 64, "pixels", "froxels are tile × tile pixels of the output"),
-      param_int("slices", 64, 1, 512, "", "froxels in view depth"),
-      param_number("near", 0.1, 1e-3, 1e5, "m", "view depth where the grid starts"),
-      param_number("far", 100, 1e-2, 1e6, "m", "view depth where the grid ends"),
-      param_choice("distribution", "exponential", {"exponential", "linear"}, "how slices are spaced in view depth"),
-      param_bool("jitter", true, "move the sample inside its froxel every frame (frame 0 samples the centre)"),
-      param_vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the media scatter (froxel_scatter adds it)"),
-  };
-  d.slots = {
-      media_volume("media_scattering", "σs rgb (1/m) and g"),
-      media_volume("media_absorption", "σa rgb (1/m)"),
-      media_volume("media_emission", "emitted radiance per metre, rgb"),
-      slot_out("frame", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(fog::kFogFrameBytes),
-               "the camera, grid, lights and media the other fog passes use"),
-  };
-  d.needs = feature_bit(SceneFeature::medium);
-  d.check_scene = check_media;
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new FroxelVoxelizeExecution()); };
-  return d;
-}
+PassDecl froxel_voxelize_pass() { return pass_type<FroxelVoxelizeTable, FroxelVoxelizeExecution>(); }
 
 }  // namespace volgraph

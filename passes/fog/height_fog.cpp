@@ -22,22 +22,24 @@ std::vector<ParamProblem> check_height_fog(const PassDecl&, const Scene& scene, 
   return {{"", "height_fog renders the scene's media.height_fog, and the scene has none"}};
 }
 
+struct HeightFogTable : fog::PixelFogTable {
+  HeightFogTable()
+      : PixelFogTable("height_fog",
+                      "Exponential height fog in closed form per pixel: exact transmittance, in-scattering of unshadowed directional lights.") {
+    decl.check_scene = check_height_fog;
+  }
+  VariantHandle closed_form = variant("closed_form", "optical depth and in-scattering integrated analytically along each pixel's ray");
+  ParamHandle<std::array<double, 3>> ambient = vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the fog scatters");
+};
+
+class HeightFogExecution final : public fog::PixelFogExecution {
+ public:
+  explicit HeightFogExecution(const HeightFogTable& t)
+      : PixelFogExecution(t, "height_fog.comp", [&t](const PassSetup& s) { return fog::PixelFogInputs{.ambient = s.param(t.ambient)}; }) {}
+};
+
 }  // namespace
 
-PassDecl height_fog_pass() {
-  PassDecl d;
-  d.name = "height_fog";
-  d.kind = PassKind::compute;
-  d.doc = "Exponential height fog in closed form per pixel: exact transmittance, in-scattering of unshadowed directional lights.";
-  d.variants = {{"closed_form", "optical depth and in-scattering integrated analytically along each pixel's ray"}};
-  d.params = {
-      param_vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the fog scatters"),
-  };
-  d.slots = fog::pixel_fog_slots();
-  d.needs = feature_bit(SceneFeature::medium);
-  d.check_scene = check_height_fog;
-  d.make_execution = fog::pixel_fog_execution("height_fog.comp", [](const PassContext& c) { return fog::PixelFogInputs{{}, fog::ambient_param(c)}; });
-  return d;
-}
+PassDecl height_fog_pass() { return pass_type<HeightFogTable, HeightFogExecution>(); }
 
 }  // namespace volgraph

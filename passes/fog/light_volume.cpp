@@ -36,10 +36,15 @@
 // raymarch_fog in a homogeneous medium with volumetric shadows on (the light toward a
 // point or spot dimmed by e^(−σt·d), a directional light not).
 //
-// Per frame, five render passes (private images, transitions recorded here):
-// light_frame (the map's clip space back to the world), cells (the grid's depths),
-// ends (per texel the unshadowed sums and t_end), faces (the shadow volume added to the
-// sums), resolve (into fog_scattering, and the transmittance into fog_transmittance).
+// It runs as five steps, each a graph pass of its own (PassDecl::steps), over four
+// internal images the graph allocates, aliases, synchronises and can dump
+// (`--dump PASS.cells=…`): light_frame (the map's clip space back to the world), cells
+// (the grid's depths), ends (per texel the unshadowed sums and t_end), faces (the shadow
+// volume added to the sums), resolve (into fog_scattering, and the transmittance into
+// fog_transmittance). Steps rather than one pass with its own barriers: each image is
+// rendered by one draw and read by the next, and the compiler's unit of ordering and
+// synchronisation is the graph pass, so as steps every transition is planned, checked
+// by the plan checker and timed like any other.
 #include <array>
 #include <cmath>
 #include <span>
@@ -49,9 +54,10 @@
 #include "passes/fog/fog_frame.h"
 #include "passes/fog/fog_passes.h"
 #include "passes/fog/pixel_fog.h"
-#include "passes/shading/camera.h"
-#include "passes/shading/programs.h"
-#include "passes/shading/shadow_view.h"
+#include "physics/camera.h"
+#include "passes/plumbing/programs.h"
+#include "passes/plumbing/shadow_view.h"
+#include "passes/uniform_mirrors.h"
 
 namespace volgraph {
 namespace {
@@ -60,40 +66,19 @@ constexpr uint32_t kVerticesPerCell = 48;  // light_volume_faces.vert: 2 caps an
 constexpr uint32_t kLightFrameTexels = 5;  // light_volume.glsl LIGHT_FRAME_TEXELS
 constexpr double kNearPlaneScale = 1e-3;   // the faces' near plane, a fraction of the camera's
 
-// std140 mirror of light_volume.glsl's LightVolumeParams.
-struct GpuLightVolumeParams {
-  float camera_clip[16];
-  int32_t sizes[4];
-};
-
 // World → the camera's clip space for the faces: x, y as the camera's projection, w the view
 // depth (so 1/gl_FragCoord.w is the fragment's depth), z = w − n: clipped only in front of
 // a near plane at n, with no far plane (a face behind the far plane still counts).
-shading::Mat4 faces_clip(const Camera& camera, double aspect) {
+physics::Mat4 faces_clip(const Camera& camera, double aspect) {
   const double cot = 1.0 / std::tan(camera.fov_y_deg * M_PI / 360.0);
-  shading::Mat4 p;
+  physics::Mat4 p;
   p(0, 0) = cot / aspect;
   p(1, 1) = cot;
   p(2, 2) = -1;
   p(2, 3) = -kNearPlaneScale * camera.near;
   p(3, 2) = -1;
-  return p * shading::look_at(camera.position, camera.target, camera.up);
+  return p * physics::look_at(camera.position, camera.target, camera.up);
 }
-
-// A private image of the pass: rendered to, then read by a later draw.
-struct Image {
-  rhi::TextureId texture;
-  rhi::TextureViewId view;
-};
-
-Image make_image(rhi::Device& device, const std::string& label, Format format, Extent size) {
-  const rhi::TextureId t = device.create_texture({label, ResourceKind::texture2d, format, size, rhi::texture_usage::attachment | rhi::texture_usage::sampled});
-  return {t, device.create_view(t)};
-}
-
-const AccessState kRendered = access_state(Usage::color_attachment, PassKind::graphics, ResourceKind::texture2d);
-const AccessState kBlended = access_state(Usage::color_attachment_load, PassKind::graphics, ResourceKind::texture2d);
-const AccessState kReadByFaces = {stage::vertex_shader | stage::fragment_shader, access::shader_sampled_read, Layout::shader_read_only};
 
 // The height_field variant's triangles over light_volume_surface.vert's vertices (n ≥ 2
 // cells per side), each wound with its normal out of the shadowed region in light clip
@@ -133,44 +118,147 @@ std::vector<uint32_t> height_field_indices(uint32_t n) {
   return i;
 }
 
+struct LightVolumeTable : PassTable {
+  LightVolumeTable()
+      : PassTable("light_volume", PassKind::graphics,
+                  "Volumetric shadows of the shadow map's light in homogeneous fog by polygonal light volumes (Billeter et al. 2010): "
+                  "the shadow volume's faces add the analytic in-scattering integral, exact with respect to the shadow map.") {
+    decl.needs = feature_bit(SceneFeature::medium);
+  }
+  VariantHandle height_field = variant("height_field",
+      "Billeter et al.'s mesh: one vertex per cell, the surface interpolated between cells (fast; approximate at depth edges)");
+  VariantHandle texel_steps = variant("texel_steps",
+      "one flat cap per cell with walls between cells: the shadowed region exactly as the hard shadow lookup sees it");
+  ParamHandle<int64_t> grid = integer("grid", 256, 2, 8192, "cells",
+      "cells per side of the grid over the shadow map (at most its resolution; texel_steps at its resolution: exact)");
+  ParamHandle<std::array<double, 3>> ambient = vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the fog scatters (unshadowed)");
+  SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth (d32; 1 where nothing was drawn)",
+                           {.format = Format::d32_float});
+  SlotHandle shadow_map = optional_input("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map (none: no shadows)",
+                                         {.format = Format::d32_float});
+  SlotHandle light_view = optional_input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view");
+  SlotHandle fog_scattering = fog_image("fog_scattering", "in-scattered radiance toward the camera, rgb (W/(m²·sr))");
+  SlotHandle fog_transmittance = fog_image("fog_transmittance", "transmittance from the camera to the surface (or the far plane), rgb");
+  // Internal images.
+  SlotHandle light_frame = internal("light_frame", ResourceKind::texture2d, Format::rgba32_float, SizeSpec::fixed(kLightFrameTexels, 1),
+                                    "the shadow map's clip space back to the world (light_volume.glsl)");
+  SlotHandle cells = internal("cells", ResourceKind::texture2d, Format::r32_float, SizeSpec::square_of("grid"),
+                              "per cell of the grid the light depth where shadow starts (the first min(grid, map side)² texels)");
+  SlotHandle ends = internal("ends", ResourceKind::texture2d, Format::rgba32_float, SizeSpec::of_output(), "per pixel t_end and the unshadowed sums' ends");
+  SlotHandle sums = internal("sums", ResourceKind::texture2d, Format::rgba32_float, SizeSpec::of_output(), "per pixel the signed sum of I(t)");
+  // Steps.
+  StepHandle unproject = step("light_frame", PassKind::graphics, {{light_view, Usage::uniform_read}, {light_frame, Usage::color_attachment}});
+  StepHandle cell_depths = step("cells", PassKind::graphics,
+                                {{shadow_map, Usage::sampled}, {light_view, Usage::uniform_read}, {cells, Usage::color_attachment}});
+  StepHandle ray_ends = step("ends", PassKind::graphics, {{depth, Usage::sampled}, {light_view, Usage::uniform_read},
+                                                          {ends, Usage::color_attachment}, {sums, Usage::color_attachment}});
+  StepHandle faces = step("faces", PassKind::graphics, {{cells, Usage::sampled}, {light_frame, Usage::sampled}, {ends, Usage::sampled},
+                                                        {sums, Usage::color_attachment_load}});
+  StepHandle resolve = step("resolve", PassKind::graphics, {{sums, Usage::sampled}, {ends, Usage::sampled},
+                                                            {fog_scattering, Usage::color_attachment}, {fog_transmittance, Usage::color_attachment}});
+
+ private:
+  SlotHandle fog_image(std::string name, std::string doc) {
+    return output(std::move(name), ResourceKind::texture2d, Usage::color_attachment, Format::rgba16_float, SizeSpec::of_output(),
+                  std::move(doc), {.format_overridable = true});
+  }
+};
+
 class LightVolumeExecution final : public PassExecution {
  public:
-  void record(PassContext& c) override {
-    if (!ends_.texture) prepare(c);
-    transition({{light_frame_, {kReadByFaces.stages, kReadByFaces.access, Layout::undefined}, kRendered},
-                {cells_, {kReadByFaces.stages, kReadByFaces.access, Layout::undefined}, kRendered},
-                {ends_, {kReadByFaces.stages, kReadByFaces.access, Layout::undefined}, kRendered},
-                {sums_, {kReadByFaces.stages, kReadByFaces.access, Layout::undefined}, kRendered}},
-               c);
-    if (shadowed_) {
-      fullscreen(c, "light_frame", {light_frame_.view}, unproject_, unproject_group_);
-      fullscreen(c, "cells", {cells_.view}, cells_program_, cells_group_);
+  explicit LightVolumeExecution(const LightVolumeTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view);
+    const Extent size = s.extent(t_.fog_scattering);
+    const Extent out = s.frame_size();
+    const uint32_t resolution = shadowed_ ? s.extent(t_.shadow_map).width : 1;
+    const uint32_t grid = std::max(2u, uint32_t(std::min<int64_t>(s.param(t_.grid), resolution)));
+    const bool steps = s.variant_is(t_.texel_steps);
+    face_vertices_ = (grid + 1) * (grid + 1) * kVerticesPerCell;
+    if (shadowed_ && !steps) {
+      const std::vector<uint32_t> indices = height_field_indices(grid);
+      face_vertices_ = uint32_t(indices.size());
+      indices_ = buffer(s, "indices", std::as_bytes(std::span(indices)), rhi::buffer_usage::index);
     }
-    fullscreen(c, "ends", {ends_.view, sums_.view}, ends_program_, ends_group_);
-    transition({{light_frame_, kRendered, kReadByFaces}, {cells_, kRendered, kReadByFaces}, {ends_, kRendered, kReadByFaces},
-                {sums_, kRendered, kBlended}},
-               c);
-    if (shadowed_) draw_faces(c);
-    transition({{sums_, kBlended, kReadByFaces}}, c);
-    fullscreen(c, "resolve", {c.view("fog_scattering"), c.view("fog_transmittance")}, resolve_, resolve_group_);
+    GpuLightVolumeParams params{};
+    physics::to_floats(faces_clip(s.scene->camera, double(out.width) / double(out.height)), params.camera_clip);
+    params.sizes[0] = int32_t(grid);
+    params.sizes[2] = int32_t(size.width);
+    params.sizes[3] = int32_t(size.height);
+    params_ = buffer(s, "params", std::as_bytes(std::span(&params, 1)));
+    fog::FogFrameInputs frame_inputs;
+    frame_inputs.grid = size;
+    frame_inputs.range = {s.scene->camera.near, s.scene->camera.far, physics::FroxelDistribution::linear};
+    frame_inputs.ambient_radiance = s.param(t_.ambient);
+    frame_inputs.jitter = false;
+    const fog::GpuFogFrame frame = fog::make_fog_frame(s, 0, frame_inputs);
+    frame_ = buffer(s, "frame", std::as_bytes(std::span(&frame, 1)));
+    if (!shadowed_) {
+      plumbing::ShadowViewBlock none{};
+      none.params[3] = -1.0f;  // shadows no light
+      no_shadow_view_ = buffer(s, "no shadow view", std::as_bytes(std::span(&none, 1)));
+    }
+    ends_program_ = program(s, {{Format::rgba32_float}, {Format::rgba32_float}}, "fullscreen.vert", "light_volume_ends.frag");
+    resolve_ = program(s, {{s.desc(t_.fog_scattering).format}, {s.desc(t_.fog_transmittance).format}}, "fullscreen.vert",
+                       "light_volume_resolve.frag");
+    if (shadowed_) {
+      unproject_ = program(s, {{Format::rgba32_float}}, "fullscreen.vert", "light_volume_unproject.frag");
+      cells_program_ = program(s, {{Format::r32_float}}, "fullscreen.vert", "light_volume_cells.frag");
+      faces_ = program(s, {{Format::rgba32_float, rhi::BlendMode::additive}},
+                       steps ? "light_volume_faces.vert" : "light_volume_surface.vert", "light_volume_faces.frag");
+    }
+    check_blocks(s);
+  }
+
+  void record(PassContext& c) override {
+    using rhi::BindGroupEntry;
+    const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
+    if (c.step_is(t_.unproject) && shadowed_) {
+      fullscreen(c, {c.view(t_.light_frame)}, unproject_, c.bind_group(unproject_.layouts[0], {BindGroupEntry::of(0, shadow_view(c))}));
+    } else if (c.step_is(t_.cell_depths) && shadowed_) {
+      fullscreen(c, {c.view(t_.cells)}, cells_program_,
+                 c.bind_group(cells_program_.layouts[0], {BindGroupEntry::of(0, c.view(t_.shadow_map)), BindGroupEntry::of(1, nearest),
+                                                          BindGroupEntry::of(2, shadow_view(c)), BindGroupEntry::of(3, params_)}));
+    } else if (c.step_is(t_.ray_ends)) {
+      fullscreen(c, {c.view(t_.ends), c.view(t_.sums)}, ends_program_,
+                 c.bind_group(ends_program_.layouts[0], {BindGroupEntry::of(0, frame_), BindGroupEntry::of(1, c.view(t_.depth)),
+                                                         BindGroupEntry::of(2, nearest), BindGroupEntry::of(3, shadow_view(c)),
+                                                         BindGroupEntry::of(4, params_)}));
+    } else if (c.step_is(t_.faces) && shadowed_) {
+      draw_faces(c, c.bind_group(faces_.layouts[0], {BindGroupEntry::of(0, params_), BindGroupEntry::of(1, c.view(t_.cells)),
+                                                     BindGroupEntry::of(2, c.view(t_.light_frame)), BindGroupEntry::of(3, nearest),
+                                                     BindGroupEntry::of(4, frame_), BindGroupEntry::of(5, c.view(t_.ends))}));
+    } else if (c.step_is(t_.resolve)) {
+      fullscreen(c, {c.view(t_.fog_scattering), c.view(t_.fog_transmittance)}, resolve_,
+                 c.bind_group(resolve_.layouts[0], {BindGroupEntry::of(0, c.view(t_.sums)), BindGroupEntry::of(1, c.view(t_.ends)),
+                                                    BindGroupEntry::of(2, nearest), BindGroupEntry::of(3, frame_)}));
+    }
   }
 
  private:
-  struct Transition {
-    Image image;
-    AccessState from, to;
-  };
-
-  static void transition(std::initializer_list<Transition> list, PassContext& c) {
-    std::vector<rhi::ResourceBarrier> barriers;
-    for (const Transition& t : list) barriers.push_back({t.image.texture, {}, t.from, t.to});
-    c.encoder.barrier(barriers);
+  // The blocks each step's shaders read (the params, the frame and the shadow view:
+  // no_shadow_view_ or the graph's light_view) match their C++ mirrors.
+  void check_blocks(const PassSetup& s) const {
+    using plumbing::check_wrapped_uniform_mirror;
+    const std::string params = s.pass_name() + " params", frame = s.pass_name() + " frame",
+                      view = s.pass_name() + " shadow view";
+    check_wrapped_uniform_mirror<fog::GpuFogFrame>(ends_program_, 0, 0, frame);
+    check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(ends_program_, 0, 3, view);
+    check_wrapped_uniform_mirror<GpuLightVolumeParams>(ends_program_, 0, 4, params);
+    check_wrapped_uniform_mirror<fog::GpuFogFrame>(resolve_, 0, 3, frame);
+    if (!shadowed_) return;
+    check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(unproject_, 0, 0, view);
+    check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(cells_program_, 0, 2, view);
+    check_wrapped_uniform_mirror<GpuLightVolumeParams>(cells_program_, 0, 3, params);
+    check_wrapped_uniform_mirror<GpuLightVolumeParams>(faces_, 0, 0, params);
+    check_wrapped_uniform_mirror<fog::GpuFogFrame>(faces_, 0, 4, frame);
   }
 
-  static void fullscreen(PassContext& c, const char* what, std::vector<rhi::TextureViewId> targets, const shading::RenderProgram& program,
+  static void fullscreen(PassContext& c, std::vector<rhi::TextureViewId> targets, const plumbing::RenderProgram& program,
                          rhi::BindGroupId group) {
     rhi::RenderPassDesc pass;
-    pass.label = c.graph_pass().name + " " + what;
+    pass.label = c.name();
     for (const rhi::TextureViewId v : targets) pass.colors.push_back({v, rhi::LoadOp::clear});
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(program.pipeline);
@@ -180,13 +268,13 @@ class LightVolumeExecution final : public PassExecution {
   }
 
   // The shadow volume's faces onto the sums (loaded), each adding ±I.
-  void draw_faces(PassContext& c) const {
+  void draw_faces(PassContext& c, rhi::BindGroupId group) const {
     rhi::RenderPassDesc pass;
-    pass.label = c.graph_pass().name + " faces";
-    pass.colors = {{sums_.view, rhi::LoadOp::load}};
+    pass.label = c.name();
+    pass.colors = {{c.view(t_.sums), rhi::LoadOp::load}};
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(faces_.pipeline);
-    c.encoder.set_bind_group(0, faces_group_);
+    c.encoder.set_bind_group(0, group);
     if (indices_) {
       c.encoder.set_index_buffer(indices_, rhi::IndexFormat::uint32);
       c.encoder.draw_indexed(face_vertices_);
@@ -196,98 +284,31 @@ class LightVolumeExecution final : public PassExecution {
     c.encoder.end_render_pass();
   }
 
-  static shading::RenderProgram program(PassContext& c, std::vector<rhi::ColorTargetState> targets, const char* vertex, const char* fragment) {
+  static plumbing::RenderProgram program(PassSetup& s, std::vector<rhi::ColorTargetState> targets, const char* vertex, const char* fragment) {
     rhi::RenderPipelineDesc pd;
-    pd.label = c.graph_pass().name + " " + fragment;
+    pd.label = s.pass_name() + " " + fragment;
     pd.colors = std::move(targets);
     pd.cull = rhi::CullMode::none;
-    return shading::create_render_program(c.device, pd, vertex, fragment);
+    return plumbing::create_render_program(s.device, pd, vertex, fragment);
   }
 
-  rhi::BufferId uniform(PassContext& c, const std::string& label, std::span<const std::byte> bytes,
-                        uint32_t usage = rhi::buffer_usage::uniform) const {
-    const rhi::BufferId b = c.device.create_buffer({c.graph_pass().name + " " + label, bytes.size(), usage | rhi::buffer_usage::copy_dst});
-    c.device.write_buffer(b, 0, bytes);
+  static rhi::BufferId buffer(PassSetup& s, const std::string& label, std::span<const std::byte> bytes,
+                              uint32_t usage = rhi::buffer_usage::uniform) {
+    const rhi::BufferId b = s.device.create_buffer({s.pass_name() + " " + label, bytes.size(), usage | rhi::buffer_usage::copy_dst});
+    s.device.write_buffer(b, 0, bytes);
     return b;
   }
 
   // Where the shadow map's view comes from: the graph's light_view, or a block that
   // shadows no light.
-  rhi::BufferId shadow_view(PassContext& c) const {
-    if (shadowed_) return c.buffer("light_view");
-    shading::ShadowViewBlock none{};
-    none.params[3] = -1.0f;
-    return uniform(c, "no shadow view", std::as_bytes(std::span(&none, 1)));
-  }
+  rhi::BufferId shadow_view(const PassContext& c) const { return shadowed_ ? c.buffer(t_.light_view) : no_shadow_view_; }
 
-  void prepare(PassContext& c) {
-    using rhi::BindGroupEntry;
-    shadowed_ = c.bound("shadow_map") && c.bound("light_view");
-    const Extent size = c.desc("fog_scattering").extent;
-    const Extent out = c.graph.output_size;
-    const uint32_t resolution = shadowed_ ? c.desc("shadow_map").extent.width : 1;
-    const uint32_t grid = std::max(2u, uint32_t(std::min<int64_t>(std::get<int64_t>(c.param("grid")), resolution)));
-    const bool steps = c.variant() == "texel_steps";
-    face_vertices_ = (grid + 1) * (grid + 1) * kVerticesPerCell;
-    if (shadowed_ && !steps) {
-      const std::vector<uint32_t> indices = height_field_indices(grid);
-      face_vertices_ = uint32_t(indices.size());
-      indices_ = uniform(c, "indices", std::as_bytes(std::span(indices)), rhi::buffer_usage::index);
-    }
-
-    GpuLightVolumeParams params{};
-    shading::to_floats(faces_clip(c.scene->camera, double(out.width) / double(out.height)), params.camera_clip);
-    params.sizes[0] = int32_t(grid);
-    params.sizes[2] = int32_t(size.width);
-    params.sizes[3] = int32_t(size.height);
-    const rhi::BufferId params_buffer = uniform(c, "params", std::as_bytes(std::span(&params, 1)));
-    fog::FogFrameInputs frame_inputs;
-    frame_inputs.grid = size;
-    frame_inputs.range = {c.scene->camera.near, c.scene->camera.far, shading::FroxelDistribution::linear};
-    frame_inputs.ambient_radiance = fog::ambient_param(c);
-    frame_inputs.jitter = false;
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, frame_inputs);
-    const rhi::BufferId frame_buffer = uniform(c, "frame", std::as_bytes(std::span(&frame, 1)));
-    const rhi::SamplerId nearest = c.device.create_sampler({"nearest"});
-    const rhi::BufferId view = shadow_view(c);
-    const std::string& name = c.graph_pass().name;
-
-    light_frame_ = make_image(c.device, name + " light_frame", Format::rgba32_float, {kLightFrameTexels, 1, 1});
-    cells_ = make_image(c.device, name + " cells", Format::r32_float, {grid, grid, 1});
-    ends_ = make_image(c.device, name + " ends", Format::rgba32_float, size);
-    sums_ = make_image(c.device, name + " sums", Format::rgba32_float, size);
-
-    ends_program_ = program(c, {{Format::rgba32_float}, {Format::rgba32_float}}, "fullscreen.vert", "light_volume_ends.frag");
-    ends_group_ = c.device.create_bind_group({name + " ends", ends_program_.layouts[0],
-                                              {BindGroupEntry::of(0, frame_buffer), BindGroupEntry::of(1, c.view("depth")),
-                                               BindGroupEntry::of(2, nearest), BindGroupEntry::of(3, view), BindGroupEntry::of(4, params_buffer)}});
-    resolve_ = program(c, {{c.desc("fog_scattering").format}, {c.desc("fog_transmittance").format}}, "fullscreen.vert",
-                       "light_volume_resolve.frag");
-    resolve_group_ = c.device.create_bind_group({name + " resolve", resolve_.layouts[0],
-                                                 {BindGroupEntry::of(0, sums_.view), BindGroupEntry::of(1, ends_.view),
-                                                  BindGroupEntry::of(2, nearest), BindGroupEntry::of(3, frame_buffer)}});
-    if (!shadowed_) return;
-
-    unproject_ = program(c, {{Format::rgba32_float}}, "fullscreen.vert", "light_volume_unproject.frag");
-    unproject_group_ = c.device.create_bind_group({name + " light_frame", unproject_.layouts[0], {BindGroupEntry::of(0, view)}});
-    cells_program_ = program(c, {{Format::r32_float}}, "fullscreen.vert", "light_volume_cells.frag");
-    cells_group_ = c.device.create_bind_group({name + " cells", cells_program_.layouts[0],
-                                               {BindGroupEntry::of(0, c.view("shadow_map")), BindGroupEntry::of(1, nearest),
-                                                BindGroupEntry::of(2, view), BindGroupEntry::of(3, params_buffer)}});
-    faces_ = program(c, {{Format::rgba32_float, rhi::BlendMode::additive}}, steps ? "light_volume_faces.vert" : "light_volume_surface.vert",
-                     "light_volume_faces.frag");
-    faces_group_ = c.device.create_bind_group({name + " faces", faces_.layouts[0],
-                                               {BindGroupEntry::of(0, params_buffer), BindGroupEntry::of(1, cells_.view),
-                                                BindGroupEntry::of(2, light_frame_.view), BindGroupEntry::of(3, nearest),
-                                                BindGroupEntry::of(4, frame_buffer), BindGroupEntry::of(5, ends_.view)}});
-  }
-
+  const LightVolumeTable& t_;
   bool shadowed_ = false;
   uint32_t face_vertices_ = 0;
   rhi::BufferId indices_;  // height_field: the surface's triangles
-  Image light_frame_, cells_, ends_, sums_;
-  shading::RenderProgram unproject_, cells_program_, ends_program_, faces_, resolve_;
-  rhi::BindGroupId unproject_group_, cells_group_, ends_group_, faces_group_, resolve_group_;
+  rhi::BufferId params_, frame_, no_shadow_view_;
+  plumbing::RenderProgram unproject_, cells_program_, ends_program_, faces_, resolve_;
 };
 
 // The technique needs a homogeneous medium: the global fog and nothing else (one message).
@@ -301,38 +322,16 @@ std::vector<ParamProblem> check_homogeneous_fog(const PassDecl&, const Scene& sc
                "the scene has " + has + " (use raymarch_fog or the froxel chain)"}};
 }
 
-SlotDecl fog_image(std::string name, std::string doc) {
-  SlotDecl s = slot_out(std::move(name), ResourceKind::texture2d, Usage::color_attachment, Format::rgba16_float, SizeSpec::of_output(), std::move(doc));
-  s.format_overridable = true;
-  return s;
-}
-
 }  // namespace
 
 PassDecl light_volume_pass() {
-  PassDecl d;
-  d.name = "light_volume";
-  d.kind = PassKind::graphics;
-  d.doc = "Volumetric shadows of the shadow map's light in homogeneous fog by polygonal light volumes (Billeter et al. 2010): "
-          "the shadow volume's faces add the analytic in-scattering integral, exact with respect to the shadow map.";
-  d.variants = {
-      {"height_field", "Billeter et al.'s mesh: one vertex per cell, the surface interpolated between cells (fast; approximate at depth edges)"},
-      {"texel_steps", "one flat cap per cell with walls between cells: the shadowed region exactly as the hard shadow lookup sees it"},
-  };
-  d.params = {
-      param_int("grid", 256, 2, 8192, "cells", "cells per side of the grid over the shadow map (at most its resolution; texel_steps at its resolution: exact)"),
-      param_vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the fog scatters (unshadowed)"),
-  };
-  SlotDecl depth = slot_in("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth (d32; 1 where nothing was drawn)");
-  depth.format = Format::d32_float;
-  SlotDecl map = slot_optional_in("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map (none: no shadows)");
-  map.format = Format::d32_float;
-  d.slots = {depth, map, slot_optional_in("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view"),
-             fog_image("fog_scattering", "in-scattered radiance toward the camera, rgb (W/(m²·sr))"),
-             fog_image("fog_transmittance", "transmittance from the camera to the surface (or the far plane), rgb")};
-  d.needs = feature_bit(SceneFeature::medium);
+  PassDecl d = pass_type<LightVolumeTable, LightVolumeExecution>();
   d.check_scene = check_homogeneous_fog;
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new LightVolumeExecution()); };
+  for (StepDecl& step : d.steps) {  // the steps' decls were copied before: give them the check too
+    PassDecl with_check = *step.decl;
+    with_check.check_scene = check_homogeneous_fog;
+    step.decl = std::make_shared<const PassDecl>(std::move(with_check));
+  }
   return d;
 }
 

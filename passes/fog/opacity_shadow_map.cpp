@@ -4,80 +4,94 @@
 // plane to its far plane; each texel holds the optical depth τ from the light to the
 // layer's centre, marched once per column. froxel_scatter and scene read e^(−τ) with one
 // trilinear lookup instead of marching toward the light from every point they light.
+// The map depends on the scene's lights and media and on the light view alone (no
+// jitter, no frame number): the pass is cached, and a frame whose cache key has not
+// changed keeps last frame's map (PassDecl::cached).
 // Shaders: shaders/opacity_shadow_map.comp, shaders/include/opacity_shadow.glsl.
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/fog/fog_passes.h"
-#include "passes/shading/programs.h"
+#include "passes/plumbing/programs.h"
+#include "passes/plumbing/shadow_view.h"
+#include "passes/uniform_mirrors.h"
 
 namespace volgraph {
 namespace {
-
-struct GpuOpacityParams {
-  int32_t steps[4];   // x per layer, y toward the light from the column's start
-  float distances[4];  // x the march toward a directional light (m)
-};
-
-class OpacityShadowMapExecution final : public PassExecution {
- public:
-  void record(PassContext& c) override {
-    if (!program_.pipeline) prepare(c);
-    const Extent size = c.desc("optical_depth").extent;
-    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_}, {size.width, size.height, 1});  // a column each
-  }
-
- private:
-  void prepare(PassContext& c) {
-    using rhi::BindGroupEntry;
-    program_ = shading::create_compute_program(c.device, "opacity_shadow_map.comp");
-    fog::FogFrameInputs frame_inputs;  // the lights and media; no froxel grid
-    frame_inputs.range = {c.scene->camera.near, c.scene->camera.far, shading::FroxelDistribution::linear};
-    frame_inputs.jitter = false;
-    const GpuOpacityParams params{{int32_t(std::get<int64_t>(c.param("steps_per_layer"))),
-                                   int32_t(std::get<int64_t>(c.param("light_steps"))), 0, 0},
-                                  {float(std::get<double>(c.param("distance"))), 0, 0, 0}};
-    const std::string& name = c.graph_pass().name;
-    group_ = c.device.create_bind_group(
-        {name, program_.layouts[0],
-         {BindGroupEntry::of(0, shading::create_uniform_block(c.device, name + " frame", fog::make_fog_frame(c, frame_inputs))),
-          BindGroupEntry::of(1, c.buffer("light_view")), BindGroupEntry::of(2, c.view("optical_depth")),
-          BindGroupEntry::of(3, shading::create_uniform_block(c.device, name + " params", params))}});
-  }
-
-  shading::ComputeProgram program_;
-  rhi::BindGroupId group_;
-};
 
 std::vector<ParamProblem> check_media(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
   return fog::media_fit_problems(scene, "shadowed");
 }
 
+struct OpacityShadowMapTable : PassTable {
+  OpacityShadowMapTable()
+      : PassTable("opacity_shadow_map", PassKind::compute,
+                  "The media's optical depth from a shadow map's light, in layers over its light view (Kim & Neumann 2001).") {
+    decl.needs = feature_bit(SceneFeature::medium);
+    decl.check_scene = check_media;
+    // The shader reads the frame block's lights and media (not its camera or grid) and
+    // the light view (whose key carries shadow_map's camera fit).
+    decl.cached = true;
+    decl.frame_invariant = true;
+    decl.reads_scene = part_bit(ScenePart::lights) | part_bit(ScenePart::media);
+  }
+  // Variants.
+  VariantHandle layered =
+      variant("layered", "`layers` evenly spaced layers along each light ray, from the view's near plane to its far plane");
+  // Parameters.
+  ParamHandle<int64_t> resolution = integer("resolution", 64, 8, 4096, "texels", "columns per side of the light view");
+  ParamHandle<int64_t> layers = integer("layers", 32, 1, 512, "", "layers along each light ray");
+  ParamHandle<int64_t> steps_per_layer = integer("steps_per_layer", 2, 1, 64, "", "march steps between two layers' centres");
+  ParamHandle<int64_t> light_steps = integer("light_steps", 16, 0, 256, "",
+                                             "march steps from the view's near plane back toward the light (media outside the view)");
+  ParamHandle<double> distance = number("distance", 50, 0.01, 1e5, "m", "how far that march goes toward a directional light");
+  // Slots.
+  SlotHandle light_view =
+      input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view (shadow_map.light_view)");
+  SlotHandle optical_depth = output("optical_depth", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
+                                    SizeSpec::square_layers_of("resolution", "layers"), "τ rgb from the light to each layer's centre");
+};
+
+class OpacityShadowMapExecution final : public PassExecution {
+ public:
+  explicit OpacityShadowMapExecution(const OpacityShadowMapTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    program_ = plumbing::create_compute_program(s.device, "opacity_shadow_map.comp");
+    // The frame block is written when the pass runs, the view by shadow_map: checked once.
+    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");
+    plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, 0, 1, s.name() + " light_view");
+    frame_ = s.device.create_buffer({s.name() + " frame", sizeof(fog::GpuFogFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    const GpuOpacityParams params{{int32_t(s.param(t_.steps_per_layer)), int32_t(s.param(t_.light_steps)), 0, 0},
+                                  {float(s.param(t_.distance)), 0, 0, 0}};
+    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 3, s.name() + " params", params);
+  }
+
+  // Runs when the cache key changed (the first frame, or new lights, media or light
+  // view): the frame block is packed from the scene as it is now.
+  void record(PassContext& c) override {
+    using rhi::BindGroupEntry;
+    fog::FogFrameInputs frame_inputs;  // the lights and media; no froxel grid
+    frame_inputs.range = {c.scene->camera.near, c.scene->camera.far, physics::FroxelDistribution::linear};
+    frame_inputs.jitter = false;
+    const fog::GpuFogFrame frame = fog::make_fog_frame(c, 0, frame_inputs);  // frame 0: the map is frame invariant
+    c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
+    const rhi::BindGroupId group = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, frame_),
+                                                                      BindGroupEntry::of(1, c.buffer(t_.light_view)),
+                                                                      BindGroupEntry::of(2, c.view(t_.optical_depth)),
+                                                                      BindGroupEntry::of(3, params_)});
+    const Extent size = c.extent(t_.optical_depth);
+    plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, 1});  // a column each
+  }
+
+ private:
+  const OpacityShadowMapTable& t_;
+  plumbing::ComputeProgram program_;
+  rhi::BufferId frame_, params_;
+};
+
 }  // namespace
 
-PassDecl opacity_shadow_map_pass() {
-  PassDecl d;
-  d.name = "opacity_shadow_map";
-  d.kind = PassKind::compute;
-  d.doc = "The media's optical depth from a shadow map's light, in layers over its light view (Kim & Neumann 2001).";
-  d.variants = {{"layered", "`layers` evenly spaced layers along each light ray, from the view's near plane to its far plane"}};
-  d.params = {
-      param_int("resolution", 64, 8, 4096, "texels", "columns per side of the light view"),
-      param_int("layers", 32, 1, 512, "", "layers along each light ray"),
-      param_int("steps_per_layer", 2, 1, 64, "", "march steps between two layers' centres"),
-      param_int("light_steps", 16, 0, 256, "",
-                "march steps from the view's near plane back toward the light (media outside the view)"),
-      param_number("distance", 50, 0.01, 1e5, "m", "how far that march goes toward a directional light"),
-  };
-  d.slots = {
-      slot_in("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view (shadow_map.light_view)"),
-      slot_out("optical_depth", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-               SizeSpec::square_layers_of("resolution", "layers"), "τ rgb from the light to each layer's centre"),
-  };
-  d.needs = feature_bit(SceneFeature::medium);
-  d.check_scene = check_media;
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new OpacityShadowMapExecution()); };
-  return d;
-}
+PassDecl opacity_shadow_map_pass() { return pass_type<OpacityShadowMapTable, OpacityShadowMapExecution>(); }
 
 }  // namespace volgraph

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -14,24 +16,64 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/pass_decl.h"
 #include "graph/scene/scene.h"
+#include "passes/plumbing/programs.h"
 
 namespace volgraph::fog {
 
-std::vector<SlotDecl> pixel_fog_slots();
+// The techniques' shared slots, in this order; a technique's table derives from it and
+// adds its variants and parameters.
+struct PixelFogTable : PassTable {
+  PixelFogTable(std::string name, std::string doc) : PassTable(std::move(name), PassKind::compute, std::move(doc)) {
+    decl.needs = feature_bit(SceneFeature::medium);
+  }
+  SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth (d32; 1 where nothing was drawn)",
+                           {.format = Format::d32_float});
+  SlotHandle fog_scattering = output("fog_scattering", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
+                                     SizeSpec::of_output(), "in-scattered radiance toward the camera, rgb (W/(m²·sr))",
+                                     {.size_overridable = true});
+  SlotHandle fog_transmittance = output("fog_transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
+                                        SizeSpec::of_output(),
+                                        "transmittance from the camera to the surface (or the far plane), rgb",
+                                        {.size_overridable = true});
+};
 
 // What a technique hands its shader: the bytes of its Params block (binding 5; empty: it
-// has none) and the radiance the media scatter uniformly (the frame block's ambient).
+// has none) with the offsets of that mirror struct's members (checked against the
+// shader's block at setup), and the radiance the media scatter uniformly (the frame
+// block's ambient).
 struct PixelFogInputs {
   std::vector<std::byte> params;
+  std::vector<uint64_t> params_offsets;
   Vec3 ambient{0, 0, 0};
+
+  // Inputs whose Params block is `block`, a mirror struct (Block::offsets()).
+  template <typename Block>
+  static PixelFogInputs with_params(const Block& block, Vec3 ambient) {
+    const auto bytes = std::as_bytes(std::span(&block, 1));
+    const auto offsets = Block::offsets();
+    return {{bytes.begin(), bytes.end()}, {offsets.begin(), offsets.end()}, ambient};
+  }
 };
-using PixelFogInputsOf = PixelFogInputs (*)(const PassContext& c);
+using PixelFogInputsOf = std::function<PixelFogInputs(const PassSetup& s)>;
 
-// The technique's execution: `shader` dispatched over the two images, with the inputs
-// `inputs_of` gives on the first frame.
-MakeExecution pixel_fog_execution(std::string shader, PixelFogInputsOf inputs_of);
+// The techniques' execution: `shader` dispatched over the two images, with the inputs
+// `inputs_of` gives at setup (they do not change between frames). A technique's
+// execution derives from it to name its shader and inputs.
+class PixelFogExecution : public PassExecution {
+ public:
+  PixelFogExecution(const PixelFogTable& table, std::string shader, PixelFogInputsOf inputs_of)
+      : t_(table), shader_(std::move(shader)), inputs_of_(std::move(inputs_of)) {}
 
-// The ambient parameter's value, for techniques that declare one.
-Vec3 ambient_param(const PassContext& c);
+  void setup(PassSetup& s) override;
+  void record(PassContext& c) override;
+
+ private:
+  const PixelFogTable& t_;
+  std::string shader_;
+  PixelFogInputsOf inputs_of_;
+  plumbing::ComputeProgram program_;
+  rhi::BufferId frame_, params_;
+};
+
 
 }  // namespace volgraph::fog

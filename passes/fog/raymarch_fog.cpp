@@ -2,122 +2,151 @@
 // 2009; Hillaire 2015's energy-conserving step). Per pixel of its output — the frame's
 // resolution or half of it — a march from the camera to the scene's surface (to view
 // depth `max_distance` where there is none) in `steps` equal steps sampled at a
-// per-pixel jittered point (interleaved gradient noise, per frame); per sample the media,
-// every light through the medium's HG phase, the shadow map's visibility when one is
-// wired, and volumetric shadows by a secondary march of `shadow_steps` toward each
-// light. Writes fog_apply's two images: in-scattered radiance and transmittance.
+// per-pixel jittered point (interleaved gradient noise, per frame), integrated by
+// Hillaire's step (eq. 14.16) whatever the variant; per sample the media and their
+// in-scattering (shaders/include/in_scattering.glsl, shared with froxel_scatter): every
+// light through the phase function — the variant, the same five as froxel_scatter's, codes
+// from shaders/include/phase_codes.h —, the shadow map's visibility when one is wired, and
+// volumetric shadows by a secondary march of `shadow_steps` toward each light. Writes
+// fog_apply's two images: in-scattered radiance and transmittance.
 // Shaders: shaders/raymarch_fog.comp, raymarch_fog_shadowed.comp
-// (shaders/include/raymarch_fog_body.glsl, light_transmittance.glsl).
+// (shaders/include/raymarch_fog_body.glsl, in_scattering.glsl, light_transmittance.glsl).
+#include <cstddef>
+
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/fog/fog_passes.h"
-#include "passes/shading/programs.h"
+#include "passes/plumbing/programs.h"
+#include "passes/uniform_mirrors.h"
+#include "shaders/include/phase_codes.h"
 
 namespace volgraph {
 namespace {
 
-// std140 mirror of raymarch_fog_body.glsl's Params block.
-struct GpuRaymarchParams {
-  int32_t steps[4];
-  float distances[4];
-  float jitter[4];
+SizeSpec fog_image_size() { return SizeSpec::of_output_divided_by_choice("resolution", {{"full", 1}, {"half", 2}}); }
+
+struct RaymarchFogTable : PassTable {
+  RaymarchFogTable()
+      : PassTable("raymarch_fog", PassKind::compute,
+                  "Per-pixel ray marching through the media to the scene's depth (equal steps, a per-pixel jittered sample in each, "
+                  "Hillaire's energy-conserving step): in-scattering (the phase variant, shadow map, volumetric shadows) and transmittance.") {
+    decl.needs = feature_bit(SceneFeature::medium);
+    decl.check_scene = [](const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
+      return fog::media_fit_problems(scene, "marched");
+    };
+  }
+  // Variants: the phase function, as froxel_scatter's (the first is the default).
+  VariantHandle hg = variant("hg", "Henyey–Greenstein with the medium's g", PHASE_HG);
+  VariantHandle isotropic = variant("isotropic", "p = 1/4π", PHASE_ISOTROPIC);
+  VariantHandle rayleigh = variant("rayleigh", "3/(16π)·(1 + cos²θ)", PHASE_RAYLEIGH);
+  VariantHandle schlick = variant("schlick", "Schlick's approximation of HG, k = 1.55g − 0.55g³ (clamped)", PHASE_SCHLICK);
+  VariantHandle dual_hg = variant("dual_hg", "forward HG (the medium's g) and backward HG (g_back) mixed by w_forward", PHASE_DUAL_HG);
+  // Parameters.
+  ParamHandle<double> g_back = number("g_back", -0.3, -0.999, 0.999, "", "dual_hg: the backward lobe's g");
+  ParamHandle<double> w_forward = number("w_forward", 0.7, 0, 1, "", "dual_hg: the forward lobe's weight");
+  ParamHandle<int64_t> steps = integer("steps", 64, 1, 4096, "", "equal steps from the camera to the surface");
+  ParamHandle<int64_t> shadow_steps =
+      integer("shadow_steps", 0, 0, 1024, "", "steps of the march toward each light for volumetric shadows (0: off)");
+  ParamHandle<double> max_distance = number("max_distance", 100, 1e-3, 1e7, "m",
+                                            "view depth the march reaches where no surface is (at most the camera's far plane)");
+  ParamHandle<double> shadow_distance =
+      number("shadow_distance", 50, 1e-3, 1e7, "m", "how far the march toward a directional light goes");
+  ParamHandle<std::string> resolution =
+      choice("resolution", "full", {"full", "half"}, "the outputs' size: the frame's or half of it in x and y");
+  ParamHandle<bool> jitter =
+      flag("jitter", true, "sample each step at a per-pixel, per-frame point (interleaved gradient noise); off: its midpoint");
+  ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
+  ParamHandle<std::array<double, 3>> ambient = vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the media scatter");
+  // Slots.
+  SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
+  SlotHandle shadow_map = optional_input("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map",
+                                         {.format = Format::d32_float});
+  SlotHandle light_view = optional_input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view");
+  SlotHandle fog_scattering = output("fog_scattering", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
+                                     fog_image_size(), "in-scattered radiance toward the camera, rgb");
+  SlotHandle fog_transmittance = output("fog_transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
+                                        fog_image_size(), "transmittance from the camera to the surface, rgb");
 };
 
 class RaymarchFogExecution final : public PassExecution {
  public:
+  explicit RaymarchFogExecution(const RaymarchFogTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    using namespace rhi;
+    shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
+    program_ = plumbing::create_compute_program(s.device, shadowed_ ? "raymarch_fog_shadowed.comp" : "raymarch_fog.comp");
+    plumbing::check_uniform_mirror<GpuRaymarchParams>(program_, 0, 5, s.name() + " params");
+    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");
+    phase_ = {s.variant().shader_code, float(s.param(t_.g_back)), float(s.param(t_.w_forward))};
+    frame_ = s.device.create_buffer({"raymarch_fog frame", sizeof(fog::GpuFogFrame), buffer_usage::uniform | buffer_usage::copy_dst});
+    params_ = s.device.create_buffer({"raymarch_fog params", sizeof(GpuRaymarchParams), buffer_usage::uniform | buffer_usage::copy_dst});
+  }
+
   void record(PassContext& c) override {
-    if (!program_.pipeline) prepare(c);
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, frame_inputs(c));
+    using rhi::BindGroupEntry;
+    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, frame_inputs(c));
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     const GpuRaymarchParams params = march_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
-    shading::dispatch(c.encoder, c.graph_pass().name, program_, {group_, shadow_group_}, c.desc("fog_scattering").extent);
+    const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
+    const rhi::BindGroupId group = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, frame_), BindGroupEntry::of(1, c.view(t_.depth)),
+                                                                      BindGroupEntry::of(2, nearest),
+                                                                      BindGroupEntry::of(3, c.view(t_.fog_scattering)),
+                                                                      BindGroupEntry::of(4, c.view(t_.fog_transmittance)),
+                                                                      BindGroupEntry::of(5, params_)});
+    rhi::BindGroupId shadow;
+    if (shadowed_) {
+      shadow = c.bind_group(program_.layouts[1], {BindGroupEntry::of(0, c.view(t_.shadow_map)), BindGroupEntry::of(1, nearest),
+                                                  BindGroupEntry::of(2, c.buffer(t_.light_view))});
+    }
+    plumbing::dispatch(c.encoder, c.name(), program_, {group, shadow}, c.extent(t_.fog_scattering));
   }
 
  private:
   // The frame block's camera, lights, media and ambient radiance (its froxel grid is
   // unused here: the output's size stands in for it).
-  static fog::FogFrameInputs frame_inputs(const PassContext& c) {
+  fog::FogFrameInputs frame_inputs(const PassContext& c) const {
     fog::FogFrameInputs in;
-    in.grid = c.desc("fog_scattering").extent;
+    in.grid = c.extent(t_.fog_scattering);
     in.range.near = c.scene->camera.near;
     in.range.far = c.scene->camera.far;
-    in.ambient_radiance = std::get<std::array<double, 3>>(c.param("ambient"));
+    in.ambient_radiance = c.param(t_.ambient);
     in.jitter = false;
     return in;
   }
 
-  static GpuRaymarchParams march_params(const PassContext& c) {
+  GpuRaymarchParams march_params(const PassContext& c) const {
     GpuRaymarchParams p{};
-    p.steps[0] = int32_t(std::get<int64_t>(c.param("steps")));
-    p.steps[1] = int32_t(std::get<int64_t>(c.param("shadow_steps")));
+    p.steps[0] = int32_t(c.param(t_.steps));
+    p.steps[1] = int32_t(c.param(t_.shadow_steps));
     // Where no surface is, never past the camera's far plane: the scene ends there (as in the reference).
-    p.distances[0] = float(std::min(std::get<double>(c.param("max_distance")), c.scene->camera.far));
-    p.distances[1] = float(std::get<double>(c.param("shadow_distance")));
-    p.jitter[0] = std::get<bool>(c.param("jitter")) ? 1.0f : 0.0f;
+    p.distances[0] = float(std::min(c.param(t_.max_distance), c.scene->camera.far));
+    p.distances[1] = float(c.param(t_.shadow_distance));
+    p.jitter[0] = c.param(t_.jitter) ? 1.0f : 0.0f;
     p.jitter[1] = float(c.frame % 64);
+    p.modes[0] = phase_.code;
+    p.lobes[0] = phase_.g_back;
+    p.lobes[1] = phase_.w_forward;
     return p;
   }
 
-  void prepare(PassContext& c) {
-    using namespace rhi;
-    const bool shadowed = c.bound("shadow_map") && c.bound("light_view") && std::get<bool>(c.param("shadows"));
-    program_ = shading::create_compute_program(c.device, shadowed ? "raymarch_fog_shadowed.comp" : "raymarch_fog.comp");
-    frame_ = c.device.create_buffer({"raymarch_fog frame", sizeof(fog::GpuFogFrame), buffer_usage::uniform | buffer_usage::copy_dst});
-    params_ = c.device.create_buffer({"raymarch_fog params", sizeof(GpuRaymarchParams), buffer_usage::uniform | buffer_usage::copy_dst});
-    const SamplerId nearest = c.device.create_sampler({"nearest"});
-    group_ = c.device.create_bind_group({"raymarch_fog", program_.layouts[0],
-                                         {BindGroupEntry::of(0, frame_), BindGroupEntry::of(1, c.view("depth")),
-                                          BindGroupEntry::of(2, nearest), BindGroupEntry::of(3, c.view("fog_scattering")),
-                                          BindGroupEntry::of(4, c.view("fog_transmittance")), BindGroupEntry::of(5, params_)}});
-    if (!shadowed) return;
-    shadow_group_ = c.device.create_bind_group({"raymarch_fog shadow", program_.layouts[1],
-                                                {BindGroupEntry::of(0, c.view("shadow_map")), BindGroupEntry::of(1, nearest),
-                                                 BindGroupEntry::of(2, c.buffer("light_view"))}});
-  }
+  // The phase variant (its code) and the dual-lobe HG's parameters, read once.
+  struct Phase {
+    int32_t code = PHASE_HG;
+    float g_back = 0, w_forward = 0;
+  };
 
-  shading::ComputeProgram program_;
+  const RaymarchFogTable& t_;
+  bool shadowed_ = false;
+  Phase phase_;
+  plumbing::ComputeProgram program_;
   rhi::BufferId frame_, params_;
-  rhi::BindGroupId group_, shadow_group_;
 };
-
-SlotDecl fog_image(std::string name, std::string doc) {
-  return slot_out(std::move(name), ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
-                  SizeSpec::of_output_divided_by_choice("resolution", {{"full", 1}, {"half", 2}}), std::move(doc));
-}
 
 }  // namespace
 
-PassDecl raymarch_fog_pass() {
-  PassDecl d;
-  d.name = "raymarch_fog";
-  d.kind = PassKind::compute;
-  d.doc = "Per-pixel ray marching through the media to the scene's depth: in-scattering (HG, shadow map, volumetric shadows) and transmittance.";
-  d.variants = {{"hillaire", "equal steps with a per-pixel jittered sample in each, Hillaire's energy-conserving step (eq. 14.16)"}};
-  d.params = {
-      param_int("steps", 64, 1, 4096, "", "equal steps from the camera to the surface"),
-      param_int("shadow_steps", 0, 0, 1024, "", "steps of the march toward each light for volumetric shadows (0: off)"),
-      param_number("max_distance", 100, 1e-3, 1e7, "m", "view depth the march reaches where no surface is (at most the camera's far plane)"),
-      param_number("shadow_distance", 50, 1e-3, 1e7, "m", "how far the march toward a directional light goes"),
-      param_choice("resolution", "full", {"full", "half"}, "the outputs' size: the frame's or half of it in x and y"),
-      param_bool("jitter", true, "sample each step at a per-pixel, per-frame point (interleaved gradient noise); off: its midpoint"),
-      param_bool("shadows", true, "sample the shadow map when one is wired"),
-      param_vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the media scatter"),
-  };
-  d.slots = {
-      slot_in("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth"),
-      slot_optional_in("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map"),
-      slot_optional_in("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view"),
-      fog_image("fog_scattering", "in-scattered radiance toward the camera, rgb"),
-      fog_image("fog_transmittance", "transmittance from the camera to the surface, rgb"),
-  };
-  d.slots[0].format = Format::d32_float;
-  d.slots[1].format = Format::d32_float;
-  d.needs = feature_bit(SceneFeature::medium);
-  d.check_scene = [](const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) { return fog::media_fit_problems(scene, "marched"); };
-  d.make_execution = [] { return std::unique_ptr<PassExecution>(new RaymarchFogExecution()); };
-  return d;
-}
+PassDecl raymarch_fog_pass() { return pass_type<RaymarchFogTable, RaymarchFogExecution>(); }
 
 }  // namespace volgraph

@@ -4,49 +4,33 @@
 
 namespace volgraph::fog {
 
-std::vector<ParamDecl> temporal_params() {
-  return {
-      param_number("alpha", 0.1, 1e-3, 1, "",
-                   "weight of a new frame in the moving average once the history holds 1/alpha frames (earlier frames are "
-                   "averaged equally); 1: no accumulation"),
-      param_bool("reproject", true, "read the history where the last frame's camera saw the point; off: at the same texel"),
-  };
+void TemporalExecution::setup(PassSetup& s) {
+  program_ = plumbing::create_compute_program(s.device, shader_);
+  // The Params are written every frame, the frame block by froxel_voxelize or the pass: checked once.
+  plumbing::check_uniform_mirror<GpuTemporalParams>(program_, 0, params_binding_, s.name() + " params");
+  plumbing::check_wrapped_uniform_mirror<GpuFogFrame>(program_, 0, 0, s.name() + " frame");
+  params_ = s.device.create_buffer({s.name() + " params", sizeof(GpuTemporalParams),
+                                    rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+  setup_blocks(s);
 }
 
 void TemporalExecution::record(PassContext& c) {
-  if (!program_.pipeline) prepare(c);
   write_blocks(c);
   const GpuTemporalParams params = frame_params(c);
   c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
-  rhi::BindGroupId& group = groups_[c.parity()];
-  if (!group) group = c.device.create_bind_group({c.graph_pass().name, program_.layouts[0], entries(c)});
-  c.encoder.begin_compute_pass(c.graph_pass().name);
-  c.encoder.set_pipeline(program_.pipeline);
-  c.encoder.set_bind_group(0, group);
-  const auto groups = program_.groups_for(c.desc(output_).extent);
-  c.encoder.dispatch(groups[0], groups[1], groups[2]);
-  c.encoder.end_compute_pass();
-}
-
-void TemporalExecution::prepare(PassContext& c) {
-  program_ = shading::create_compute_program(c.device, shader_);
-  params_ = c.device.create_buffer({c.graph_pass().name + " params", sizeof(GpuTemporalParams),
-                                    rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
-  nearest_ = c.device.create_sampler({"nearest"});
-  rhi::SamplerDesc linear{"linear"};
-  linear.filter = rhi::Filter::linear;
-  linear_ = c.device.create_sampler(linear);
+  const rhi::BindGroupId group = c.bind_group(program_.layouts[0], entries(c));
+  plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(output_));
 }
 
 // The last frame's camera is the view the history was made with (the executor lets the
 // scene's camera change between frames); the first frame has none.
 GpuTemporalParams TemporalExecution::frame_params(const PassContext& c) {
-  const GpuViewRays view = pack_view_rays(c.scene->camera, c.graph.output_size);
+  const GpuViewRays view = pack_view_rays(c.scene->camera, c.frame_size());
   GpuTemporalParams p{};
   p.previous_view = last_view_.value_or(view);
-  p.blend[0] = float(std::get<double>(c.param("alpha")));
+  p.blend[0] = float(c.param(table_.alpha));
   p.blend[1] = c.history_valid && last_view_ ? 1.0f : 0.0f;
-  p.blend[2] = std::get<bool>(c.param("reproject")) ? 1.0f : 0.0f;
+  p.blend[2] = c.param(table_.reproject) ? 1.0f : 0.0f;
   last_view_ = view;
   return p;
 }

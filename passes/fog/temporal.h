@@ -1,8 +1,10 @@
 // What the temporal accumulation passes (froxel_temporal, pixel_temporal) share: their
-// parameters, their Params block (shaders/include/temporal_blend.glsl's weight, the
-// last frame's view to reproject by) and their execution — each frame the Params with
-// the camera remembered from the last frame, the bind group of this frame's parity (the
-// history pairs' objects swap every frame), one dispatch over the output.
+// parameters (a table the passes' tables derive from), their Params block
+// (shaders/include/temporal_blend.glsl's weight, the last frame's view to reproject by)
+// and their execution — each frame the Params with the camera remembered from the last
+// frame, the bind group of this frame's objects from the device's cache (the history
+// pairs' objects swap every frame: the cache holds a group for each), one dispatch over
+// the output.
 #pragma once
 
 #include <array>
@@ -13,7 +15,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/pass_decl.h"
 #include "passes/fog/fog_frame.h"
-#include "passes/shading/programs.h"
+#include "passes/plumbing/programs.h"
 
 namespace volgraph::fog {
 
@@ -21,36 +23,52 @@ namespace volgraph::fog {
 struct GpuTemporalParams {
   GpuViewRays previous_view;
   float blend[4];  // alpha, history valid (0/1), reproject (0/1), unused
+  static constexpr std::array<uint64_t, 2> offsets() {
+    return {offsetof(GpuTemporalParams, previous_view), offsetof(GpuTemporalParams, blend)};
+  }
 };
 
-// alpha (the weight of a new frame once the history is long) and reproject.
-std::vector<ParamDecl> temporal_params();
+// The passes' shared parameters, alpha (the weight of a new frame once the history is
+// long) and reproject; a pass's table derives from it and adds its variants and slots.
+struct TemporalTable : PassTable {
+  TemporalTable(std::string name, std::string doc) : PassTable(std::move(name), PassKind::compute, std::move(doc)) {
+    decl.needs = feature_bit(SceneFeature::medium);
+  }
+  ParamHandle<double> alpha =
+      number("alpha", 0.1, 1e-3, 1, "",
+             "weight of a new frame in the moving average once the history holds 1/alpha frames (earlier frames are "
+             "averaged equally); 1: no accumulation");
+  ParamHandle<bool> reproject =
+      flag("reproject", true, "read the history where the last frame's camera saw the point; off: at the same texel");
+};
 
 class TemporalExecution : public PassExecution {
  public:
-  // `shader` in shaders/, dispatched one invocation per texel of output slot `output`.
-  TemporalExecution(std::string shader, std::string output) : shader_(std::move(shader)), output_(std::move(output)) {}
+  // `shader` in shaders/, dispatched one invocation per texel of output slot `output`;
+  // its Params block at set 0, binding `params_binding` (its frame block at binding 0).
+  TemporalExecution(const TemporalTable& table, std::string shader, SlotHandle output, uint32_t params_binding)
+      : table_(table), shader_(std::move(shader)), output_(output), params_binding_(params_binding) {}
+  void setup(PassSetup& s) final;
   void record(PassContext& c) final;
 
  protected:
-  // The bind group's entries for this frame's objects (params(), nearest(), linear()).
+  // The bind group's entries for this frame's objects (params() the Params block).
   virtual std::vector<rhi::BindGroupEntry> entries(PassContext& c) = 0;
-  // Per-frame blocks besides the Params (called before entries on the first frame).
+  // Blocks besides the Params: made at setup, written every frame (before entries).
+  virtual void setup_blocks(PassSetup&) {}
   virtual void write_blocks(PassContext&) {}
   rhi::BufferId params() const { return params_; }
-  rhi::SamplerId nearest() const { return nearest_; }
-  rhi::SamplerId linear() const { return linear_; }
 
  private:
-  void prepare(PassContext& c);
   GpuTemporalParams frame_params(const PassContext& c);
 
-  std::string shader_, output_;
-  shading::ComputeProgram program_;
+  const TemporalTable& table_;
+  std::string shader_;
+  SlotHandle output_;
+  uint32_t params_binding_;
+  plumbing::ComputeProgram program_;
   rhi::BufferId params_;
-  rhi::SamplerId nearest_, linear_;
-  std::array<rhi::BindGroupId, 2> groups_;  // per parity
-  std::optional<GpuViewRays> last_view_;    // the camera the history was made with
+  std::optional<GpuViewRays> last_view_;  // the camera the history was made with
 };
 
 }  // namespace volgraph::fog

@@ -1,6 +1,6 @@
 // Single scattering of a point light along a ray through a homogeneous medium, without
 // shadows: the airlight of Sun, Ramamoorthi, Narasimhan, Nayar 2005 (§3). CPU twin:
-// passes/shading/airlight.h — change both together; the derivation, the quadrature and
+// physics/airlight.h — change both together; the derivation, the quadrature and
 // its measured error are documented there.
 #ifndef VOLGRAPH_AIRLIGHT_GLSL
 #define VOLGRAPH_AIRLIGHT_GLSL

@@ -1,7 +1,7 @@
 // The froxel grid: a camera-frustum volume of size.x × size.y texels on screen and
 // size.z slices in view depth from range.x (near) to range.y (far), spaced linearly
 // (range.z = 0) or exponentially (range.z = 1). Slice coordinate w ∈ [0, 1] maps to view
-// depth. CPU twin: passes/shading/froxel.h.
+// depth. CPU twin: physics/froxel.h.
 #ifndef VOLGRAPH_FROXEL_GLSL
 #define VOLGRAPH_FROXEL_GLSL
 #include "view_rays.glsl"

@@ -1,5 +1,5 @@
 // The scene's lights as passes receive them in a uniform block (std140). CPU side:
-// passes/shading/light_list.h packs them.
+// passes/plumbing/light_list.h packs them.
 #ifndef VOLGRAPH_LIGHT_LIST_GLSL
 #define VOLGRAPH_LIGHT_LIST_GLSL
 #include "lighting.glsl"

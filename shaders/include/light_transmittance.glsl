@@ -3,7 +3,7 @@
 // media_field.glsl (σt at (k + jitter)·Δ, k = 0 … steps − 1, times Δ). Directional
 // lights: up to `max_distance` m, with the global fog left out (a directional light's E
 // is what reaches a point through it, DESIGN.md and the CPU reference); point and spot
-// lights: up to the light. CPU twin: passes/shading/light_transmittance.h — change both.
+// lights: up to the light. CPU twin: physics/light_transmittance.h — change both.
 #ifndef VOLGRAPH_LIGHT_TRANSMITTANCE_GLSL
 #define VOLGRAPH_LIGHT_TRANSMITTANCE_GLSL
 #include "lighting.glsl"

@@ -1,7 +1,7 @@
 // Single scattering of one light along a camera ray through a homogeneous medium,
 // unshadowed, from the camera to a distance: the I(t) of Billeter, Sintorn, Assarsson 2010
 // (§3) that light_volume evaluates at each face of its shadow volume. CPU twin:
-// passes/shading/light_volume_integral.h — change both together; the derivation, the
+// physics/light_volume_integral.h — change both together; the derivation, the
 // quadrature and its measured error are documented there.
 #ifndef VOLGRAPH_LIGHT_VOLUME_INTEGRAL_GLSL
 #define VOLGRAPH_LIGHT_VOLUME_INTEGRAL_GLSL

@@ -1,4 +1,4 @@
-// Light reaching a surface, DESIGN.md units. CPU twin: passes/shading/lighting.h.
+// Light reaching a surface, DESIGN.md units. CPU twin: physics/lighting.h.
 #ifndef VOLGRAPH_LIGHTING_GLSL
 #define VOLGRAPH_LIGHTING_GLSL
 

@@ -1,5 +1,5 @@
 // The material's textures, set 1 beside the object block of every pass that shades the
-// scene (shading/scene_geometry.cpp): sRGB images (the format decodes them to linear)
+// scene (passes/plumbing/scene_geometry.cpp): sRGB images (the format decodes them to linear)
 // that multiply the block's factors; 1×1 white where a material has none.
 #ifndef VOLGRAPH_MATERIAL_TEXTURES_GLSL
 #define VOLGRAPH_MATERIAL_TEXTURES_GLSL

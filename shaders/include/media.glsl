@@ -1,5 +1,5 @@
 // Participating media maths shared by every fog technique, per RGB channel. CPU twin:
-// passes/shading/media.h — change both together; formulas and precision notes there.
+// physics/media.h — change both together; formulas and precision notes there.
 #ifndef VOLGRAPH_MEDIA_GLSL
 #define VOLGRAPH_MEDIA_GLSL
 

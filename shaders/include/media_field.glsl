@@ -2,7 +2,7 @@
 // exponential height fog and local volumes (box, sphere, ellipsoid) whose density is an
 // edge fade times procedural noise (noise.glsl), summed; each medium's σs, σa and
 // emission scale by its density; g is the σs-weighted mean of the media's. Packed by
-// passes/shading/media_field.cpp (std140); CPU twin: passes/shading/media_field.h.
+// physics/media_field.cpp (std140); CPU twin: physics/media_field.h.
 #ifndef VOLGRAPH_MEDIA_FIELD_GLSL
 #define VOLGRAPH_MEDIA_FIELD_GLSL
 #include "media.glsl"

@@ -3,7 +3,7 @@
 // PCG integer hash (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering"), fBm over
 // octaves (Quilez: lacunarity 2, gain 0.5), remapped to a density in [0, 1] by a coverage
 // (Schneider & Vos 2015). CPU twin, with the definitions spelt out:
-// passes/shading/noise.h — change both together. The hash is exact uint arithmetic.
+// physics/noise.h — change both together. The hash is exact uint arithmetic.
 #ifndef VOLGRAPH_NOISE_GLSL
 #define VOLGRAPH_NOISE_GLSL
 

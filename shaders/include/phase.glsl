@@ -1,5 +1,5 @@
 // Phase functions normalised over the sphere; cos_theta between the light's direction of
-// travel and the scattered direction (forward: 1). CPU twin: passes/shading/phase.h —
+// travel and the scattered direction (forward: 1). CPU twin: physics/phase.h —
 // change both together; the formulas and their precision notes are documented there.
 #ifndef VOLGRAPH_PHASE_GLSL
 #define VOLGRAPH_PHASE_GLSL
@@ -27,7 +27,8 @@ float phase_schlick(float k, float cos_theta) {
   return INV_FOUR_PI * (1.0 - k) * (1.0 + k) / max(base * base, 1e-30);
 }
 
-// Two HG lobes mixed (the issue's eq. 14.17).
+// Two HG lobes mixed, the two-term Henyey–Greenstein function (Kattawar 1975, "A
+// three-parameter analytic phase function for multiple scattering calculations").
 float phase_dual_hg(float g_forward, float g_backward, float w_forward, float cos_theta) {
   return w_forward * phase_hg(g_forward, cos_theta) + (1.0 - w_forward) * phase_hg(g_backward, cos_theta);
 }

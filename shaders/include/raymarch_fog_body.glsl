@@ -1,20 +1,23 @@
 // raymarch_fog's body: per output pixel, a march from the camera to the scene's surface
 // (or to view depth max_distance where there is none) in `steps` equal steps, each
 // sampled at a per-pixel jittered point inside it; at each sample the media
-// (media_field.glsl), the lights (lighting.glsl) through the medium's Henyey–Greenstein
-// phase, the shadow map's visibility and the volumetric shadow toward each light
-// (light_transmittance.glsl), integrated by Hillaire's step (media.glsl, eq. 14.16). The
-// including shader defines `float light_visibility(int light, vec3 p)` first.
+// (media_field.glsl) and their in-scattering (in_scattering.glsl, shared with
+// froxel_scatter: the lights through the pass's phase variant, the shadow map's visibility
+// and the volumetric shadow toward each light by light_transmittance.glsl), integrated by
+// Hillaire's step (media.glsl, eq. 14.16). The including shader defines
+// `float light_visibility(int light, vec3 p)` and `bool media_shadow_mapped(int light)`
+// (false: every light gets the march) first.
 #ifndef VOLGRAPH_RAYMARCH_FOG_BODY_GLSL
 #define VOLGRAPH_RAYMARCH_FOG_BODY_GLSL
-#include "light_transmittance.glsl"
-#include "phase.glsl"
-#include "pixel_fog.glsl"  // bindings 0–4, the workgroup, store_fog
+#include "pixel_fog.glsl"  // bindings 0–4 (the frame block `frame`), the workgroup, store_fog
+#include "in_scattering.glsl"
 
 layout(set = 0, binding = 5) uniform Params {
   ivec4 steps;      // x: steps along the view ray, y: steps toward each light (0: no volumetric shadows)
   vec4 distances;   // x: max_distance (view depth, m) where no surface is, y: shadow_distance (m) toward directional lights
   vec4 jitter;      // x: 1 jittered samples, 0 each step's midpoint; y: the frame
+  ivec4 modes;      // x: the phase code (phase_codes.h)
+  vec4 lobes;       // dual-lobe HG: x backward g, y forward weight
 } params;
 
 const float SOURCE_MAX = 1e30;     // in-scattering is kept finite (a light at a sample point)
@@ -38,21 +41,11 @@ float march_end_depth(float depth) {
   return view_depth(frame.f, depth);
 }
 
-// Radiance per metre the media send toward the camera at p (DESIGN.md units):
-// σs·(Σ_lights p_HG(g, θ)·E·V·T_light + L_ambient) + emission.
-vec3 in_scattering(MediaSample m, vec3 p, vec3 to_camera, float jitter) {
-  if (all(equal(m.sigma_s, vec3(0.0)))) return m.emission;
-  vec3 light = frame.f.ambient.rgb;
-  for (int i = 0; i < frame.f.light_list.counts.x; ++i) {
-    const Light l = frame.f.light_list.lights[i];
-    vec3 travel;
-    const vec3 e = light_arriving(l, p, travel);
-    const float visible = light_visibility(i, p);
-    if (visible <= 0.0 || all(equal(e, vec3(0.0)))) continue;
-    const vec3 through = transmittance_to_light(frame.f.media, l, p, -travel, params.steps.y, params.distances.y, jitter);
-    light += phase_hg(m.g, dot(travel, to_camera)) * e * (visible * through);
-  }
-  return min(m.sigma_s * light + m.emission, vec3(SOURCE_MAX));
+// Radiance per metre the media send toward the camera at p (DESIGN.md units), kept finite.
+vec3 source(MediaSample m, vec3 p, vec3 to_camera, float jitter) {
+  const vec3 s = in_scattering(m, p, to_camera, PhaseChoice(params.modes.x, params.lobes.x, params.lobes.y),
+                               LightMarch(params.steps.y, params.distances.y, jitter), true);
+  return min(s, vec3(SOURCE_MAX));
 }
 
 void main() {
@@ -71,7 +64,7 @@ void main() {
   for (int k = 0; k < params.steps.x; ++k) {
     const vec3 p = origin + (float(k) + jitter) * dt * direction;
     const MediaSample m = sample_media(frame.f.media, p);
-    integrate_hillaire(radiance, transmittance_so_far, in_scattering(m, p, -direction, jitter), m.sigma_s + m.sigma_a, dt);
+    integrate_hillaire(radiance, transmittance_so_far, source(m, p, -direction, jitter), m.sigma_s + m.sigma_a, dt);
     if (all(lessThan(transmittance_so_far, vec3(NEGLIGIBLE_TRANSMITTANCE)))) break;  // nothing behind shows
   }
   store_fog(uvec2(texel), radiance, transmittance_so_far);

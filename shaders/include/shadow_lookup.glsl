@@ -4,6 +4,7 @@
 // pass that samples a shadow_map.
 #ifndef VOLGRAPH_SHADOW_LOOKUP_GLSL
 #define VOLGRAPH_SHADOW_LOOKUP_GLSL
+#include "shadow_filter_codes.h"
 #include "shadow_view.glsl"
 
 float shadow_visibility(texture2D shadow_depth, sampler shadow_sampler, ShadowView view, vec3 p) {
@@ -13,7 +14,7 @@ float shadow_visibility(texture2D shadow_depth, sampler shadow_sampler, ShadowVi
   if (clip.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
   const ivec2 size = textureSize(sampler2D(shadow_depth, shadow_sampler), 0);
   const ivec2 centre = ivec2(uv * vec2(size));
-  const int r = view.mode.x == 1 ? int(ceil(view.params.y)) : 0;
+  const int r = view.mode.x == SHADOW_FILTER_PCF ? int(ceil(view.params.y)) : 0;
   float lit = 0.0, taps = 0.0;
   for (int dy = -r; dy <= r; ++dy) {
     for (int dx = -r; dx <= r; ++dx) {

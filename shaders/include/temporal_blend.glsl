@@ -4,7 +4,7 @@
 // max(alpha, 1/(n + 1)) for a history of n frames (Schied et al. 2017, §4.1), so a still
 // view converges at once and then keeps a bounded memory. The history's frame count
 // travels in the alpha channel, capped where alpha takes over. CPU twin:
-// passes/shading/temporal.h.
+// physics/temporal.h.
 #ifndef VOLGRAPH_TEMPORAL_BLEND_GLSL
 #define VOLGRAPH_TEMPORAL_BLEND_GLSL
 

@@ -1,10 +1,8 @@
-// Tone mapping of linear radiance. CPU twin: passes/shading/tonemap.h (keep in step).
+// Tone mapping of linear radiance. CPU twin: physics/tonemap.h (keep in step).
 #ifndef VOLGRAPH_TONEMAP_GLSL
 #define VOLGRAPH_TONEMAP_GLSL
 
-const int TONE_MAP_NONE = 0;
-const int TONE_MAP_ACES = 1;
-const int TONE_MAP_REINHARD = 2;
+#include "tonemap_codes.h"
 
 // Narkowicz 2015, "ACES Filmic Tone Mapping Curve": x(ax + b) / (x(cx + d) + e), clamped.
 vec3 tone_map_aces(vec3 x) {

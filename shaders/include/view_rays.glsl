@@ -1,4 +1,4 @@
-// The camera's rays by NDC, as passes/shading/camera.h `view_rays` packs them (std140):
+// The camera's rays by NDC, as physics/camera.h `view_rays` packs them (std140):
 // the ray through NDC (x, y) is forward + x·right + y·up, its component along forward 1,
 // so the point at view depth z is position + z·ray. NDC y is up; pixel row 0 is y = 1.
 #ifndef VOLGRAPH_VIEW_RAYS_GLSL
@@ -23,7 +23,7 @@ vec2 grid_ndc(vec2 texel, vec2 offset, vec2 size) {
 // coordinate across the frame (u right, v down: pixel (i, j) of W × H at
 // ((i + 0.5)/W, (j + 0.5)/H)), z its view depth (m; ≤ 0 behind the camera, where x and y
 // mean nothing). The ray's right and up are orthogonal to forward, so
-// ndc.x = (d·right)/(z·|right|²) for d = p − position. CPU twin: passes/shading/camera.h.
+// ndc.x = (d·right)/(z·|right|²) for d = p − position. CPU twin: physics/camera.h.
 vec3 view_uvz(ViewRays v, vec3 p) {
   const vec3 d = p - v.position.xyz;
   const float z = dot(d, v.forward.xyz);

@@ -164,7 +164,7 @@ got: $(cat "$tmp/err")"
     pass=${history%%.*}
     grep -q "persistent, own memory, history pair with $pass" "$tmp/plan" || fail "plan lists no history pair: $(cat "$tmp/plan")"
     grep -q "(history [1-9]" "$tmp/plan" || fail "plan gives no history bytes"
-    grep -A1 "^before the first frame:" "$tmp/plan" | grep -q "barrier $pass" || fail "plan lists no initial barrier"
+    sed -n "/^before the first frame:/,/^$/p" "$tmp/plan" | grep -q "barrier $pass" || fail "plan lists no initial barrier"
     "$volgraph" plan "$config" --json >"$tmp/plan.json" || fail "plan --json"
     grep -q '"role": "previous"' "$tmp/plan.json" && grep -q '"history_bytes": [1-9]' "$tmp/plan.json" &&
       grep -q '"initial_barriers": \[$' "$tmp/plan.json" || fail "plan --json lacks the history pair"

@@ -22,9 +22,9 @@
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
 #include "passes/passes.h"
-#include "passes/shading/camera.h"
-#include "passes/shading/media.h"
-#include "passes/shading/phase.h"
+#include "physics/camera.h"
+#include "physics/media.h"
+#include "physics/phase.h"
 #include "reference/image_render.h"
 #include "tests/gpu/backends.h"
 
@@ -87,14 +87,14 @@ class ClosedFog : public OnEachBackend<> {
 
 // The length of pixel (i, j)'s ray per metre of view depth.
 double ray_scale(const Camera& camera, uint32_t i, uint32_t j) {
-  const shading::ViewRays rays = shading::view_rays(camera, double(kWidth) / kHeight);
-  const Vec3 r = shading::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
-  return std::sqrt(shading::dot(r, r));
+  const physics::ViewRays rays = physics::view_rays(camera, double(kWidth) / kHeight);
+  const Vec3 r = physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
+  return std::sqrt(physics::dot(r, r));
 }
 
 Vec3 pixel_direction(const Camera& camera, uint32_t i, uint32_t j) {
-  const shading::ViewRays rays = shading::view_rays(camera, double(kWidth) / kHeight);
-  return shading::normalize(shading::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2));
+  const physics::ViewRays rays = physics::view_rays(camera, double(kWidth) / kHeight);
+  return physics::normalize(physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2));
 }
 
 void expect_near_relative(double got, double want, const std::string& what, double relative = kFp16) {
@@ -108,10 +108,10 @@ TEST_P(ClosedFog, DepthFogIsItsFormulaOfTheDistanceAlongEachRay) {
     const char* params;
     double (*f)(double);
   } variants[] = {
-      {"linear", R"({ "start": 5, "end": 20, "color": [0.2, 0.4, 0.8] })", [](double z) { return shading::depth_fog_linear(z, 5.0, 20.0); }},
-      {"exponential", R"({ "density": 0.08, "color": [0.2, 0.4, 0.8] })", [](double z) { return shading::depth_fog_exponential(z, 0.08); }},
+      {"linear", R"({ "start": 5, "end": 20, "color": [0.2, 0.4, 0.8] })", [](double z) { return physics::depth_fog_linear(z, 5.0, 20.0); }},
+      {"exponential", R"({ "density": 0.08, "color": [0.2, 0.4, 0.8] })", [](double z) { return physics::depth_fog_exponential(z, 0.08); }},
       {"exponential_squared", R"({ "density": 0.07, "color": [0.2, 0.4, 0.8] })",
-       [](double z) { return shading::depth_fog_exponential_squared(z, 0.07); }},
+       [](double z) { return physics::depth_fog_exponential_squared(z, 0.07); }},
   };
   for (const Variant& v : variants) {
     ClosedCase c;
@@ -147,16 +147,16 @@ TEST_P(ClosedFog, HeightFogTransmittanceAndDirectionalInScatteringAreExact) {
   const Rendered r = render(config);
   const Camera& camera = config.config.scene.camera;
   const double sigma_s[3] = {0.1, 0.2, 0.3}, e[3] = {2, 3, 4};
-  const Vec3 travel = shading::normalize({0.3, -0.4, -0.866});
+  const Vec3 travel = physics::normalize({0.3, -0.4, -0.866});
   for (uint32_t j = 0; j < kHeight; ++j) {
     for (uint32_t i = 0; i < kWidth; ++i) {
       const Vec3 d = pixel_direction(camera, i, j);
       const double length = camera.far * ray_scale(camera, i, j);
-      const double unit_depth = shading::height_fog_optical_depth(1.0, 0.4, 0.0, camera.position[1], d[1], length);
-      const double phase = shading::phase_hg(0.5, -shading::dot(travel, d));
+      const double unit_depth = physics::height_fog_optical_depth(1.0, 0.4, 0.0, camera.position[1], d[1], length);
+      const double phase = physics::phase_hg(0.5, -physics::dot(travel, d));
       for (size_t ch = 0; ch < 3; ++ch) {
         const double sigma_t = sigma_s[ch] + 0.05, t = std::exp(-sigma_t * unit_depth);
-        const double scattering = sigma_s[ch] * phase * e[ch] * shading::attenuated_length(sigma_t, unit_depth);
+        const double scattering = sigma_s[ch] * phase * e[ch] * physics::attenuated_length(sigma_t, unit_depth);
         const std::string where = "pixel " + std::to_string(i) + ", " + std::to_string(j);
         expect_near_relative(r.at(r.transmittance, i, j, ch), t, where + " T");
         expect_near_relative(r.at(r.scattering, i, j, ch), scattering, where + " L_scat");
@@ -200,7 +200,7 @@ TEST_P(ClosedFog, StressLimitsLeaveNoNanOrInf) {
   };
   // Light 0 exactly on pixel (10, 7)'s ray 5 m out, light 1 at the camera.
   const Camera probe{.position = {0, 1, 0}, .target = {0, 1, -1}, .fov_y_deg = 50};
-  const Vec3 on_ray = shading::add(probe.position, shading::scaled(pixel_direction(probe, 10, 7), 5));
+  const Vec3 on_ray = physics::add(probe.position, physics::scaled(pixel_direction(probe, 10, 7), 5));
   std::ostringstream lights;
   lights << R"([ { "type": "point", "position": [)" << on_ray[0] << ", " << on_ray[1] << ", " << on_ray[2]
          << R"(], "intensity": [1e4, 1e4, 1e4], "cast_shadows": false },

@@ -1,4 +1,4 @@
-// shaders/composite.comp on lavapipe, through the backend interface on each backend, against its CPU twin (passes/shading/tonemap.h):
+// shaders/composite.comp on lavapipe, through the backend interface on each backend, against its CPU twin (physics/tonemap.h):
 // every variant and several exposures, on a frame that is not a multiple of the
 // workgroup size, with radiances from 0 to 1e4 (and a negative one, clamped to 0).
 #include <cmath>
@@ -6,10 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include "graph/access.h"
 #include "tests/gpu/backends.h"
 
-#include "passes/shading/tonemap.h"
-#include "passes/shading/programs.h"
+#include "physics/tonemap.h"
+#include "passes/plumbing/programs.h"
 #include "shaders/shader_library.h"
 
 namespace volgraph::testing {
@@ -29,7 +30,7 @@ std::span<const std::byte> bytes_of(const std::vector<T>& v) {
 
 // One run of the shader through the backend interface; returns the frame's texels.
 // With `timestamps`, time stamps 0 and 1 bracket the dispatch.
-std::vector<float> composite(rhi::Device& device, const std::vector<float>& radiance, float exposure, shading::ToneMap op,
+std::vector<float> composite(rhi::Device& device, const std::vector<float>& radiance, float exposure, physics::ToneMap op,
                              rhi::QuerySetId timestamps = {}) {
   using namespace rhi;
   const TextureId input = device.create_texture({"radiance", ResourceKind::texture2d, Format::rgba32_float,
@@ -46,7 +47,7 @@ std::vector<float> composite(rhi::Device& device, const std::vector<float>& radi
   } block{{kWidth, kHeight}, exposure, int32_t(op)};
   device.write_buffer(params, 0, std::as_bytes(std::span(&block, 1)));
 
-  const shading::ComputeProgram program = shading::create_compute_program(device, "composite.comp");
+  const plumbing::ComputeProgram program = plumbing::create_compute_program(device, "composite.comp");
   BindGroupEntry e0, e1, e2, e3;
   e0.binding = 0;
   e0.view = device.create_view(input);
@@ -96,14 +97,14 @@ TEST_P(CompositeShader, MatchesTheCpuTwinForEveryToneMap) {
   for (uint32_t y = 0; y < kHeight; ++y)
     for (uint32_t x = 0; x < kWidth; ++x)
       for (uint32_t ch = 0; ch < 4; ++ch) radiance[4 * (x + kWidth * y) + ch] = ch == 3 ? 1.0f : radiance_at(x, y, ch);
-  for (const shading::ToneMap op : {shading::ToneMap::none, shading::ToneMap::aces, shading::ToneMap::reinhard}) {
+  for (const physics::ToneMap op : {physics::ToneMap::none, physics::ToneMap::aces, physics::ToneMap::reinhard}) {
     for (const float exposure : {-2.0f, 0.0f, 1.5f}) {
       const std::vector<float> result = composite(device, radiance, exposure, op);
       double worst = 0;
       for (uint32_t y = 0; y < kHeight; ++y) {
         for (uint32_t x = 0; x < kWidth; ++x) {
-          const shading::Rgb in = {radiance_at(x, y, 0), radiance_at(x, y, 1), radiance_at(x, y, 2)};
-          const shading::Rgb want = shading::tone_map(in, exposure, op);
+          const physics::Rgb in = {radiance_at(x, y, 0), radiance_at(x, y, 1), radiance_at(x, y, 2)};
+          const physics::Rgb want = physics::tone_map(in, exposure, op);
           for (uint32_t ch = 0; ch < 3; ++ch) {
             const double got = result[4 * (x + kWidth * y) + ch];
             // float32 evaluation of the same formula: relative error well under 1e-5.
@@ -124,7 +125,7 @@ TEST_P(CompositeShader, TimestampsBracketTheDispatch) {
   const rhi::QuerySetId queries = device.create_timestamp_queries("composite", 2);
   const std::vector<float> radiance(size_t(kWidth) * kHeight * 4, 1.0f);
   for (int frame = 0; frame < 3; ++frame) {  // the query set is reusable frame after frame
-    composite(device, radiance, 0.0f, shading::ToneMap::aces, queries);
+    composite(device, radiance, 0.0f, physics::ToneMap::aces, queries);
     const std::vector<double> ns = device.read_timestamps(queries, 0, 2);
     EXPECT_GT(ns[1], ns[0]) << "frame " << frame;
     EXPECT_LT(ns[1] - ns[0], 1e9) << "a 13x11 dispatch under a second";

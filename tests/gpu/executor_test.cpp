@@ -7,10 +7,10 @@
 #include "graph/execute/executor.h"
 #include "graph/rhi/device_error.h"
 #include "passes/passes.h"
-#include "passes/shading/camera.h"
-#include "passes/shading/lighting.h"
-#include "passes/shading/srgb.h"
-#include "passes/shading/tonemap.h"
+#include "physics/camera.h"
+#include "physics/lighting.h"
+#include "physics/srgb.h"
+#include "physics/tonemap.h"
 #include "tests/gpu/backends.h"
 
 namespace volgraph::testing {
@@ -68,8 +68,8 @@ TEST_P(ExecutorTest, ToneMapsMatchTheCpuTwinOverSeveralFrames) {
     o.variants = {std::string("out=") + variant};
     o.sets = {"out.exposure=0.5"};
     const Texels t = render(load(o), {}, 3);
-    const shading::Rgb want = shading::tone_map({0.5, 0.25, 2.0}, 0.5,
-                                                std::string(variant) == "aces" ? shading::ToneMap::aces : shading::ToneMap::reinhard);
+    const physics::Rgb want = physics::tone_map({0.5, 0.25, 2.0}, 0.5,
+                                                std::string(variant) == "aces" ? physics::ToneMap::aces : physics::ToneMap::reinhard);
     for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(t.rgba[size_t(ch)], want[size_t(ch)], 1e-5 * want[size_t(ch)]) << variant;
   }
 }
@@ -99,12 +99,12 @@ TEST_P(ExecutorTest, PointLightRadianceMatchesTheCpuTwin) {
     int checked = 0;
     for (uint32_t j = t.height / 2 + 4; j < t.height; j += 3) {
       for (uint32_t i = 0; i < t.width; i += 5) {
-        const Vec3 d = shading::pixel_ray(scene.camera, t.width, t.height, i, j);
+        const Vec3 d = physics::pixel_ray(scene.camera, t.width, t.height, i, j);
         if (d[1] >= 0) continue;
         const double s = -scene.camera.position[1] / d[1];
         const Vec3 p{scene.camera.position[0] + s * d[0], 0.0, scene.camera.position[2] + s * d[2]};
         if (std::abs(p[0]) > 5 || std::abs(p[2]) > 5) continue;  // off the 10 m plane
-        const Vec3 want = shading::lambert(ground->albedo, shading::irradiance(scene.lights[0], p, {0, 1, 0}));
+        const Vec3 want = physics::lambert(ground->albedo, physics::irradiance(scene.lights[0], p, {0, 1, 0}));
         for (size_t ch = 0; ch < 3; ++ch) {
           EXPECT_NEAR(t.rgba[4 * (j * t.width + i) + ch], want[ch], 2e-3 * want[ch]) << i << ", " << j;
         }
@@ -116,20 +116,20 @@ TEST_P(ExecutorTest, PointLightRadianceMatchesTheCpuTwin) {
 }
 
 // A textured plane: albedo = factor × the texture's sRGB-decoded value, with the image's
-// top row toward −z (shading/meshes.h). Texels away from the halves' border and the
+// top row toward −z (passes/plumbing/meshes.h). Texels away from the halves' border and the
 // plane's edges, within the fp16 target's 2e-3 relative plus a quarter of the sRGB code
 // step (Vulkan lets the sRGB decode approximate; lavapipe's is off by 0.14 steps at 64).
 TEST_P(ExecutorTest, AlbedoTextureMultipliesTheFactorInLinearLight) {
   const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/textured_plane.json", registry_);
   const Texels t = render(c, {});
   const Camera& camera = c.config.scene.camera;
-  auto linear = [](int code) { return double(shading::srgb_decode(float(code) / 255)); };
+  auto linear = [](int code) { return double(physics::srgb_decode(float(code) / 255)); };
   auto code_step = [&](int code) { return linear(std::min(code + 1, 255)) - linear(std::max(code - 1, 0)); };
   const int grey_code[3] = {188, 188, 188}, orange_code[3] = {255, 64, 0};
   int top = 0, bottom = 0;
   for (uint32_t j = 0; j < t.height; ++j) {
     for (uint32_t i = 0; i < t.width; ++i) {
-      const Vec3 d = shading::pixel_ray(camera, t.width, t.height, i, j);
+      const Vec3 d = physics::pixel_ray(camera, t.width, t.height, i, j);
       const double s = -camera.position[1] / d[1];
       const double x = camera.position[0] + s * d[0], z = camera.position[2] + s * d[2];
       if (std::abs(x) > 0.4 || std::abs(z) > 0.4 || std::abs(z) < 0.1) continue;
@@ -163,7 +163,7 @@ TEST_P(ExecutorTest, FullShadowLeavesOnlyTheOtherTerms) {
   int in_shadow = 0, in_light = 0;
   for (uint32_t j = 0; j < t.height; ++j) {
     for (uint32_t i = 0; i < t.width; ++i) {
-      const Vec3 d = shading::pixel_ray(scene.camera, t.width, t.height, i, j);
+      const Vec3 d = physics::pixel_ray(scene.camera, t.width, t.height, i, j);
       if (d[1] >= 0) continue;
       const double s = -scene.camera.position[1] / d[1];
       const double x = scene.camera.position[0] + s * d[0], z = scene.camera.position[2] + s * d[2];

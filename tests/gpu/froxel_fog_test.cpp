@@ -23,7 +23,7 @@
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
 #include "passes/passes.h"
-#include "passes/shading/camera.h"
+#include "physics/camera.h"
 #include "tests/gpu/backends.h"
 #include "tests/gpu/fog_scenes.h"
 
@@ -111,9 +111,9 @@ double column_blend(const Camera& camera, uint32_t i, uint32_t j, const std::fun
   const double v = std::clamp((j + 0.5) / kHeight * columns_y - 0.5, 0.0, columns_y - 1);
   const int x0 = int(u), y0 = int(v), x1 = std::min(x0 + 1, int(columns_x) - 1), y1 = std::min(y0 + 1, int(columns_y) - 1);
   auto at = [&](int x, int y) {  // the column's centre ray, as a pixel of a columns_x × columns_y frame
-    const shading::ViewRays rays = shading::view_rays(camera, double(kWidth) / kHeight);
-    const Vec3 r = shading::view_ray(rays, (x + 0.5) / columns_x * 2 - 1, 1 - (y + 0.5) / columns_y * 2);
-    return of_ray_length(std::sqrt(shading::dot(r, r)));
+    const physics::ViewRays rays = physics::view_rays(camera, double(kWidth) / kHeight);
+    const Vec3 r = physics::view_ray(rays, (x + 0.5) / columns_x * 2 - 1, 1 - (y + 0.5) / columns_y * 2);
+    return of_ray_length(std::sqrt(physics::dot(r, r)));
   };
   const double fx = u - x0, fy = v - y0;
   return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
@@ -315,11 +315,11 @@ TEST_P(FroxelFog, TheOpacityShadowMapDimsSurfacesUnderTheMedia) {
     "outputs": ["out.output"] } })";
   const LoadedConfig config = load_config_text("floor.json", text.str(), registry_);
   const Texels t = render(config);
-  const shading::ViewRays rays = shading::view_rays(config.config.scene.camera, double(kWidth) / kHeight);
+  const physics::ViewRays rays = physics::view_rays(config.config.scene.camera, double(kWidth) / kHeight);
   size_t checked[2] = {0, 0};
   for (uint32_t j = 0; j < kHeight; ++j) {
     for (uint32_t i = 0; i < kWidth; ++i) {
-      const Vec3 d = shading::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
+      const Vec3 d = physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
       if (d[1] >= 0) continue;
       const double t_floor = (-0.5 - rays.position[1]) / d[1];
       const double x = rays.position[0] + t_floor * d[0], z = rays.position[2] + t_floor * d[2];

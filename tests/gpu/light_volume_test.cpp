@@ -33,16 +33,16 @@
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
 #include "passes/passes.h"
-#include "passes/shading/camera.h"
-#include "passes/shading/light_volume_integral.h"
-#include "passes/shading/shadow_view.h"
+#include "physics/camera.h"
+#include "physics/light_volume_integral.h"
+#include "passes/plumbing/shadow_view.h"
 #include "tests/gpu/backends.h"
 
 namespace volgraph::testing {
 namespace {
 
-using shading::add;
-using shading::scaled;
+using physics::add;
+using physics::scaled;
 
 constexpr uint32_t kWidth = 96, kHeight = 54, kMapSize = 256;
 
@@ -84,14 +84,14 @@ const char* kSun = R"({ "type": "directional", "direction": [0.35, -1, -0.3], "i
 // What a frame gives: the two techniques' images, the shadow map, its view and the depth.
 struct Frame {
   Texels volume_scattering, volume_transmittance, march_scattering, march_transmittance, shadow_depth, scene_depth;
-  shading::ShadowViewBlock view{};
+  plumbing::ShadowViewBlock view{};
 };
 
 float red(const Texels& t, uint32_t i, uint32_t j) { return t.rgba[4 * (size_t(j) * t.width + i)]; }
 
 // The hard shadow lookup of shadow_lookup.glsl in double: lit or not at world point p.
 struct ShadowMap {
-  shading::Mat4 view_projection;
+  physics::Mat4 view_projection;
   double bias = 0;
   const Texels* depth = nullptr;
 
@@ -127,7 +127,7 @@ double crossing(const std::array<double, 4>& c0, const std::array<double, 4>& c1
 // The in-scattering along one pixel's ray, exact with respect to the shadow map: the ray
 // cut where it crosses texel boundaries, w = 0, the texels' shadow depths and the far
 // plane; each piece lit or shadowed as a whole; σs·E·(I(b) − I(a)) over the lit ones.
-double exact_scattering(const ShadowMap& map, const shading::RayLight<double>& light, double power, const Vec3& origin, const Vec3& dir,
+double exact_scattering(const ShadowMap& map, const physics::RayLight<double>& light, double power, const Vec3& origin, const Vec3& dir,
                         double t_end, double sigma_s, double sigma_t, double g) {
   const std::array<double, 4> c0 = map.clip(origin), ahead = map.clip(add(origin, dir));
   const std::array<double, 4> c1{ahead[0] - c0[0], ahead[1] - c0[1], ahead[2] - c0[2], ahead[3] - c0[3]};
@@ -152,7 +152,7 @@ double exact_scattering(const ShadowMap& map, const shading::RayLight<double>& l
     }
   }
   std::sort(cuts.begin(), cuts.end());
-  auto I = [&](double t) { return shading::light_scattering_to(light, origin, dir, t, sigma_t, g); };
+  auto I = [&](double t) { return physics::light_scattering_to(light, origin, dir, t, sigma_t, g); };
   // Runs of lit pieces, each integrated once: I(end of run) − I(start of run).
   double sum = 0, run_start = -1;
   for (size_t i = 0; i + 1 < cuts.size(); ++i) {
@@ -220,22 +220,22 @@ class LightVolume : public OnEachBackend<> {
     map.bias = f.view.params[0];
     map.depth = &f.shadow_depth;
     const Light& l = scene_.lights[0];
-    shading::RayLight<double> light;
-    light.type = l.type == LightType::directional ? shading::kLightTypeDirectional : shading::kLightTypeSpot;
+    physics::RayLight<double> light;
+    light.type = l.type == LightType::directional ? physics::kLightTypeDirectional : physics::kLightTypeSpot;
     light.position = l.position;
-    light.direction = shading::normalize(l.direction);
+    light.direction = physics::normalize(l.direction);
     light.cos_outer = double(float(std::cos(l.outer_cone_deg * M_PI / 180)));
     light.cos_inner = double(float(std::cos(l.inner_cone_deg * M_PI / 180)));
     const double power = l.type == LightType::directional ? l.irradiance[0] : l.intensity[0];
     const Medium& fog = *scene_.media.fog;
     const double sigma_s = fog.sigma_s[0], sigma_t = fog.sigma_s[0] + fog.sigma_a[0];
     const Camera& cam = scene_.camera;
-    const shading::ViewRays rays = shading::view_rays(cam, double(kWidth) / kHeight);
+    const physics::ViewRays rays = physics::view_rays(cam, double(kWidth) / kHeight);
     std::vector<double> out;
     for (uint32_t j = 0; j < kHeight; ++j) {
       for (uint32_t i = 0; i < kWidth; ++i) {
-        const Vec3 through = shading::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
-        const double scale = std::sqrt(shading::dot(through, through));
+        const Vec3 through = physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
+        const double scale = std::sqrt(physics::dot(through, through));
         const double depth = red(f.scene_depth, i, j);
         const double t_end = cam.near * cam.far / (cam.far - depth * (cam.far - cam.near)) * scale;
         out.push_back(exact_scattering(map, light, power, cam.position, scaled(through, 1 / scale), t_end, sigma_s, sigma_t, fog.g));
@@ -294,13 +294,13 @@ TEST_P(LightVolume, DirectionalMatchesTheShadowMapExactly) {
 TEST_P(LightVolume, TransmittanceIsBeerLambertToTheSurface) {
   const Frame f = render(VolumeCase{});
   const Camera& cam = scene_.camera;
-  const shading::ViewRays rays = shading::view_rays(cam, double(kWidth) / kHeight);
+  const physics::ViewRays rays = physics::view_rays(cam, double(kWidth) / kHeight);
   double worst = 0, worst_march = 0;
   for (uint32_t j = 0; j < kHeight; ++j) {
     for (uint32_t i = 0; i < kWidth; ++i) {
-      const Vec3 through = shading::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
+      const Vec3 through = physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
       const double depth = red(f.scene_depth, i, j);
-      const double t_end = cam.near * cam.far / (cam.far - depth * (cam.far - cam.near)) * std::sqrt(shading::dot(through, through));
+      const double t_end = cam.near * cam.far / (cam.far - depth * (cam.far - cam.near)) * std::sqrt(physics::dot(through, through));
       const double want = std::exp(-0.2 * t_end);
       worst = std::max(worst, std::abs(red(f.volume_transmittance, i, j) - want) / want);
       worst_march = std::max(worst_march, std::abs(red(f.march_transmittance, i, j) - want) / want);

@@ -27,7 +27,11 @@ namespace {
 constexpr auto k2D = ResourceKind::texture2d;
 constexpr auto kBuffer = ResourceKind::buffer;
 
-float value_of(const PassContext& c) { return float(std::get<double>(c.param("value"))); }
+// These test passes are declared by hand (no PassTable): their slots and parameter by name.
+SlotHandle slot(const PassSetup& c, std::string_view name) { return {uint16_t(c.graph_pass().decl->slot_index(name))}; }
+float value_of(const PassContext& c) {
+  return float(c.param(ParamHandle<double>{uint16_t(c.graph_pass().decl->param_index("value"))}));
+}
 
 // draw: clears a new colour attachment to the pass's value and a new depth attachment.
 class DrawExecution final : public PassExecution {
@@ -36,8 +40,8 @@ class DrawExecution final : public PassExecution {
     const float v = value_of(c);
     rhi::RenderPassDesc pass;
     pass.label = c.graph_pass().name;
-    pass.colors = {{c.view("color"), rhi::LoadOp::clear, {v, v, v, 1.0f}}};
-    pass.depth = {c.view("depth"), rhi::LoadOp::clear, 1.0f};
+    pass.colors = {{c.view(slot(c, "color")), rhi::LoadOp::clear, {v, v, v, 1.0f}}};
+    pass.depth = {c.view(slot(c, "depth")), rhi::LoadOp::clear, 1.0f};
     c.encoder.begin_render_pass(pass);
     c.encoder.end_render_pass();
   }
@@ -103,7 +107,7 @@ class BlendExecution final : public PassExecution {
   void record(PassContext& c) override {
     rhi::RenderPassDesc pass;
     pass.label = c.graph_pass().name;
-    pass.colors = {{c.view("color"), rhi::LoadOp::load}};
+    pass.colors = {{c.view(slot(c, "color")), rhi::LoadOp::load}};
     c.encoder.begin_render_pass(pass);
     shared_->bind(c.device, c.encoder, value_of(c));
     c.encoder.draw(3);
@@ -116,22 +120,22 @@ class BlendExecution final : public PassExecution {
 
 class CopyExecution final : public PassExecution {
  public:
-  void record(PassContext& c) override { c.encoder.copy_texture_to_texture(c.texture("source"), c.texture("copy")); }
+  void record(PassContext& c) override { c.encoder.copy_texture_to_texture(c.texture(slot(c, "source")), c.texture(slot(c, "copy"))); }
 };
 
 // fill: every 32-bit word of a new buffer set to the pass's value.
 class FillExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
-    const std::vector<uint32_t> words(c.desc("buffer").buffer_bytes / 4, uint32_t(value_of(c)));
-    c.encoder.update_buffer(c.buffer("buffer"), 0, std::as_bytes(std::span(words)));
+    const std::vector<uint32_t> words(c.desc(slot(c, "buffer")).buffer_bytes / 4, uint32_t(value_of(c)));
+    c.encoder.update_buffer(c.buffer(slot(c, "buffer")), 0, std::as_bytes(std::span(words)));
   }
 };
 
 class BufferCopyExecution final : public PassExecution {
  public:
   void record(PassContext& c) override {
-    c.encoder.copy_buffer_to_buffer(c.buffer("source"), c.buffer("copy"), c.desc("source").buffer_bytes);
+    c.encoder.copy_buffer_to_buffer(c.buffer(slot(c, "source")), c.buffer(slot(c, "copy")), c.desc(slot(c, "source")).buffer_bytes);
   }
 };
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "graph/access.h"
 #include "shaders/shader_library.h"
 #include "tests/gpu/backends.h"
 

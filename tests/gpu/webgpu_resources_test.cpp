@@ -18,6 +18,9 @@
 namespace volgraph::testing {
 namespace {
 
+// A test pass declared by hand (no PassTable): its slots by name.
+SlotHandle slot(const PassSetup& c, std::string_view name) { return {uint16_t(c.graph_pass().decl->slot_index(name))}; }
+
 class WebGpuResources : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -53,7 +56,7 @@ TEST_F(WebGpuResources, CreatedObjectsAreThePlansPooledFigure) {
 // Copies its `source` into `copy` although the slot says it only samples `source`.
 class UndeclaredCopyExecution final : public PassExecution {
  public:
-  void record(PassContext& c) override { c.encoder.copy_texture_to_texture(c.texture("source"), c.texture("copy")); }
+  void record(PassContext& c) override { c.encoder.copy_texture_to_texture(c.texture(slot(c, "source")), c.texture(slot(c, "copy"))); }
 };
 
 PassDecl copy_declared_as(Usage source_usage) {

@@ -125,7 +125,7 @@ TEST(HandBuilt, ColorAttachmentThenSampledInFragment) {
   EXPECT_EQ(bs[0].from, (AccessState{stage::color_attachment_output, access::color_attachment_write,
                                      Layout::color_attachment}))
       << text(bs[0].from);
-  EXPECT_EQ(bs[0].to, (AccessState{stage::fragment_shader, access::shader_sampled_read, Layout::shader_read_only}))
+  EXPECT_EQ(bs[0].to, (AccessState{stage::vertex_shader | stage::fragment_shader, access::shader_sampled_read, Layout::shader_read_only}))
       << text(bs[0].to);
 }
 

@@ -1,14 +1,14 @@
 // The reference against the GPU on configs/demo_primitives.json at 64×36: its golden
 // image (tests/golden/, the Vulkan render tone-mapped by the config's ACES composite)
-// against the reference's radiance through the same tone map (shading/tonemap.h), away
+// against the reference's radiance through the same tone map (physics/tonemap.h), away
 // from shadow and silhouette edges (pixels whose 3×3 neighbourhood sees one object and
 // one sun visibility); and the image is the same bit for bit on 1 and 2 threads.
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/camera.h"
-#include "passes/shading/tonemap.h"
+#include "physics/camera.h"
+#include "physics/tonemap.h"
 #include "reference/image_render.h"
 #include "reference/renderer.h"
 #include "tests/reference/test_scenes.h"
@@ -29,7 +29,7 @@ std::vector<PixelClass> classify(const Renderer& renderer, uint32_t w, uint32_t 
   const Scene& scene = renderer.scene();
   for (uint32_t j = 0; j < h; ++j) {
     for (uint32_t i = 0; i < w; ++i) {
-      const std::optional<SurfaceHit> hit = renderer.surface_hit(shading::pixel_ray(scene.camera, w, h, i, j));
+      const std::optional<SurfaceHit> hit = renderer.surface_hit(physics::pixel_ray(scene.camera, w, h, i, j));
       if (!hit) continue;
       out[size_t(j) * w + i] = {int(renderer.triangles().attributes[hit->triangle].object),
                                 renderer.light_visible(scene.lights[0], hit->position)};
@@ -62,7 +62,7 @@ TEST(ReferenceVersusGpu, DemoPrimitivesMatchesTheGoldenImageAwayFromEdges) {
   for (uint32_t j = 0; j < h; ++j) {
     for (uint32_t i = 0; i < w; ++i) {
       if (!interior(classes, w, h, i, j)) continue;
-      const shading::Rgb mapped = shading::tone_map(image.at(i, j), 0, shading::ToneMap::aces);  // the config's composite
+      const physics::Rgb mapped = physics::tone_map(image.at(i, j), 0, physics::ToneMap::aces);  // the config's composite
       for (size_t c = 0; c < 3; ++c) {
         const double e = std::abs(mapped[c] - golden.rgba[(size_t(j) * w + i) * 4 + c]);
         worst = std::max(worst, e);

@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/camera.h"
-#include "passes/shading/media_field.h"
-#include "passes/shading/phase.h"
+#include "physics/camera.h"
+#include "physics/media_field.h"
+#include "physics/phase.h"
 #include "reference/renderer.h"
 #include "tests/reference/test_scenes.h"
 #include "tests/support/random_graph.h"
@@ -20,10 +20,10 @@
 namespace volgraph::reference {
 namespace {
 
-using shading::add;
-using shading::dot;
-using shading::scaled;
-using shading::sub;
+using physics::add;
+using physics::dot;
+using physics::scaled;
+using physics::sub;
 
 constexpr uint32_t kW = 12, kH = 8;
 
@@ -66,7 +66,7 @@ IntegrationSettings precise() {
 template <typename PixelCheck>
 void for_each_pixel(const Scene& scene, PixelCheck check) {
   for (uint32_t j = 0; j < kH; ++j) {
-    for (uint32_t i = 0; i < kW; ++i) check(i, j, shading::pixel_ray(scene.camera, kW, kH, i, j));
+    for (uint32_t i = 0; i < kW; ++i) check(i, j, physics::pixel_ray(scene.camera, kW, kH, i, j));
   }
 }
 
@@ -183,7 +183,7 @@ TEST(ReferenceMedia, PointLightWithExtinctionMatchesAMillionStepMidpointSum) {
   scene.lights.push_back(light);
   const Renderer renderer(scene, precise());
   for (const auto& [i, j] : {std::pair{0u, 0u}, {6u, 4u}, {9u, 2u}}) {
-    const Vec3 d = shading::pixel_ray(scene.camera, kW, kH, i, j);
+    const Vec3 d = physics::pixel_ray(scene.camera, kW, kH, i, j);
     const double length = 6 / std::abs(d[2]);
     const size_t steps = 1000000;
     const double dt = length / steps;
@@ -195,7 +195,7 @@ TEST(ReferenceMedia, PointLightWithExtinctionMatchesAMillionStepMidpointSum) {
       const double cos_theta = -dot(scaled(to_light, -1 / dl), d);  // travel · (toward the viewer)
       for (size_t c = 0; c < 3; ++c) {
         const double sigma_t = fog.sigma_s[c] + fog.sigma_a[c];
-        sum[c] += std::exp(-sigma_t * t) * fog.sigma_s[c] * shading::phase_hg(fog.g, cos_theta) * light.intensity[c] / d2 *
+        sum[c] += std::exp(-sigma_t * t) * fog.sigma_s[c] * physics::phase_hg(fog.g, cos_theta) * light.intensity[c] / d2 *
                   std::exp(-sigma_t * dl) * dt;
       }
     }
@@ -214,7 +214,7 @@ TEST(ReferenceMedia, HeightFogOpticalDepthMatchesQuadrature) {
   test::Rng rng(7);
   for (int r = 0; r < 20; ++r) {
     const Vec3 origin{rng.unit() * 10 - 5, rng.unit() * 6 - 2, rng.unit() * 10 - 5};
-    const Vec3 direction = shading::normalize({rng.unit() * 2 - 1, rng.unit() * 2 - 1, rng.unit() * 2 - 1});
+    const Vec3 direction = physics::normalize({rng.unit() * 2 - 1, rng.unit() * 2 - 1, rng.unit() * 2 - 1});
     const double length = 1 + rng.unit() * 40;
     const Vec3 closed = scene_media.optical_depth(origin, direction, 0, length);
     // Composite Simpson with 20 000 panels: error ~ (L/n)⁴·σ'''' ≪ 1e-10 relative here.
@@ -233,7 +233,7 @@ TEST(ReferenceMedia, HeightFogTowardTheSunIsTheIntegralToInfinity) {
   Media media;
   media.height_fog = HeightFog{.medium = {.sigma_a = {0.05, 0.05, 0.05}}, .base_height = 0, .falloff = 0.5};
   const SceneMedia scene_media(media);
-  const Vec3 up = shading::normalize({0.3, 0.8, 0.1});
+  const Vec3 up = physics::normalize({0.3, 0.8, 0.1});
   // ∫₀^∞ σ e^(−f(y₀ + t·d_y)) dt = σ e^(−f y₀)/(f d_y).
   const double expected = 0.05 * std::exp(-0.5 * 1.5) / (0.5 * up[1]);
   EXPECT_LT(relative_error(scene_media.optical_depth_to_infinity({0, 1.5, 0}, up)[0], expected), 1e-12);
@@ -298,7 +298,7 @@ MediumVolume noisy_volume(Shape shape) {
 }
 
 // The twin's σt summed by the midpoint rule, n points over [0, length].
-Vec3 brute_force_optical_depth(const shading::MediaField& field, const Vec3& origin, const Vec3& direction, double length,
+Vec3 brute_force_optical_depth(const physics::MediaField& field, const Vec3& origin, const Vec3& direction, double length,
                                int n) {
   Vec3 sum{0, 0, 0};
   for (int k = 0; k < n; ++k) sum = add(sum, field.sample(add(origin, scaled(direction, length * (k + 0.5) / n))).sigma_t());
@@ -316,13 +316,13 @@ TEST(ReferenceMedia, NoisyOpticalDepthMatchesABruteForceSumOfTheTwin) {
     media.volumes.push_back(noisy_volume(shape));
     const SceneMedia scene_media(media);
     const SceneMedia finer(media, {.panels_per_noise_cell = 8, .panels_per_edge_fade = 32});
-    const shading::MediaField field(media);
+    const physics::MediaField field(media);
     test::Rng rng(11);
     double worst = 0, worst_finer = 0;
     for (int r = 0; r < 12; ++r) {
       const Vec3 origin{rng.unit() - 0.5, rng.unit() - 0.5, 0};
       const Vec3 target{0.3 + rng.unit() - 0.5, 0.1 + rng.unit() - 0.5, -3 + rng.unit() - 0.5};
-      const Vec3 direction = shading::normalize(sub(target, origin));
+      const Vec3 direction = physics::normalize(sub(target, origin));
       const Vec3 got = scene_media.optical_depth(origin, direction, 0, 6);
       const Vec3 brute = brute_force_optical_depth(field, origin, direction, 6, 100000);
       const Vec3 fine = finer.optical_depth(origin, direction, 0, 6);
@@ -364,9 +364,9 @@ TEST(ReferenceMedia, ANoisyAbsorberAttenuatesTheBackgroundByTheTwinsOpticalDepth
   v.medium.sigma_s = {0, 0, 0};
   scene.media.volumes.push_back(v);
   const Renderer renderer(scene);
-  const shading::MediaField field(scene.media);
+  const physics::MediaField field(scene.media);
   for (const auto& [i, j] : {std::pair{6u, 4u}, {5u, 3u}, {7u, 5u}, {4u, 4u}}) {
-    const Vec3 direction = shading::pixel_ray(scene.camera, kW, kH, i, j);
+    const Vec3 direction = physics::pixel_ray(scene.camera, kW, kH, i, j);
     const Vec3 tau = brute_force_optical_depth(field, scene.camera.position, direction, 20 / -direction[2], 200000);
     const Vec3 got = renderer.pixel_radiance(i, j, kW, kH);
     for (size_t c = 0; c < 3; ++c) {
@@ -383,17 +383,17 @@ TEST(ReferenceMedia, PointsAreTheTwinsSamples) {
   media.volumes.back().medium.emission = {0.1, 0.2, 0.3};
   media.fog = Medium{.sigma_s = {0.01, 0.01, 0.01}};
   const SceneMedia scene_media(media);
-  const shading::MediaField field(media);
+  const physics::MediaField field(media);
   test::Rng rng(3);
   int inside = 0;
   for (int k = 0; k < 200; ++k) {
     const Vec3 p{0.3 + 2 * rng.unit() - 1, 0.1 + 2 * rng.unit() - 1, -3 + 2 * rng.unit() - 1};
-    const shading::MediaSample got = scene_media.at(p), want = field.sample(p);
+    const physics::MediaSample got = scene_media.at(p), want = field.sample(p);
     EXPECT_EQ(got.sigma_s, want.sigma_s);
     EXPECT_EQ(got.sigma_a, want.sigma_a);
     EXPECT_EQ(got.emission, want.emission);
     const Vec3 s = scene_media.scattering(p, 0.3);
-    for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(s[c], want.sigma_s[c] * shading::phase_isotropic<double>(), 1e-15);
+    for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(s[c], want.sigma_s[c] * physics::phase_isotropic<double>(), 1e-15);
     inside += want.sigma_a[0] > 0;
   }
   EXPECT_GT(inside, 20) << "points inside the volume's medium";

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/camera.h"
+#include "physics/camera.h"
 #include "reference/image_render.h"
 #include "reference/renderer.h"
 #include "tests/reference/test_scenes.h"
@@ -14,8 +14,8 @@
 namespace volgraph::reference {
 namespace {
 
-using shading::dot;
-using shading::sub;
+using physics::dot;
+using physics::sub;
 
 TEST(ReferenceSurfaces, LitLambertianWallIsRhoEOverPi) {
   const LoadedConfig loaded = load_shipped("tests/lambert_plane_lit.json", 32, 24);
@@ -37,9 +37,9 @@ TEST(ReferenceSurfaces, PointLightOnAPlaneIsTheInverseSquareLaw) {
   double worst = 0;
   for (uint32_t j = 0; j < h; ++j) {
     for (uint32_t i = 0; i < w; ++i) {
-      const Vec3 d = shading::pixel_ray(scene.camera, w, h, i, j);
+      const Vec3 d = physics::pixel_ray(scene.camera, w, h, i, j);
       const double t = -scene.camera.position[1] / d[1];  // where the ray meets y = 0
-      const Vec3 p = shading::add(scene.camera.position, shading::scaled(d, t));
+      const Vec3 p = physics::add(scene.camera.position, physics::scaled(d, t));
       const Vec3 to_light = sub(light.position, p);
       const double d2 = dot(to_light, to_light), cos_theta = to_light[1] / std::sqrt(d2);
       const Vec3 got = renderer.pixel_radiance(i, j, w, h);
@@ -60,7 +60,7 @@ TEST(ReferenceSurfaces, FullShadowIsExactlyZeroAndTheOpenPlaneRhoEOverPi) {
   size_t shadowed = 0, open = 0;
   for (uint32_t j = 0; j < h; ++j) {
     for (uint32_t i = 0; i < w; ++i) {
-      const std::optional<SurfaceHit> hit = renderer.surface_hit(shading::pixel_ray(loaded.config.scene.camera, w, h, i, j));
+      const std::optional<SurfaceHit> hit = renderer.surface_hit(physics::pixel_ray(loaded.config.scene.camera, w, h, i, j));
       if (!hit || std::abs(hit->position[1]) > 1e-12) continue;  // the plane's pixels only
       const double x = std::abs(hit->position[0]), z = std::abs(hit->position[2]);
       const Vec3 l = renderer.surface_radiance(*hit);

@@ -3,7 +3,7 @@
 // the Vulkan specification's wrapping operation does.
 #include <gtest/gtest.h>
 
-#include "passes/shading/srgb.h"
+#include "physics/srgb.h"
 #include "reference/texture_sampling.h"
 
 namespace volgraph::reference {
@@ -11,20 +11,20 @@ namespace {
 
 // A 2×1 image: black, then white (sRGB 255 decodes to exactly 1).
 LinearImage black_white() {
-  shading::Rgba8Image encoded{2, 1, {0, 0, 0, 255, 255, 255, 255, 255}};
+  plumbing::Rgba8Image encoded{2, 1, {0, 0, 0, 255, 255, 255, 255, 255}};
   return linear_image(encoded);
 }
 
 TEST(TextureSampling, DecodesSrgbOnce) {
   const LinearImage image = linear_image({1, 1, {128, 64, 255, 255}});
-  EXPECT_EQ(image.rgb[0], shading::srgb_decode(128 / 255.0f));
-  EXPECT_EQ(image.rgb[1], shading::srgb_decode(64 / 255.0f));
+  EXPECT_EQ(image.rgb[0], physics::srgb_decode(128 / 255.0f));
+  EXPECT_EQ(image.rgb[1], physics::srgb_decode(64 / 255.0f));
   EXPECT_EQ(image.rgb[2], 1.0f);
 }
 
 TEST(TextureSampling, TexelCentresAndMidpoints) {
   const LinearImage image = black_white();
-  const shading::SamplerWrap clamp{rhi::AddressMode::clamp_to_edge, rhi::AddressMode::clamp_to_edge};
+  const plumbing::SamplerWrap clamp{rhi::AddressMode::clamp_to_edge, rhi::AddressMode::clamp_to_edge};
   EXPECT_EQ(sample_bilinear(image, clamp, 0.25, 0.5)[0], 0.0);
   EXPECT_EQ(sample_bilinear(image, clamp, 0.75, 0.5)[0], 1.0);
   EXPECT_EQ(sample_bilinear(image, clamp, 0.5, 0.5)[0], 0.5);
@@ -34,8 +34,8 @@ TEST(TextureSampling, TexelCentresAndMidpoints) {
 
 TEST(TextureSampling, WrapModes) {
   const LinearImage image = black_white();
-  const shading::SamplerWrap repeat{rhi::AddressMode::repeat, rhi::AddressMode::repeat};
-  const shading::SamplerWrap mirror{rhi::AddressMode::mirror_repeat, rhi::AddressMode::mirror_repeat};
+  const plumbing::SamplerWrap repeat{rhi::AddressMode::repeat, rhi::AddressMode::repeat};
+  const plumbing::SamplerWrap mirror{rhi::AddressMode::mirror_repeat, rhi::AddressMode::mirror_repeat};
   EXPECT_EQ(sample_bilinear(image, repeat, 0.0, 0.5)[0], 0.5);    // between the last and the first texel
   EXPECT_EQ(sample_bilinear(image, repeat, 1.25, 0.5)[0], 0.0);   // one period on
   EXPECT_EQ(sample_bilinear(image, mirror, 1.25, 0.5)[0], 1.0);   // mirrored: white comes first

@@ -6,14 +6,14 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "passes/shading/camera.h"
+#include "physics/camera.h"
 #include "reference/renderer.h"
 
 namespace volgraph::accuracy {
 namespace {
 
 bool sees_surface(const reference::Renderer& renderer, uint32_t width, uint32_t height, uint32_t i, uint32_t j) {
-  return renderer.surface_hit(shading::pixel_ray(renderer.scene().camera, width, height, i, j)).has_value();
+  return renderer.surface_hit(physics::pixel_ray(renderer.scene().camera, width, height, i, j)).has_value();
 }
 
 // Whether any pixel of the 3×3 neighbourhood of (i, j), clipped to the frame, sees a surface.

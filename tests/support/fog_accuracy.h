@@ -11,7 +11,7 @@
 //   neighbours' centres see no surface (the background, through the media only): the
 //   3×3 rule also drops the rasterised silhouettes next to surfaces.
 // The media themselves are the same on both sides: the reference evaluates them through
-// the GPU's CPU twin (shading::MediaField: edge fades and noise included).
+// the GPU's CPU twin (physics::MediaField: edge fades and noise included).
 // Metric: tests/support/image_compare.h over the compared pixels — relative mean
 // absolute error Σ|gpu − ref| / Σ|ref|, outliers (a channel off by > 5 % of
 // max(|ref|, mean |ref|)), largest absolute error.

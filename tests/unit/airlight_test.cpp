@@ -1,4 +1,4 @@
-// The airlight (passes/shading/airlight.h, Sun et al. 2005) against brute force:
+// The airlight (physics/airlight.h, Sun et al. 2005) against brute force:
 // - without extinction, the closed form (atan((D − t_c)/h) + atan(t_c/h))/(4πh) against a
 //   10⁶-step midpoint sum of 1/(4πd²): 1e-9 relative in double (h ≥ D/100, where the
 //   midpoint sum itself is that accurate);
@@ -12,9 +12,9 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/airlight.h"
+#include "physics/airlight.h"
 
-namespace volgraph::shading {
+namespace volgraph::physics {
 namespace {
 
 // ∫₀^D p_HG(g, cos θ)·e^(−σt(t + d))/d² dt by a midpoint sum of `steps` steps.
@@ -79,4 +79,4 @@ TEST(Airlight, ALightOnTheRayOrAtTheCameraStaysFinite) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::physics

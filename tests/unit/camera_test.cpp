@@ -2,9 +2,9 @@
 // CPU's rays (what the reference renderer will use): the same pixel, the same line.
 #include <gtest/gtest.h>
 
-#include "passes/shading/camera.h"
+#include "physics/camera.h"
 
-namespace volgraph::shading {
+namespace volgraph::physics {
 namespace {
 
 Camera test_camera() {
@@ -76,4 +76,4 @@ TEST(Camera, OrthographicMapsItsBoxToClipSpace) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::physics

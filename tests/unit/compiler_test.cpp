@@ -214,7 +214,7 @@ TEST(Compiler, ReadsInOneLayoutShareOneBarrier) {
   EXPECT_EQ(color_barriers, 2);  // undefined → colour attachment, then colour → read by all
   const Barrier& read = plan.barriers[plan.order[1].barrier_begin];
   EXPECT_EQ(read.resource, 0u);
-  EXPECT_EQ(read.to.stages, stage::compute_shader | stage::fragment_shader);
+  EXPECT_EQ(read.to.stages, stage::compute_shader | stage::vertex_shader | stage::fragment_shader);
 }
 
 TEST(Compiler, PersistentResourceIsNeverAliasedAndStartsAsItEnded) {

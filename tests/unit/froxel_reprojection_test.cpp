@@ -1,4 +1,4 @@
-// Temporal accumulation's CPU twins (passes/shading/camera.h view_uvz, froxel.h
+// Temporal accumulation's CPU twins (physics/camera.h view_uvz, froxel.h
 // froxel_uvw, temporal.h temporal_blend) where the answer is known exactly: a froxel's
 // centre reprojects onto its own texel centre with an unchanged camera; after a known
 // translation or rotation it lands where geometry says; points behind the camera, off the
@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/froxel.h"
-#include "passes/shading/temporal.h"
+#include "physics/froxel.h"
+#include "physics/temporal.h"
 
-namespace volgraph::shading {
+namespace volgraph::physics {
 namespace {
 
 // Camera at the origin looking down −Z, 90° vertical field of view, square frame: the
@@ -123,4 +123,4 @@ TEST(TemporalBlend, TheFirstFramesAverageEquallyThenAlphaWeighsNewFrames) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::physics

@@ -7,10 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/gltf.h"
-#include "passes/shading/meshes.h"
+#include "passes/plumbing/gltf.h"
+#include "passes/plumbing/meshes.h"
 
-namespace volgraph::shading {
+namespace volgraph::plumbing {
+
 namespace {
 
 const std::string kAssets = std::string(VOLGRAPH_SOURCE_DIR) + "/../shared/assets/gltf/";
@@ -103,4 +104,4 @@ TEST(Gltf, ABrokenFileIsMalformed) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::plumbing

@@ -11,7 +11,7 @@
 #include <stb/stb_image.h>
 
 #include "graph/config/diagnostics.h"
-#include "passes/shading/srgb.h"
+#include "physics/srgb.h"
 #include "tools/image_io.h"
 
 namespace volgraph {
@@ -116,7 +116,7 @@ TEST_F(ImageIo, AFailedWriteLeavesNoTemporaryFile) {
 }
 
 TEST(Srgb, MatchesTheStandardAtItsKnots) {
-  using shading::srgb_encode, shading::srgb_decode;
+  using physics::srgb_encode, physics::srgb_decode;
   EXPECT_FLOAT_EQ(srgb_encode(0.0f), 0.0f);
   EXPECT_FLOAT_EQ(srgb_encode(1.0f), 1.0f);
   EXPECT_NEAR(srgb_encode(0.0031308f), 0.040449936f, 1e-6);

@@ -1,4 +1,4 @@
-// light_volume's I(t) (passes/shading/light_volume_integral.h) against brute force: a
+// light_volume's I(t) (physics/light_volume_integral.h) against brute force: a
 // 2·10⁶-step midpoint sum in double of raymarch_fog's integrand in a homogeneous medium,
 // built from lighting.h (light_arriving: I·cone/d²), phase.h and e^(−σt·(s + d)):
 // - spot lights whose cone the ray enters and leaves (both cones crossed), a ray along the
@@ -16,9 +16,9 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/light_volume_integral.h"
+#include "physics/light_volume_integral.h"
 
-namespace volgraph::shading {
+namespace volgraph::physics {
 namespace {
 
 using V3 = std::array<double, 3>;
@@ -161,4 +161,4 @@ TEST(LightVolumeIntegral, StressIsFiniteAndNonNegative) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::physics

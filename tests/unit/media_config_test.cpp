@@ -7,7 +7,7 @@
 
 #include "graph/config/config.h"
 #include "passes/passes.h"
-#include "passes/shading/media.h"
+#include "physics/media.h"
 
 namespace volgraph {
 namespace {
@@ -52,7 +52,7 @@ TEST_F(MediaConfig, TransmittanceColourGivesSigmaThroughItsDistance) {
 
 TEST_F(MediaConfig, ATransmittanceColourOfZeroIsAsOpaqueAsAllowed) {
   const Scene s = scene(R"({ "fog": { "albedo": [1, 1, 1], "transmittance": { "color": [0, 0, 0], "distance": 2 } } })");
-  EXPECT_DOUBLE_EQ(s.media.fog->sigma_s[0], -std::log(shading::kMinTransmittance<double>) / 2);
+  EXPECT_DOUBLE_EQ(s.media.fog->sigma_s[0], -std::log(physics::kMinTransmittance<double>) / 2);
   EXPECT_TRUE(std::isfinite(s.media.fog->sigma_s[0]));
 }
 

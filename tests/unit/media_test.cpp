@@ -1,4 +1,4 @@
-// Media maths (passes/shading/media.h): the stable (1 − e^(−x))/x in float against
+// Media maths (physics/media.h): the stable (1 − e^(−x))/x in float against
 // double across the traps the naive form falls into; Hillaire's step exact for a
 // homogeneous slab at any slice count and more accurate than Wronski's on a dense one;
 // height-fog optical depth against quadrature; depth fog and σ from a transmittance
@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/media.h"
+#include "physics/media.h"
 
-namespace volgraph::shading {
+namespace volgraph::physics {
 namespace {
 
 double exact_one_minus_exp_over_x(double x) { return x == 0 ? 1.0 : -std::expm1(-x) / x; }
@@ -125,4 +125,4 @@ TEST(Media, SigmaFromATransmittanceColourHandlesZeroAndOne) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::physics

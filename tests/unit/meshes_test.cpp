@@ -5,10 +5,12 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/camera.h"
-#include "passes/shading/meshes.h"
+#include "physics/camera.h"
+#include "passes/plumbing/meshes.h"
 
-namespace volgraph::shading {
+namespace volgraph::plumbing {
+
+using namespace physics;
 namespace {
 
 double at(const Mesh& m, uint32_t i, uint32_t k) { return m.vertices[kMeshVertexFloats * i + k]; }
@@ -88,4 +90,4 @@ TEST(Meshes, SphereWindsOutwardAndApproachesItsArea) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::plumbing

@@ -1,4 +1,4 @@
-// Phase functions (passes/shading/phase.h): each integrates to 1 over the sphere, HG's
+// Phase functions (physics/phase.h): each integrates to 1 over the sphere, HG's
 // mean cosine is g (numeric quadrature), and the known traps are disarmed: HG's
 // textbook denominator cancels near g → 1 (ours keeps float precision), its forward
 // peak overflows fp16 above g ≈ 0.998, Schlick's k leaves (−1, 1) above g ≈ 0.938.
@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/shading/phase.h"
+#include "physics/phase.h"
 
-namespace volgraph::shading {
+namespace volgraph::physics {
 namespace {
 
 // Adaptive Simpson on [a, b] (absolute tolerance), for the sharp lobes near g = ±1.
@@ -106,4 +106,4 @@ TEST(Phase, NoNanOrInfAnywhereInFloat) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::physics

@@ -1,4 +1,4 @@
-// Shadow-map fitting (passes/shading/shadow_fit.h): the fitted directional window holds
+// Shadow-map fitting (physics/shadow_fit.h): the fitted directional window holds
 // every receiver the camera sees (sampled densely) and every caster's depth, is far
 // smaller than the whole-scene window over a large ground, and a moving camera shifts it
 // by whole texels only; a spot light's near and far hug the scene's bounds.
@@ -7,9 +7,9 @@
 #include <cmath>
 #include <vector>
 
-#include "passes/shading/shadow_fit.h"
+#include "physics/shadow_fit.h"
 
-namespace volgraph::shading {
+namespace volgraph::physics {
 namespace {
 
 // Receivers project into the light's clip volume exactly, up to double rounding.
@@ -264,4 +264,4 @@ TEST(ShadowFit, InverseUndoesAProjection) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::physics

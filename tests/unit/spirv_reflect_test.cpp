@@ -1,11 +1,13 @@
 // SPIR-V reflection on the embedded production shaders (their layouts are the ones the
 // passes write by hand today) and on test-only shaders (tests/unit/shaders/): storage
 // textures and buffers (with their access), textures sampled through a sampler or only
-// fetched, a conflict between stages, and what the rhi cannot express.
+// fetched, a conflict between stages, and what the rhi cannot express; uniform block
+// layouts, and host structs checked against them.
 #include "graph/rhi/spirv_reflect.h"
 
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -219,6 +221,188 @@ TEST(SpirvReflect, MalformedModulesThrow) {
   overrun[5] = 0xffffu << 16 | (overrun[5] & 0xffffu);
   EXPECT_EQ(reflection_error({{overrun, shader_stage::compute}}, "overrun"), "SPIR-V: malformed instruction at word 5");
   EXPECT_THROW(reflect_workgroup_size(overrun), std::runtime_error);
+  // Well framed, but a SPIR-V version SPIRV-Cross does not know (header word 1): its error.
+  std::vector<uint32_t> unknown_version(composite.begin(), composite.end());
+  unknown_version[1] = 0x7f0000;
+  EXPECT_EQ(reflection_error({{unknown_version, shader_stage::compute}}, "version"), "SPIR-V: Invalid SPIRV format.");
+}
+
+TEST(SpirvReflect, WorkgroupSizeFromSpecialisationConstantsThrows) {
+  try {
+    reflect_workgroup_size(test_only("spec_workgroup.comp"));
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_STREQ(error.what(), "SPIR-V: the workgroup size is given by specialisation constants (constant_id 0), not "
+                               "literal sizes");
+  }
+}
+
+// ---- Uniform block layouts ------------------------------------------------------------
+
+// "CompositeParams set 0 binding 3, 16 bytes: size@0+8 exposure_ev@8+4 tone_map_op@12+4".
+std::string block_text(const UniformBlockLayout& block) {
+  std::string text = block.name + " set " + std::to_string(block.set) + " binding " + std::to_string(block.binding) +
+                     ", " + std::to_string(block.size) + " bytes:";
+  for (const UniformMember& member : block.members) {
+    text += " " + member.name + "@" + std::to_string(member.offset) + "+" + std::to_string(member.size);
+  }
+  return text;
+}
+
+std::vector<std::string> blocks_text(std::vector<ShaderStageCode> stages) {
+  std::vector<std::string> text;
+  for (const UniformBlockLayout& block : reflect_uniform_blocks(stages, "t")) text.push_back(block_text(block));
+  return text;
+}
+
+UniformBlockLayout only_block(std::vector<ShaderStageCode> stages, uint32_t set, uint32_t binding) {
+  for (const UniformBlockLayout& block : reflect_uniform_blocks(stages, "t")) {
+    if (block.set == set && block.binding == binding) return block;
+  }
+  ADD_FAILURE() << "no uniform block at set " << set << ", binding " << binding;
+  return {};
+}
+
+// The message check_uniform_block throws, or "" when it does not.
+std::string host_error(const UniformBlockLayout& block, uint64_t size, std::vector<uint64_t> offsets,
+                       std::string_view name) {
+  try {
+    check_uniform_block(block, size, offsets, name);
+  } catch (const std::runtime_error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(SpirvReflect, CompositeParamsBlockLayout) {
+  EXPECT_EQ(blocks_text({{production("composite.comp"), shader_stage::compute}}),
+            (std::vector<std::string>{
+                "CompositeParams set 0 binding 3, 16 bytes: size@0+8 exposure_ev@8+4 tone_map_op@12+4"}));
+}
+
+// froxel_scatter_body.glsl: the frame block (one FogFrame member) and the pass's Params.
+TEST(SpirvReflect, FroxelScatterBlockLayouts) {
+  const std::vector<ShaderStageCode> stages = {{production("froxel_scatter.comp"), shader_stage::compute}};
+  const std::vector<UniformBlockLayout> blocks = reflect_uniform_blocks(stages, "t");
+  ASSERT_EQ(blocks.size(), 2u);
+  EXPECT_EQ(blocks[0].name, "Frame");
+  EXPECT_EQ(blocks[0].binding, 0u);
+  ASSERT_EQ(blocks[0].members.size(), 1u);
+  EXPECT_EQ(blocks[0].members[0].name, "f");
+  EXPECT_EQ(blocks[0].members[0].offset, 0u);
+  EXPECT_EQ(blocks[0].members[0].size, blocks[0].size);
+  EXPECT_EQ(block_text(blocks[1]), "Params set 0 binding 5, 48 bytes: modes@0+16 lobes@16+16 volumetric@32+16");
+}
+
+// Both scene stages declare the frame and object blocks: each is listed once.
+TEST(SpirvReflect, SceneBlocksMergeAcrossStages) {
+  const std::vector<std::string> blocks = blocks_text(
+      {{production("scene.vert"), shader_stage::vertex}, {production("scene.frag"), shader_stage::fragment}});
+  ASSERT_EQ(blocks.size(), 2u);
+  EXPECT_EQ(blocks[0],
+            "Frame set 0 binding 0, 864 bytes: view_projection@0+64 ambient_irradiance@64+16 light_list@80+784");
+  EXPECT_EQ(blocks[1],
+            "Object set 1 binding 0, 160 bytes: model@0+64 normal_matrix@64+64 albedo@128+16 emissive@144+16");
+}
+
+TEST(SpirvReflect, Std140GapsAndPacking) {
+  EXPECT_EQ(blocks_text({{test_only("uniform_layout.comp"), shader_stage::compute}}),
+            (std::vector<std::string>{"Layout set 0 binding 0, 132 bytes: a@0+4 b@16+12 c@28+4 d@32+8 e@48+32 m@80+48 "
+                                      "last@128+4"}));
+}
+
+TEST(SpirvReflect, StagesLayingOutOneBlockDifferentlyThrow) {
+  try {
+    reflect_uniform_blocks(std::vector<ShaderStageCode>{{test_only("conflict.vert"), shader_stage::vertex},
+                                                        {test_only("block_conflict.frag"), shader_stage::fragment}},
+                           "conflict");
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_STREQ(error.what(), "conflict: set 1, binding 2 declared differently: vertex shader: uniform block Scale "
+                               "(16 bytes: factor at 0); fragment shader: uniform block Scale (32 bytes: bias at 0, "
+                               "factor at 16)");
+  }
+}
+
+// composite.comp's CompositeParams, as a host would write it.
+struct CompositeParams {
+  uint32_t size[2];
+  float exposure_ev;
+  int32_t tone_map_op;
+};
+
+TEST(SpirvReflect, MatchingHostStructPasses) {
+  const UniformBlockLayout block = only_block({{production("composite.comp"), shader_stage::compute}}, 0, 3);
+  const std::vector<uint64_t> offsets = {offsetof(CompositeParams, size), offsetof(CompositeParams, exposure_ev),
+                                         offsetof(CompositeParams, tone_map_op)};
+  EXPECT_NO_THROW(check_uniform_block(block, sizeof(CompositeParams), offsets, "CompositeParams"));
+}
+
+// A host struct with a member in the wrong place, then one of the wrong size, then one
+// with a member too few.
+TEST(SpirvReflect, MismatchedHostStructsAreCaught) {
+  struct Misplaced {
+    uint32_t size[2];
+    float padding;  // pushes exposure_ev to 12
+    float exposure_ev;
+    int32_t tone_map_op;
+  };
+  struct alignas(32) Oversized {
+    uint32_t size[2];
+    float exposure_ev;
+    int32_t tone_map_op;
+  };
+  const UniformBlockLayout block = only_block({{production("composite.comp"), shader_stage::compute}}, 0, 3);
+  EXPECT_EQ(host_error(block, sizeof(Misplaced),
+                       {offsetof(Misplaced, size), offsetof(Misplaced, exposure_ev), offsetof(Misplaced, tone_map_op)},
+                       "Misplaced"),
+            "host struct Misplaced does not match uniform block CompositeParams (set 0, binding 3): member 1 "
+            "(exposure_ev, 4 bytes) is at offset 8 in the block, 12 in the host struct");
+  EXPECT_EQ(host_error(block, sizeof(Oversized),
+                       {offsetof(Oversized, size), offsetof(Oversized, exposure_ev), offsetof(Oversized, tone_map_op)},
+                       "Oversized"),
+            "host struct Oversized does not match uniform block CompositeParams (set 0, binding 3): the block is 16 "
+            "bytes, the host struct 32 (the sizes must be equal)");
+  EXPECT_EQ(host_error(block, 12, {0, 8}, "Short"),
+            "host struct Short does not match uniform block CompositeParams (set 0, binding 3): the block has 3 "
+            "members, the host struct 2");
+}
+
+// std140 needs padding a naively packed host struct lacks: the check finds the first
+// member out of place; the padded struct matches.
+TEST(SpirvReflect, Std140HostStructs) {
+  struct Packed {
+    float a;
+    float b[3];  // at 4: std140 puts b at 16
+    float c;
+    float d[2];
+    float e[2];
+    float m[9];
+    int32_t last;
+  };
+  struct Padded {
+    float a;
+    float pad0[3];
+    float b[3];
+    float c;
+    float d[2];
+    float pad1[2];
+    float e[2][4];  // array stride 16
+    float m[3][4];  // column stride 16
+    int32_t last;
+  };
+  const UniformBlockLayout block = only_block({{test_only("uniform_layout.comp"), shader_stage::compute}}, 0, 0);
+  EXPECT_EQ(host_error(block, sizeof(Packed),
+                       {offsetof(Packed, a), offsetof(Packed, b), offsetof(Packed, c), offsetof(Packed, d),
+                        offsetof(Packed, e), offsetof(Packed, m), offsetof(Packed, last)},
+                       "Packed"),
+            "host struct Packed does not match uniform block Layout (set 0, binding 0): member 1 (b, 12 bytes) is at "
+            "offset 16 in the block, 4 in the host struct");
+  EXPECT_EQ(host_error(block, sizeof(Padded),
+                       {offsetof(Padded, a), offsetof(Padded, b), offsetof(Padded, c), offsetof(Padded, d),
+                        offsetof(Padded, e), offsetof(Padded, m), offsetof(Padded, last)},
+                       "Padded"),
+            "");
 }
 
 }  // namespace

@@ -4,10 +4,11 @@
 
 #include <stb/stb_image_write.h>
 
-#include "passes/shading/srgb.h"
-#include "passes/shading/textures.h"
+#include "physics/srgb.h"
+#include "passes/plumbing/textures.h"
 
-namespace volgraph::shading {
+namespace volgraph::plumbing {
+
 namespace {
 
 Rgba8Image image(uint32_t width, uint32_t height, std::vector<uint8_t> texels) { return {width, height, std::move(texels)}; }
@@ -21,7 +22,7 @@ TEST(Textures, MipChainAveragesInLinearLight) {
   EXPECT_EQ(chain[0].texels, top.texels);
   EXPECT_EQ(chain[1].width, 1u);
   EXPECT_EQ(chain[1].texels, (std::vector<uint8_t>{188, 188, 188, 128}));
-  EXPECT_EQ(std::lround(srgb_encode(0.5f) * 255), 188);
+  EXPECT_EQ(std::lround(physics::srgb_encode(0.5f) * 255), 188);
 }
 
 TEST(Textures, MipChainGoesDownToOneTexelFromAnySize) {
@@ -60,4 +61,4 @@ TEST(Textures, RefusesWhatIsNotAnImageAndSaysWhy) {
 }
 
 }  // namespace
-}  // namespace volgraph::shading
+}  // namespace volgraph::plumbing

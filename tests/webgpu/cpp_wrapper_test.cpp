@@ -12,6 +12,7 @@
 #include <vector>
 #include <webgpu/webgpu_cpp.h>
 
+#include "graph/access.h"
 #include "shaders/shader_library.h"
 
 namespace {

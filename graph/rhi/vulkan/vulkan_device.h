@@ -7,6 +7,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "graph/rhi/graph_resource_set.h"
 #include "graph/rhi/rhi.h"
 #include "graph/rhi/vulkan/context.h"
 

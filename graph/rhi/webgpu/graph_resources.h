@@ -12,6 +12,7 @@
 #include <webgpu/webgpu_cpp.h>
 
 #include "graph/pooling.h"
+#include "graph/rhi/graph_resource_set.h"
 #include "graph/rhi/rhi.h"
 
 namespace volgraph::webgpu {

@@ -1,0 +1,47 @@
+// glTF 2.0 models (tinygltf) as triangle lists for the passes that rasterise the scene:
+// every triangle primitive of the default scene, node transforms applied, with its
+// material's base colour and emission (factors and textures). Images are checked when
+// the file is loaded and kept encoded; passes that sample them decode them
+// (passes/plumbing/textures.h), so a pass that only needs geometry pays nothing for them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "graph/scene/scene.h"
+#include "passes/plumbing/textures.h"
+
+namespace volgraph::plumbing {
+
+// A material's texture: an image of the model and how it wraps; image −1: none.
+struct GltfTexture {
+  int image = -1;
+  SamplerWrap wrap;
+  explicit operator bool() const { return image >= 0; }
+};
+
+struct GltfPrimitive {
+  std::vector<float> vertices;  // position xyz, normal xyz, texture coordinate uv, in the model's space
+  std::vector<uint32_t> indices;
+  Vec3 base_color{1, 1, 1};  // linear
+  Vec3 emissive{0, 0, 0};    // linear radiance factor
+  GltfTexture base_color_texture;  // sRGB, multiplies base_color
+  GltfTexture emissive_texture;    // sRGB, multiplies emissive
+};
+
+struct GltfImage {
+  std::string name;              // for labels and messages
+  std::vector<uint8_t> encoded;  // PNG or JPEG bytes, as in the file
+  Rgba8Image decode() const { return decode_image(encoded.data(), encoded.size(), name); }
+};
+
+struct GltfModel {
+  std::vector<GltfPrimitive> primitives;
+  std::vector<GltfImage> images;
+  size_t triangle_count() const;
+};
+
+// Throws std::runtime_error with what is wrong with the file.
+GltfModel load_gltf(const std::string& path);
+
+}  // namespace volgraph::plumbing

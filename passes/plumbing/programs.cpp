@@ -1,0 +1,87 @@
+#include "passes/plumbing/programs.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "graph/rhi/device_error.h"
+#include "graph/rhi/spirv_reflect.h"
+#include "shaders/shader_library.h"
+
+namespace volgraph::plumbing {
+namespace {
+
+std::span<const uint32_t> spirv_of(const std::string& shader) {
+  const std::span<const uint32_t> words = shader_spirv(shader);
+  if (words.empty()) throw DeviceError(DeviceError::Kind::other, "no shader named " + shader + " in shaders/");
+  return words;
+}
+
+std::vector<rhi::BindGroupLayoutId> create_layouts(rhi::Device& device, const std::vector<rhi::BindGroupLayoutDesc>& descs) {
+  std::vector<rhi::BindGroupLayoutId> layouts;
+  for (const rhi::BindGroupLayoutDesc& d : descs) layouts.push_back(device.create_bind_group_layout(d));
+  return layouts;
+}
+
+}  // namespace
+
+std::array<uint32_t, 3> ComputeProgram::groups_for(Extent size) const {
+  const uint32_t extent[3] = {size.width, size.height, std::max(1u, size.depth)};
+  std::array<uint32_t, 3> groups{};
+  for (size_t i = 0; i < 3; ++i) groups[i] = (extent[i] + workgroup_size[i] - 1) / workgroup_size[i];
+  return groups;
+}
+
+ComputeProgram create_compute_program(rhi::Device& device, const std::string& shader) {
+  const std::span<const uint32_t> spirv = spirv_of(shader);
+  const rhi::ShaderStageCode stage{spirv, rhi::shader_stage::compute};
+  ComputeProgram program;
+  program.layouts = create_layouts(device, rhi::reflect_bind_group_layouts({&stage, 1}, shader));
+  program.workgroup_size = rhi::reflect_workgroup_size(spirv);
+  program.uniform_blocks = rhi::reflect_uniform_blocks({&stage, 1}, shader);
+  program.pipeline = device.create_compute_pipeline({shader, device.create_shader_module(shader, spirv), "main", program.layouts});
+  return program;
+}
+
+RenderProgram create_render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex,
+                                    const std::string& fragment) {
+  std::vector<rhi::ShaderStageCode> stages = {{spirv_of(vertex), rhi::shader_stage::vertex}};
+  if (!fragment.empty()) stages.push_back({spirv_of(fragment), rhi::shader_stage::fragment});
+  RenderProgram program;
+  program.layout_descs = rhi::reflect_bind_group_layouts(stages, desc.label);
+  program.layouts = create_layouts(device, program.layout_descs);
+  program.uniform_blocks = rhi::reflect_uniform_blocks(stages, desc.label);
+  desc.vertex_module = device.create_shader_module(vertex, stages[0].spirv);
+  if (!fragment.empty()) desc.fragment_module = device.create_shader_module(fragment, stages[1].spirv);
+  desc.layouts = program.layouts;
+  program.pipeline = device.create_render_pipeline(desc);
+  return program;
+}
+
+void dispatch(rhi::CommandEncoder& encoder, const std::string& label, const ComputeProgram& program,
+              std::initializer_list<rhi::BindGroupId> groups, Extent invocations) {
+  encoder.begin_compute_pass(label);
+  encoder.set_pipeline(program.pipeline);
+  uint32_t set = 0;
+  for (const rhi::BindGroupId group : groups) {
+    if (group) encoder.set_bind_group(set, group);
+    ++set;
+  }
+  const auto counts = program.groups_for(invocations);
+  encoder.dispatch(counts[0], counts[1], counts[2]);
+  encoder.end_compute_pass();
+}
+
+rhi::BufferId create_uniform_buffer(rhi::Device& device, const std::string& label, std::span<const std::byte> bytes) {
+  const rhi::BufferId buffer = device.create_buffer({label, bytes.size(), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+  device.write_buffer(buffer, 0, bytes);
+  return buffer;
+}
+
+const rhi::UniformBlockLayout& uniform_block_at(const std::vector<rhi::UniformBlockLayout>& blocks, uint32_t set, uint32_t binding) {
+  for (const rhi::UniformBlockLayout& b : blocks) {
+    if (b.set == set && b.binding == binding) return b;
+  }
+  throw std::logic_error("the shader has no uniform block at set " + std::to_string(set) + ", binding " + std::to_string(binding));
+}
+
+}  // namespace volgraph::plumbing

@@ -1,0 +1,130 @@
+#include "passes/plumbing/scene_geometry.h"
+
+#include <algorithm>
+
+#include "physics/camera.h"
+#include "passes/plumbing/gltf.h"
+#include "passes/plumbing/meshes.h"
+
+namespace volgraph::plumbing {
+
+using namespace physics;  // the CPU maths these helpers are written in
+namespace {
+
+// Binding 0 is the object block (object_uniforms.glsl); 1, 2 and 3 the material's
+// textures and sampler (material_textures.glsl), declared by passes that shade.
+bool declares_textures(const rhi::BindGroupLayoutDesc& object_set) {
+  for (const rhi::LayoutEntry& e : object_set.entries) {
+    if (e.binding == 1) return true;
+  }
+  return false;
+}
+
+// A glTF primitive's textures: images of the model, decoded when first bound.
+MaterialTextures gltf_textures(const GltfModel& model, const GltfPrimitive& p) {
+  MaterialTextures t;
+  auto image = [&model](const GltfTexture& texture) -> std::function<Rgba8Image()> {
+    if (!texture) return nullptr;
+    const GltfImage* source = &model.images[size_t(texture.image)];
+    return [source] { return source->decode(); };
+  };
+  t.base_color = image(p.base_color_texture);
+  t.emissive = image(p.emissive_texture);
+  if (p.base_color_texture) t.base_color_key = model.images[size_t(p.base_color_texture.image)].name;
+  if (p.emissive_texture) t.emissive_key = model.images[size_t(p.emissive_texture.image)].name;
+  t.wrap = p.base_color_texture ? p.base_color_texture.wrap : p.emissive_texture.wrap;
+  return t;
+}
+
+MaterialTextures config_textures(const Material* m) {
+  MaterialTextures t;
+  if (!m || m->albedo_texture.empty()) return t;
+  const std::string path = m->albedo_texture;
+  t.base_color = [path] { return read_image_file(path); };
+  t.base_color_key = path;
+  return t;
+}
+
+}  // namespace
+
+rhi::VertexBufferLayout SceneGeometry::vertex_layout() {
+  using rhi::VertexFormat;
+  return {kMeshVertexFloats * 4, {{0, VertexFormat::float32x3, 0}, {1, VertexFormat::float32x3, 12}, {2, VertexFormat::float32x2, 24}}};
+}
+
+rhi::VertexBufferLayout SceneGeometry::position_layout() {
+  return {kMeshVertexFloats * 4, {{0, rhi::VertexFormat::float32x3, 0}}};
+}
+
+std::vector<rhi::BindGroupEntry> SceneGeometry::texture_entries(const MaterialTextures& t) {
+  using rhi::BindGroupEntry;
+  return {BindGroupEntry::of(1, t.base_color ? textures_->srgb(t.base_color_key, t.base_color) : textures_->white()),
+          BindGroupEntry::of(2, t.emissive ? textures_->srgb(t.emissive_key, t.emissive) : textures_->white()),
+          BindGroupEntry::of(3, textures_->sampler(t.wrap))};
+}
+
+void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
+  using namespace rhi;
+  for (size_t v = 0; v < object.vertices.size(); v += kMeshVertexFloats) {
+    const Vec3 p = transform_point(object.model, {object.vertices[v], object.vertices[v + 1], object.vertices[v + 2]});
+    for (size_t k = 0; k < 3; ++k) {
+      min_[k] = std::min(min_[k], p[k]);
+      max_[k] = std::max(max_[k], p[k]);
+    }
+  }
+  GpuObject g;
+  g.index_count = uint32_t(object.indices.size());
+  g.vertices = device.create_buffer({"object vertices", object.vertices.size() * 4, buffer_usage::vertex});
+  device.write_buffer(g.vertices, 0, std::as_bytes(std::span(object.vertices)));
+  g.indices = device.create_buffer({"object indices", object.indices.size() * 4, buffer_usage::index});
+  device.write_buffer(g.indices, 0, std::as_bytes(std::span(object.indices)));
+  GpuObjectBlock block{};
+  to_floats(object.model, block.model);
+  to_floats(normal_matrix(object.model), block.normal_matrix);
+  for (size_t i = 0; i < 3; ++i) {
+    block.albedo[i] = float(object.albedo[i]);
+    block.emissive[i] = float(object.emissive[i]);
+  }
+  g.uniforms = device.create_buffer({"object", sizeof(GpuObjectBlock), buffer_usage::uniform});
+  device.write_buffer(g.uniforms, 0, std::as_bytes(std::span(&block, 1)));
+  std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, g.uniforms)};
+  if (textured_) {
+    for (const BindGroupEntry& t : texture_entries(object.textures)) entries.push_back(t);
+  }
+  g.group = device.create_bind_group({"object", layout_, entries});
+  objects_.push_back(g);
+}
+
+SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, const RenderProgram& program)
+    : textured_(declares_textures(program.layout_descs.at(1))),
+      textures_(std::make_unique<TextureCache>(device)),
+      layout_(program.layouts.at(1)) {
+  check_uniform_mirror<GpuObjectBlock>(program, 1, 0, "GpuObjectBlock");
+  for (const Object& object : scene.objects) {
+    const Mat4 model = model_matrix(object.transform);
+    if (object.shape == Shape::gltf) {
+      const GltfModel gltf = load_gltf(object.file);
+      for (const GltfPrimitive& p : gltf.primitives) {
+        // The images must outlive the loads the cache makes while binding (inside add).
+        const MaterialTextures textures = gltf_textures(gltf, p);
+        add(device, {p.vertices, p.indices, model, p.base_color, p.emissive, textures});
+      }
+      continue;
+    }
+    const Mesh mesh = primitive_mesh(object.shape, object.size);
+    const Material* m = scene.find_material(object.material);
+    const MaterialTextures textures = config_textures(m);
+    add(device, {mesh.vertices, mesh.indices, model, m ? m->albedo : Vec3{0.8, 0.8, 0.8}, m ? m->emissive : Vec3{0, 0, 0}, textures});
+  }
+}
+
+void SceneGeometry::draw(rhi::CommandEncoder& encoder, uint32_t set) const {
+  for (const GpuObject& o : objects_) {
+    encoder.set_bind_group(set, o.group);
+    encoder.set_vertex_buffer(0, o.vertices);
+    encoder.set_index_buffer(o.indices, rhi::IndexFormat::uint32);
+    encoder.draw_indexed(o.index_count);
+  }
+}
+
+}  // namespace volgraph::plumbing

@@ -1,0 +1,83 @@
+// The scene's objects on the device, shared by every pass that rasterises them (scene,
+// shadow_map): one vertex and index buffer per object and its set-1 bind group — a
+// uniform block with its transforms and material factors (shaders/include/
+// object_uniforms.glsl) and, for passes that shade, the material's textures
+// (shaders/include/material_textures.glsl).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "graph/rhi/rhi.h"
+#include "graph/scene/scene.h"
+#include "physics/camera.h"
+#include "passes/plumbing/programs.h"
+#include "passes/plumbing/textures.h"
+
+namespace volgraph::plumbing {
+
+// std140 mirror of the Object block (shaders/include/object_uniforms.glsl).
+struct GpuObjectBlock {
+  float model[16];
+  float normal_matrix[16];
+  float albedo[4];
+  float emissive[4];
+  static constexpr std::array<uint64_t, 4> offsets() {
+    return {offsetof(GpuObjectBlock, model), offsetof(GpuObjectBlock, normal_matrix), offsetof(GpuObjectBlock, albedo),
+            offsetof(GpuObjectBlock, emissive)};
+  }
+};
+
+struct GpuObject {
+  rhi::BufferId vertices, indices, uniforms;
+  rhi::BindGroupId group;
+  uint32_t index_count = 0;
+};
+
+// A material's texture images (null: a factor alone).
+struct MaterialTextures {
+  std::function<Rgba8Image()> base_color, emissive;
+  std::string base_color_key, emissive_key;
+  SamplerWrap wrap;
+};
+
+class SceneGeometry {
+ public:
+  // Set 1 as the program's shaders declare it (layout_descs[1], layouts[1]): the object
+  // block alone (depth passes) or with the material's textures. The object block is
+  // checked against GpuObjectBlock (plumbing::check_uniform_mirror). glTF objects are
+  // loaded here (throws std::runtime_error for a broken file).
+  SceneGeometry(rhi::Device& device, const Scene& scene, const RenderProgram& program);
+  const std::vector<GpuObject>& objects() const { return objects_; }
+  // Vertex buffer layouts: position, normal and texture coordinate at locations 0, 1, 2;
+  // or the position alone (depth passes).
+  static rhi::VertexBufferLayout vertex_layout();
+  static rhi::VertexBufferLayout position_layout();
+  // World-space bounds of every object (for fitting light projections).
+  Vec3 bounds_min() const { return min_; }
+  Vec3 bounds_max() const { return max_; }
+  // Binds set `set` and draws every object (the pipeline is set by the caller).
+  void draw(rhi::CommandEncoder& encoder, uint32_t set) const;
+
+ private:
+  struct ObjectData {
+    const std::vector<float>& vertices;
+    const std::vector<uint32_t>& indices;
+    const physics::Mat4& model;
+    Vec3 albedo, emissive;
+    const MaterialTextures& textures;
+  };
+  void add(rhi::Device& device, const ObjectData& object);
+  std::vector<rhi::BindGroupEntry> texture_entries(const MaterialTextures& textures);
+
+  bool textured_ = false;
+  std::unique_ptr<TextureCache> textures_;
+  rhi::BindGroupLayoutId layout_;
+  std::vector<GpuObject> objects_;
+  Vec3 min_{1e30, 1e30, 1e30}, max_{-1e30, -1e30, -1e30};
+};
+
+}  // namespace volgraph::plumbing

@@ -1,0 +1,59 @@
+// vignette: a pinhole camera's natural vignetting — irradiance falls as cos⁴θ off the
+// optical axis (θ between a pixel's ray and the view direction) — mixed in by `strength`.
+// The example pass of the README's pass author's guide. Shader: shaders/vignette.comp.
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "graph/execute/pass_execution.h"
+#include "graph/scene/scene.h"
+#include "passes/passes.h"
+#include "passes/plumbing/programs.h"
+
+namespace volgraph {
+namespace {
+
+struct VignetteTable : PassTable {
+  VignetteTable() : PassTable("vignette", PassKind::compute, "Natural vignetting: the colour × cos⁴θ off the axis.") {}
+  VariantHandle cos4 = variant("cos4", "the cos⁴ law of a pinhole camera");
+  ParamHandle<double> strength = number("strength", 1, 0, 1, "", "0: no vignetting, 1: the full cos⁴θ");
+  SlotHandle color = input("color", ResourceKind::texture2d, Usage::sampled, "linear radiance");
+  SlotHandle vignetted = output_like("vignetted", color, Usage::storage_write, "the radiance × mix(1, cos⁴θ, strength)");
+};
+
+struct GpuVignetteParams {  // vignette.comp's VignetteParams
+  float lens[4];            // tan(fov_y / 2), aspect, strength
+  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuVignetteParams, lens)}; }
+};
+
+class VignetteExecution final : public PassExecution {
+ public:
+  explicit VignetteExecution(const VignetteTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    program_ = plumbing::create_compute_program(s.device, "vignette.comp");
+    const Extent frame = s.frame_size();
+    const GpuVignetteParams params{{float(std::tan(s.scene->camera.fov_y_deg * M_PI / 360.0)),
+                                    float(double(frame.width) / double(frame.height)), float(s.param(t_.strength)), 0}};
+    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 3, s.name() + " params", params);
+  }
+
+  void record(PassContext& c) override {
+    using rhi::BindGroupEntry;
+    const rhi::BindGroupId group =
+        c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, c.view(t_.color)), BindGroupEntry::of(1, c.sampler(rhi::StockSampler::nearest_clamp)),
+                                           BindGroupEntry::of(2, c.view(t_.vignetted)), BindGroupEntry::of(3, params_)});
+    plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.vignetted));
+  }
+
+ private:
+  const VignetteTable& t_;
+  plumbing::ComputeProgram program_;
+  rhi::BufferId params_;
+};
+
+}  // namespace
+
+PassDecl vignette_pass() { return pass_type<VignetteTable, VignetteExecution>(); }
+
+}  // namespace volgraph

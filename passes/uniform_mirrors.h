@@ -1,0 +1,102 @@
+// The std140 mirrors of the passes' own uniform blocks (a pass's Params or frame block,
+// filled by that pass alone), here rather than in the pass files so that
+// tests/unit/uniform_mirrors_test.cpp can check each against the shaders that declare it.
+// Each lists its members' offsets in offsets() (passes/plumbing/programs.h), which the
+// pass's check at setup uses. The blocks several passes share are next to their packing:
+// fog::GpuFogFrame (fog/fog_frame.h), plumbing::GpuLightList (plumbing/light_list.h),
+// plumbing::ShadowViewBlock (plumbing/shadow_view.h), plumbing::GpuObjectBlock
+// (plumbing/scene_geometry.h), fog::GpuTemporalParams (fog/temporal.h).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "passes/plumbing/light_list.h"
+
+namespace volgraph {
+
+// composite.comp's CompositeParams.
+struct GpuCompositeParams {
+  uint32_t size[2];
+  float exposure_ev;
+  int32_t tone_map_op;
+  static constexpr std::array<uint64_t, 3> offsets() {
+    return {offsetof(GpuCompositeParams, size), offsetof(GpuCompositeParams, exposure_ev),
+            offsetof(GpuCompositeParams, tone_map_op)};
+  }
+};
+
+// The scene pass's Frame (shaders/include/scene_uniforms.glsl).
+struct GpuSceneFrame {
+  float view_projection[16];
+  float ambient_irradiance[4];
+  plumbing::GpuLightList light_list;
+  static constexpr std::array<uint64_t, 3> offsets() {
+    return {offsetof(GpuSceneFrame, view_projection), offsetof(GpuSceneFrame, ambient_irradiance),
+            offsetof(GpuSceneFrame, light_list)};
+  }
+};
+
+// depth_fog.comp's Params.
+struct GpuDepthFogParams {
+  float fog[4];    // start (m), end (m), density (1/m), the variant's DEPTH_FOG_* code
+  float color[4];  // rgb: the fog's radiance
+  static constexpr std::array<uint64_t, 2> offsets() { return {offsetof(GpuDepthFogParams, fog), offsetof(GpuDepthFogParams, color)}; }
+};
+
+// scatter_integrate.comp's Params.
+struct GpuIntegrateParams {
+  int32_t method[4];  // x: the variant's INTEGRATE_* code
+  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuIntegrateParams, method)}; }
+};
+
+// opacity_shadow_map.comp's Params.
+struct GpuOpacityParams {
+  int32_t steps[4];    // x per layer, y toward the light from the column's start
+  float distances[4];  // x the march toward a directional light (m)
+  static constexpr std::array<uint64_t, 2> offsets() { return {offsetof(GpuOpacityParams, steps), offsetof(GpuOpacityParams, distances)}; }
+};
+
+// fog_apply's Frame (shaders/include/fog_image_lookup.glsl, fog_image_lookup_depth_aware.glsl).
+struct GpuFogApplyFrame {
+  float size[4];  // the colour's width and height (pixels), the camera's near and far (m)
+  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuFogApplyFrame, size)}; }
+};
+
+// light_volume.glsl's LightVolumeParams, the one member of the light_volume shaders'
+// Params block (plumbing::check_wrapped_uniform_mirror).
+struct GpuLightVolumeParams {
+  float camera_clip[16];
+  int32_t sizes[4];
+  static constexpr std::array<uint64_t, 2> offsets() {
+    return {offsetof(GpuLightVolumeParams, camera_clip), offsetof(GpuLightVolumeParams, sizes)};
+  }
+};
+
+// froxel_scatter_body.glsl's Params (froxel_scatter.comp and its shadowed variants).
+// passes/fog/froxel_scatter.cpp still declares its own copy; it is to use this one.
+struct GpuFroxelScatterParams {
+  int32_t modes[4];     // phase code, skip empty
+  float lobes[4];       // dual_hg: g_back, w_forward
+  float volumetric[4];  // shadow steps, shadow distance
+  static constexpr std::array<uint64_t, 3> offsets() {
+    return {offsetof(GpuFroxelScatterParams, modes), offsetof(GpuFroxelScatterParams, lobes),
+            offsetof(GpuFroxelScatterParams, volumetric)};
+  }
+};
+
+// raymarch_fog_body.glsl's Params (raymarch_fog.comp, raymarch_fog_shadowed.comp).
+struct GpuRaymarchParams {
+  int32_t steps[4];
+  float distances[4];
+  float jitter[4];
+  int32_t modes[4];  // phase code
+  float lobes[4];    // dual_hg: g_back, w_forward
+  static constexpr std::array<uint64_t, 5> offsets() {
+    return {offsetof(GpuRaymarchParams, steps), offsetof(GpuRaymarchParams, distances), offsetof(GpuRaymarchParams, jitter),
+            offsetof(GpuRaymarchParams, modes), offsetof(GpuRaymarchParams, lobes)};
+  }
+};
+
+}  // namespace volgraph

@@ -1,0 +1,88 @@
+// The in-scattering sum of froxel_scatter and raymarch_fog: CPU twin of
+// shaders/include/in_scattering.glsl (change both together), in double. The radiance per
+// metre the media at p send toward the camera (DESIGN.md units),
+//   S = σs·(Σ_lights p(θ)·E·V·T_media + L_ambient) + emission,
+// p(θ) the pass's phase variant (phase.h, chosen by its PHASE_* code), E each light's
+// unshadowed delivery (lighting.h), V its visibility (a shadow map's, which the caller
+// supplies; 1 without one) and T_media the media's transmittance toward it by a march
+// (light_transmittance.h; none for a light whose V already holds it). The same skips as
+// the GLSL: the light loop where σs is zero in every channel (when asked), a light's march
+// where it delivers nothing — neither changes S.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "graph/scene/scene.h"
+#include "physics/camera.h"
+#include "physics/light_transmittance.h"
+#include "physics/lighting.h"
+#include "physics/media_field.h"
+#include "physics/phase.h"
+#include "shaders/include/phase_codes.h"
+
+namespace volgraph::physics {
+
+// The phase function of a pass: its variant's code and the dual-lobe HG's other lobe.
+struct PhaseChoice {
+  int code = PHASE_HG;     // PHASE_* (shaders/include/phase_codes.h)
+  double g_back = -0.3;    // PHASE_DUAL_HG: the backward lobe's g (the forward lobe's is the medium's)
+  double w_forward = 0.7;  // PHASE_DUAL_HG: the forward lobe's weight
+};
+
+// `phase` for a medium of mean cosine g, clamped to ±kHgMaxAbsGForFp16 (where HG's
+// forward peak would overflow rgba16f) for every variant that reads it.
+template <typename Real>
+Real phase_of(const PhaseChoice& phase, Real g, Real cos_theta) {
+  g = std::clamp(g, -kHgMaxAbsGForFp16<Real>, kHgMaxAbsGForFp16<Real>);
+  switch (phase.code) {
+    case PHASE_ISOTROPIC: return phase_isotropic<Real>();
+    case PHASE_RAYLEIGH: return phase_rayleigh(cos_theta);
+    case PHASE_SCHLICK: return phase_schlick(schlick_k(g), cos_theta);
+    case PHASE_DUAL_HG: return phase_dual_hg(g, Real(phase.g_back), Real(phase.w_forward), cos_theta);
+    default: return phase_hg(g, cos_theta);
+  }
+}
+
+// The march toward each light for T_media (transmittance_to_light).
+struct LightMarch {
+  int steps = 0;              // 0: no march (T_media = 1)
+  double max_distance = 50;   // m, toward directional lights
+  double jitter = 0.5;        // in [0, 1): where inside each step σt is sampled
+};
+
+// The shaders' hooks: every light fully visible, each marched (no shadow map).
+struct Unshadowed {
+  Vec3 visibility(size_t /*light*/, const Vec3& /*p*/) const { return {1, 1, 1}; }
+  bool media_shadow_mapped(size_t /*light*/) const { return false; }
+};
+
+// S at p for the media sample `m` (its σs, g and emission; σa is not read), `to_camera`
+// the unit direction from p toward the camera, `ambient` L_ambient (W/(m²·sr)), `media`
+// what the march toward each light samples. `shadows` stands for the including shader's
+// light_visibility and media_shadow_mapped: `visibility(light, p)` → Vec3,
+// `media_shadow_mapped(light)` → bool.
+template <typename Shadows = Unshadowed>
+Vec3 in_scattering(const MediaSample& m, const Vec3& p, const Vec3& to_camera, const PhaseChoice& phase,
+                   const std::vector<Light>& lights, const Vec3& ambient, const Media& media, const LightMarch& march,
+                   bool skip_without_scattering, const Shadows& shadows = {}) {
+  const bool scatters = m.sigma_s[0] > 0 || m.sigma_s[1] > 0 || m.sigma_s[2] > 0;
+  if (skip_without_scattering && !scatters) return m.emission;
+  Vec3 light = ambient;
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const LightArriving a = light_arriving(lights[i], p);
+    const Vec3 visible = shadows.visibility(i, p);
+    const bool delivers = a.irradiance[0] != 0 || a.irradiance[1] != 0 || a.irradiance[2] != 0;
+    if ((visible[0] <= 0 && visible[1] <= 0 && visible[2] <= 0) || !delivers) continue;
+    const int steps = shadows.media_shadow_mapped(i) ? 0 : march.steps;
+    const Vec3 through = transmittance_to_light(media, lights[i], p, steps, march.max_distance, march.jitter);
+    const double phase_value = phase_of(phase, m.g, dot(a.travel, to_camera));
+    for (size_t c = 0; c < 3; ++c) light[c] += phase_value * a.irradiance[c] * (visible[c] * through[c]);
+  }
+  Vec3 s;
+  for (size_t c = 0; c < 3; ++c) s[c] = m.sigma_s[c] * light[c] + m.emission[c];
+  return s;
+}
+
+}  // namespace volgraph::physics

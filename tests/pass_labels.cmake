@@ -1,0 +1,136 @@
+# Which tests exercise which pass type: `ctest -L froxel_scatter` (or `tools/volgraph test
+# -L froxel_scatter`) runs every test that runs or unit-tests that pass type, its shader or
+# its CPU twin. The labels are added to the test's own (unit, gpu, cli, …).
+#
+# - CLI tests (tests/cli): derived, no table — a config's tests get the pass types the
+#   config uses, read from its JSON and its includes; a broken config's (cli.bad.*) those
+#   of them its .expect message names.
+# - GoogleTest tests: this table. Each regex (CMake syntax) is matched against the ctest
+#   name: "Suite.Test", or for a parameterized test "Prefix/Suite.Test/param" (e.g.
+#   "Backends/FroxelFog.StressLimitsLeaveNoNanOrInfInAnyVolume/vulkan"; CMake 3.25 may add
+#   "  # GetParam() = …"). A test whose name matches nothing gets no pass label.
+#     pass_tests(PASS_TYPE REGEX...)    the matching tests exercise PASS_TYPE
+#     config_tests(REGEX CONFIG...)     the matching tests run these configs (relative to
+#                                       configs/; SHIPPED: all): every pass type in them
+#     each_shipped_config(PREFIX)       instances PREFIX<config_test_name>[_vulkan|_webgpu]:
+#                                       each its own config's pass types
+# The pass types are the registered ones (passes/passes.cpp, and the declarations under
+# passes/); a name that is not one is a configure warning. The variables below are local
+# to this file. Machinery: tests/pass_labels_impl.cmake.
+
+# ---- Tests that share a graph (tests/gpu, tests/unit): one name each ----------------------
+# tests/gpu/froxel_fog_test.cpp: scene → froxel_voxelize → froxel_scatter → scatter_integrate
+# → froxel_apply → composite (every test but the last, which renders surfaces only).
+set(froxel_chain "(^|/)FroxelFog\\.(NothingAppears|APureAbsorber|HillaireIsExact|StressLimits|WithoutAMedium|ADenseBoxShadows|SkippingEmpty)")
+# ... with shadow_map → opacity_shadow_map (volumetric shadows by the opacity map).
+set(froxel_opacity_shadow "(^|/)FroxelFog\\.(StressLimits|ADenseBoxShadowsTheFogUnderItThroughAnOpacityShadowMap|TheOpacityShadowMapDims)")
+# tests/gpu/temporal_fog_test.cpp: froxel_voxelize → froxel_scatter → froxel_temporal.
+set(temporal_froxels "(^|/)TemporalFog\\.(TheHistoryPair|AStillCameraWithoutJitter|AStillCameraConvergesToTheAverage|TheDefaultBlend|AfterTheCameraRises|AfterTheCameraMovesTheReprojectedFroxel|StressScenes|PassesAfterATemporalPass)")
+# ... scene → raymarch_fog → pixel_temporal.
+set(temporal_pixels "(^|/)TemporalFog\\.(AfterTheCameraMovesTheReprojectedPixel|AStillCameraConvergesForThePerPixelMarch|StressScenes|PassesAfterATemporalPass|APassReadingAHistoryPair)")
+# tests/gpu/raymarch_fog_test.cpp: scene → raymarch_fog → fog_apply → composite.
+set(raymarch "(^|/)RaymarchFog\\.")
+# tests/gpu/closed_fog_test.cpp: scene → depth_fog | height_fog | analytic_fog → fog_apply → composite.
+set(closed_fog "(^|/)ClosedFog\\.")
+# tests/gpu/light_volume_test.cpp: shadow_map → scene → light_volume, and raymarch_fog beside it.
+set(light_volume "(^|/)LightVolume\\.")
+# tests/gpu/physics_twins_test.cpp, the shared GLSL includes against their CPU twins:
+# phase, media (Hillaire's step, height-fog depth), airlight, light_volume's I(t).
+set(twins_physics "(^|/)PhysicsTwins\\.ShadersMatchTheirCpuTwins")
+# noise.glsl and media_field.glsl (sample_media: voxelize, the march, light_transmittance).
+set(twins_media_field "(^|/)PhysicsTwins\\.NoiseAndMediaField")
+# view_rays.glsl, froxel.glsl, temporal_blend.glsl.
+set(twins_temporal "(^|/)PhysicsTwins\\.TemporalReprojection")
+# tests/unit/phase_test.cpp: phase.h (froxel_scatter's variants, the march, height_fog,
+# the airlight of analytic_fog and light_volume).
+set(phase "^Phase\\.")
+# in_scattering.glsl ↔ physics/in_scattering.h: shared by froxel_scatter and raymarch_fog.
+set(in_scattering "^InScattering\\." "(^|/)PhysicsTwins\\.InScattering")
+# raymarch_fog_test.cpp's phase-variant test also runs the froxel chain.
+set(phase_variants "(^|/)RaymarchFog\\.EveryPhaseVariant")
+
+# ---- The table: pass type → tests ------------------------------------------------------
+pass_tests(froxel_voxelize
+  "${froxel_chain}" "${phase_variants}" "${temporal_froxels}" "${twins_media_field}")
+pass_tests(froxel_scatter
+  "${froxel_chain}" ${in_scattering} "${phase_variants}" "${temporal_froxels}" "${twins_physics}" "${twins_media_field}" "${phase}"
+  "^SpirvReflect\\.FroxelScatterBlock")          # froxel_scatter.comp's uniform blocks
+pass_tests(scatter_integrate
+  "${froxel_chain}" "${phase_variants}" "${twins_physics}"
+  "(^|/)TemporalFog\\.PassesAfterATemporalPass"
+  "^Media\\.(OneMinusExpOverX|HillaireIsExact|WronskiConverges|IntegrationSteps)")  # media.h's steps
+pass_tests(froxel_apply
+  "${froxel_chain}" "${phase_variants}")
+pass_tests(froxel_temporal
+  "${temporal_froxels}" "${twins_temporal}"
+  "^FroxelReprojection\\." "^TemporalBlend\\.")  # temporal.h, froxel.h
+pass_tests(pixel_temporal
+  "${temporal_pixels}" "${twins_temporal}" "^TemporalBlend\\.")
+pass_tests(raymarch_fog
+  "${raymarch}" ${in_scattering} "${light_volume}" "${temporal_pixels}" "${twins_physics}" "${twins_media_field}" "${phase}"
+  "^Media\\.(OneMinusExpOverX|HillaireIsExact|WronskiConverges|IntegrationSteps)")
+pass_tests(fog_apply
+  "${raymarch}" "${closed_fog}" "(^|/)TemporalFog\\.PassesAfterATemporalPass")
+pass_tests(analytic_fog
+  "(^|/)ClosedFog\\.(AnalyticFog|StressLimits)" "${twins_physics}" "${phase}"
+  "^Airlight\\.")                                # airlight.h
+pass_tests(height_fog
+  "(^|/)ClosedFog\\.(HeightFog|StressLimits)" "${twins_physics}" "${phase}"
+  "^Media\\.HeightFog")
+pass_tests(depth_fog
+  "(^|/)ClosedFog\\.(DepthFog|StressLimits)"
+  "^Media\\.DepthFog")
+pass_tests(light_volume
+  "${light_volume}" "${twins_physics}" "${phase}"
+  "^LightVolumeIntegral\\." "^Airlight\\.")     # light_volume_integral.h, airlight.h
+pass_tests(opacity_shadow_map
+  "${froxel_opacity_shadow}" "${twins_media_field}"
+  "^ShadowFit\\.(MediaVolumeBounds|ShadowedBounds)")  # the light's view holds the media
+pass_tests(shadow_map
+  "${froxel_opacity_shadow}" "${light_volume}"
+  "^ShadowFit\\."                                # shadow_fit.h
+  "^SpirvReflect\\.ShadowVertex"                 # shadow.vert
+  "^Loader\\.ShadowMapLight")                    # its light parameter's checks
+pass_tests(scene
+  "(^|/)FroxelFog\\." "${raymarch}" "${closed_fog}" "${light_volume}" "${temporal_pixels}"
+  "^(Meshes|Gltf|Textures)\\."                   # what the scene pass draws
+  "^SpirvReflect\\.(SceneStages|SceneBlocks|SamplingThroughFunctionParameters|UnshadowedScene)")  # scene.vert/.frag
+pass_tests(composite
+  "(^|/)FroxelFog\\." "${raymarch}" "${closed_fog}"
+  "(^|/)TemporalFog\\.APassReadingAHistoryPair"
+  "(^|/)CompositeShader\\."                      # composite.comp against its CPU twin
+  "^SpirvReflect\\.(CompositeDeclares|CompositeParams|MatchingHostStruct|WorkgroupSize$)"  # composite.comp's interface
+  "^WebGpuCpp\\.CompositePipeline" "^WebGpuDevice\\.(CompositePipeline|MismatchedLayout)")  # composite.comp on Dawn
+pass_tests(clear
+  "(^|/)ExecutorTest\\.APassTypeWithoutAnImplementation"
+  "^WebGpuResources\\.(AnUndeclaredUsage|TheSameCopyDeclared)")
+# copy: only through configs (tests/clear_composite.json, refraction_copy.json) below.
+
+# ---- Tests that load shipped configs: every pass type in them ----------------------------
+each_shipped_config("(^|/)(ConfigRender|CrossBackend)\\.[A-Za-z]+/")   # golden images, cross-backend
+config_tests("^WebGpuResources\\.CreatedObjects" SHIPPED)                  # every shipped config
+config_tests("(^|/)GraphResourcesTest\\.PlanMemory" demo_primitives.json demo_point_lights.json refraction_copy.json)
+config_tests("^ShippedConfigs\\.PointLights" demo_point_lights.json)
+config_tests("^ShippedConfigs\\.UnusedUtilityPasses" refraction_copy.json)
+config_tests("^ShippedConfigs\\.JsonReport" demo_primitives.json)
+config_tests("(^|/)ExecutorTest\\.(ClearedRadiance|DebugSwitches|ToneMaps)" tests/clear_composite.json)
+config_tests("(^|/)ExecutorTest\\.LambertPlane" tests/lambert_plane_lit.json)
+config_tests("(^|/)ExecutorTest\\.PointLightRadiance" demo_point_lights.json)
+config_tests("(^|/)ExecutorTest\\.AlbedoTexture" tests/textured_plane.json)
+config_tests("(^|/)ExecutorTest\\.ShadowMappedPlane" tests/lambert_plane.json)
+config_tests("(^|/)ExecutorTest\\.FullShadow" tests/full_shadow.json)
+config_tests("(^|/)Vignette\\." tests/vignette.json)                              # tests/gpu/vignette_test.cpp
+config_tests("(^|/)PassCache\\." demo_fog.json)                                   # tests/gpu/pass_cache_test.cpp
+config_tests("(^|/)TemporalFog\\.TheFroxelChainOverFrames" tests/oracle_fog_sphere.json)
+config_tests("(^|/)TemporalFog\\.TheFogDemos" demo_fog.json demo_godrays.json demo_raymarch_fog.json)
+# tests/accuracy: each technique's graph after the oracle scenes (which include the froxel chain).
+config_tests("^FogAccuracy\\.EveryTechnique"
+  tests/oracle_global_fog.json tests/oracle_height_fog.json tests/oracle_fog_sphere.json tests/oracle_dense_fog.json
+  tests/oracle_point_fog.json tests/oracle_shadowed_fog.json
+  graphs/raymarch_fog.json graphs/analytic_fog.json graphs/light_volume_fog.json graphs/height_fog.json)
+config_tests("^FogAccuracy\\.FroxelChainConverges" tests/oracle_fog_sphere.json)
+config_tests("^FogAccuracy\\.HillaireErrsLess" tests/oracle_dense_fog.json)
+config_tests("^FogAccuracy\\.ASunFivePercentDimmer" tests/oracle_global_fog.json)
+config_tests("^FogAccuracy\\.NoisyVolume" tests/oracle_noise_volume.json graphs/raymarch_fog.json)
+# tests/reference: the CPU reference against the GPU's golden image of demo_primitives.
+config_tests("^ReferenceVersusGpu\\.DemoPrimitivesMatchesTheGoldenImage" demo_primitives.json)

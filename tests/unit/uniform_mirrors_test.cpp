@@ -1,0 +1,364 @@
+// Every C++ mirror of a GLSL uniform block or struct (offsets() lists its members:
+// passes/plumbing/programs.h) against the SPIR-V of the shaders that declare it, no GPU
+// needed:
+// - the passes' own blocks, whose members are the mirror's (plumbing::check_uniform_mirror,
+//   as the passes check them at setup, on the blocks reflection reports);
+// - the blocks that hold one struct (`uniform Frame { FogFrame f; } frame;`:
+//   plumbing::check_wrapped_uniform_mirror — reflection sees one member, so the size);
+// - the structs inside them (FogFrame, ViewRays, LightList, MediaField, ShadowView, …),
+//   member by member, from the Offset decorations of their SPIR-V type read here;
+// and mirrors with a member moved, which must fail naming it.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <map>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "graph/rhi/spirv_reflect.h"
+#include "passes/fog/fog_frame.h"
+#include "passes/fog/temporal.h"
+#include "passes/plumbing/light_list.h"
+#include "passes/plumbing/programs.h"
+#include "passes/plumbing/scene_geometry.h"
+#include "passes/plumbing/shadow_view.h"
+#include "passes/uniform_mirrors.h"
+#include "physics/media_field.h"
+#include "shaders/shader_library.h"
+
+namespace volgraph {
+namespace {
+
+// Every shader of shaders/CMakeLists.txt.
+const std::vector<std::string_view> kShaders = {
+    "composite.comp", "flat_color.vert", "flat_color.frag", "scene.vert", "scene.frag", "scene_shadowed.frag",
+    "scene_media_shadowed.frag", "shadow.vert", "fullscreen.vert", "froxel_voxelize.comp", "froxel_scatter.comp",
+    "froxel_scatter_shadowed.comp", "froxel_scatter_media_shadowed.comp", "scatter_integrate.comp",
+    "opacity_shadow_map.comp", "froxel_apply_transmittance.frag", "froxel_apply_scattering.frag",
+    "fog_apply_transmittance.frag", "fog_apply_scattering.frag", "fog_apply_transmittance_depth_aware.frag",
+    "fog_apply_scattering_depth_aware.frag", "raymarch_fog.comp", "raymarch_fog_shadowed.comp", "froxel_temporal.comp",
+    "pixel_temporal.comp", "depth_fog.comp", "height_fog.comp", "analytic_fog.comp", "vignette.comp",
+    "light_volume_unproject.frag", "light_volume_cells.frag", "light_volume_ends.frag", "light_volume_faces.vert",
+    "light_volume_surface.vert", "light_volume_faces.frag", "light_volume_resolve.frag"};
+
+std::span<const uint32_t> spirv(std::string_view shader) {
+  const std::span<const uint32_t> words = shader_spirv(shader);
+  if (words.empty()) throw std::logic_error("no shader " + std::string(shader));
+  return words;
+}
+
+uint32_t stage_of(std::string_view shader) {
+  if (shader.ends_with(".comp")) return rhi::shader_stage::compute;
+  if (shader.ends_with(".vert")) return rhi::shader_stage::vertex;
+  return rhi::shader_stage::fragment;
+}
+
+// What the passes check against: the shader's reflected blocks, in a program.
+plumbing::ComputeProgram reflected(std::string_view shader) {
+  const rhi::ShaderStageCode stage{spirv(shader), stage_of(shader)};
+  plumbing::ComputeProgram program;
+  program.uniform_blocks = rhi::reflect_uniform_blocks({&stage, 1}, shader);
+  return program;
+}
+
+// The message a check throws, or "" when it passes.
+template <typename Check>
+std::string error_of(Check check) {
+  try {
+    check();
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// Block's members are the block's (set, binding) in `shader`.
+template <typename Block>
+std::string mirror_error(std::string_view shader, uint32_t set, uint32_t binding, std::string_view name) {
+  return error_of([&] { plumbing::check_uniform_mirror<Block>(reflected(shader), set, binding, name); });
+}
+
+// The block at (set, binding) in `shader` holds one Block.
+template <typename Block>
+std::string wrapped_error(std::string_view shader, uint32_t set, uint32_t binding, std::string_view name) {
+  return error_of([&] { plumbing::check_wrapped_uniform_mirror<Block>(reflected(shader), set, binding, name); });
+}
+
+// The structs a SPIR-V module declares, as a uniform block lays them out: glslang emits a
+// struct used in a block with Offset decorations (and an undecorated copy for the
+// functions that take it by value); only the decorated ones are kept.
+class SpirvStructs {
+ public:
+  explicit SpirvStructs(std::span<const uint32_t> words) {
+    for (size_t i = 5; i < words.size();) {
+      const uint32_t count = words[i] >> 16, op = words[i] & 0xffff;
+      if (count == 0 || i + count > words.size()) throw std::runtime_error("malformed SPIR-V");
+      read(op, words.subspan(i + 1, count - 1));
+      i += count;
+    }
+  }
+
+  // The decorated struct named `name` (GLSL's struct name) as a block: its members' names,
+  // offsets and declared sizes, its size the end of its last member; none when the module
+  // has no such struct in a block.
+  std::optional<rhi::UniformBlockLayout> laid_out(std::string_view name) const {
+    for (const auto& [id, members] : structs_) {
+      if (names_.contains(id) && names_.at(id) == name && offsets_.contains(id)) return layout(id);
+    }
+    return std::nullopt;
+  }
+
+ private:
+  static std::string literal(std::span<const uint32_t> words) {
+    std::string text;
+    for (const uint32_t word : words) {
+      for (int byte = 0; byte < 4; ++byte) {
+        const char c = char((word >> (8 * byte)) & 0xff);
+        if (c == '\0') return text;
+        text += c;
+      }
+    }
+    return text;
+  }
+
+  void read(uint32_t op, std::span<const uint32_t> w) {
+    switch (op) {
+      case 5: names_[w[0]] = literal(w.subspan(1)); break;                                  // OpName
+      case 6: member_names_[w[0]][w[1]] = literal(w.subspan(2)); break;                     // OpMemberName
+      case 71: if (w[1] == 6) array_strides_[w[0]] = w[2]; break;                           // OpDecorate ArrayStride
+      case 72:                                                                              // OpMemberDecorate
+        if (w[2] == 35) offsets_[w[0]][w[1]] = w[3];                                        // Offset
+        if (w[2] == 7) matrix_strides_[w[0]][w[1]] = w[3];                                  // MatrixStride
+        break;
+      case 21: case 22: scalar_bytes_[w[0]] = w[1] / 8; break;                              // OpTypeInt, OpTypeFloat
+      case 23: vectors_[w[0]] = {w[1], w[2]}; break;                                        // OpTypeVector
+      case 24: matrices_[w[0]] = {w[1], w[2]}; break;                                       // OpTypeMatrix
+      case 28: arrays_[w[0]] = {w[1], w[2]}; break;                                         // OpTypeArray
+      case 30: structs_[w[0]] = {w.begin() + 1, w.end()}; break;                            // OpTypeStruct
+      case 43: constants_[w[1]] = w[2]; break;                                              // OpConstant
+      default: break;
+    }
+  }
+
+  // Bytes of a value of type `type`, member `member` of struct `parent` (matrices take
+  // their stride from it).
+  uint64_t size_of(uint32_t type, uint32_t parent, uint32_t member) const {
+    if (scalar_bytes_.contains(type)) return scalar_bytes_.at(type);
+    if (vectors_.contains(type)) return vectors_.at(type).count * size_of(vectors_.at(type).element, parent, member);
+    if (matrices_.contains(type)) return matrices_.at(type).count * matrix_strides_.at(parent).at(member);
+    if (arrays_.contains(type)) return constants_.at(arrays_.at(type).count) * array_strides_.at(type);
+    if (structs_.contains(type)) return layout(type).size;
+    throw std::runtime_error("a member of a type this test does not size");
+  }
+
+  rhi::UniformBlockLayout layout(uint32_t id) const {
+    rhi::UniformBlockLayout block;
+    block.name = names_.at(id);
+    const std::vector<uint32_t>& types = structs_.at(id);
+    for (uint32_t m = 0; m < types.size(); ++m) {
+      const uint64_t offset = offsets_.at(id).at(m), size = size_of(types[m], id, m);
+      const auto names = member_names_.find(id);
+      const bool named = names != member_names_.end() && names->second.contains(m);
+      block.members.push_back({named ? names->second.at(m) : "member " + std::to_string(m), offset, size});
+      block.size = offset + size;
+    }
+    return block;
+  }
+
+  struct Composite {
+    uint32_t element, count;
+  };
+  std::map<uint32_t, std::string> names_;
+  std::map<uint32_t, std::map<uint32_t, std::string>> member_names_;
+  std::map<uint32_t, std::map<uint32_t, uint64_t>> offsets_, matrix_strides_;
+  std::map<uint32_t, uint64_t> array_strides_, scalar_bytes_, constants_;
+  std::map<uint32_t, Composite> vectors_, matrices_, arrays_;
+  std::map<uint32_t, std::vector<uint32_t>> structs_;
+};
+
+// Mirror's members against the GLSL struct `glsl` in every shader that declares it in a
+// block (at least one must): the messages of those that differ, and how many matched.
+template <typename Mirror>
+std::vector<std::string> nested_errors(std::string_view glsl, std::string_view name, int& matched) {
+  std::vector<std::string> errors;
+  matched = 0;
+  for (const std::string_view shader : kShaders) {
+    const std::optional<rhi::UniformBlockLayout> layout = SpirvStructs(spirv(shader)).laid_out(glsl);
+    if (!layout) continue;
+    static constexpr auto offsets = Mirror::offsets();
+    const std::string error = error_of([&] { rhi::check_uniform_block(*layout, sizeof(Mirror), offsets, name); });
+    if (error.empty()) {
+      ++matched;
+    } else {
+      errors.push_back(std::string(shader) + ": " + error);
+    }
+  }
+  return errors;
+}
+
+#define EXPECT_NESTED_MATCH(Mirror, glsl)                                     \
+  do {                                                                        \
+    int matched = 0;                                                          \
+    EXPECT_EQ(nested_errors<Mirror>(glsl, #Mirror, matched), std::vector<std::string>{}); \
+    EXPECT_GT(matched, 0) << "no shader declares " << glsl << " in a block";  \
+  } while (false)
+
+// ---- The passes' own blocks: the block's members are the mirror's ----------------------
+
+TEST(UniformMirrors, PassBlocksMatchTheirShaders) {
+  EXPECT_EQ(mirror_error<GpuCompositeParams>("composite.comp", 0, 3, "GpuCompositeParams"), "");
+  for (const char* shader : {"scene.vert", "scene.frag", "scene_shadowed.frag", "scene_media_shadowed.frag"}) {
+    EXPECT_EQ(mirror_error<GpuSceneFrame>(shader, 0, 0, "GpuSceneFrame"), "") << shader;
+  }
+  for (const char* shader : {"scene.vert", "scene.frag", "scene_shadowed.frag", "scene_media_shadowed.frag", "shadow.vert"}) {
+    EXPECT_EQ(mirror_error<plumbing::GpuObjectBlock>(shader, 1, 0, "GpuObjectBlock"), "") << shader;
+  }
+  EXPECT_EQ(mirror_error<GpuDepthFogParams>("depth_fog.comp", 0, 5, "GpuDepthFogParams"), "");
+  EXPECT_EQ(mirror_error<GpuIntegrateParams>("scatter_integrate.comp", 0, 7, "GpuIntegrateParams"), "");
+  EXPECT_EQ(mirror_error<GpuOpacityParams>("opacity_shadow_map.comp", 0, 3, "GpuOpacityParams"), "");
+  for (const char* shader : {"fog_apply_transmittance.frag", "fog_apply_scattering.frag", "fog_apply_transmittance_depth_aware.frag",
+                             "fog_apply_scattering_depth_aware.frag"}) {
+    EXPECT_EQ(mirror_error<GpuFogApplyFrame>(shader, 0, 3, "GpuFogApplyFrame"), "") << shader;
+  }
+  for (const char* shader : {"froxel_scatter.comp", "froxel_scatter_shadowed.comp", "froxel_scatter_media_shadowed.comp"}) {
+    EXPECT_EQ(mirror_error<GpuFroxelScatterParams>(shader, 0, 5, "GpuFroxelScatterParams"), "") << shader;
+  }
+  for (const char* shader : {"raymarch_fog.comp", "raymarch_fog_shadowed.comp"}) {
+    EXPECT_EQ(mirror_error<GpuRaymarchParams>(shader, 0, 5, "GpuRaymarchParams"), "") << shader;
+  }
+  EXPECT_EQ(mirror_error<fog::GpuTemporalParams>("froxel_temporal.comp", 0, 6, "GpuTemporalParams"), "");
+  EXPECT_EQ(mirror_error<fog::GpuTemporalParams>("pixel_temporal.comp", 0, 10, "GpuTemporalParams"), "");
+}
+
+// ---- Blocks holding one shared struct ---------------------------------------------------
+
+TEST(UniformMirrors, FogFrameBlocksMatch) {
+  struct At {
+    const char* shader;
+    uint32_t binding;
+  };
+  for (const At at : std::initializer_list<At>{
+           {"froxel_voxelize.comp", 0}, {"froxel_scatter.comp", 0}, {"froxel_scatter_shadowed.comp", 0},
+           {"froxel_scatter_media_shadowed.comp", 0}, {"scatter_integrate.comp", 0}, {"froxel_temporal.comp", 0},
+           {"pixel_temporal.comp", 0}, {"opacity_shadow_map.comp", 0}, {"depth_fog.comp", 0}, {"height_fog.comp", 0},
+           {"analytic_fog.comp", 0}, {"raymarch_fog.comp", 0}, {"raymarch_fog_shadowed.comp", 0},
+           {"froxel_apply_transmittance.frag", 0}, {"froxel_apply_scattering.frag", 0}, {"light_volume_ends.frag", 0},
+           {"light_volume_faces.frag", 4}, {"light_volume_resolve.frag", 3}}) {
+    EXPECT_EQ(wrapped_error<fog::GpuFogFrame>(at.shader, 0, at.binding, "GpuFogFrame"), "") << at.shader;
+  }
+}
+
+TEST(UniformMirrors, ShadowViewBlocksMatch) {
+  struct At {
+    const char* shader;
+    uint32_t set, binding;
+  };
+  for (const At at : std::initializer_list<At>{
+           {"shadow.vert", 0, 0}, {"scene_shadowed.frag", 2, 2}, {"scene_media_shadowed.frag", 2, 2},
+           {"froxel_scatter_shadowed.comp", 1, 2}, {"froxel_scatter_media_shadowed.comp", 1, 2},
+           {"raymarch_fog_shadowed.comp", 1, 2}, {"opacity_shadow_map.comp", 0, 1}, {"light_volume_unproject.frag", 0, 0},
+           {"light_volume_cells.frag", 0, 2}, {"light_volume_ends.frag", 0, 3}}) {
+    EXPECT_EQ(wrapped_error<plumbing::ShadowViewBlock>(at.shader, at.set, at.binding, "ShadowViewBlock"), "") << at.shader;
+  }
+}
+
+TEST(UniformMirrors, LightVolumeParamsBlocksMatch) {
+  struct At {
+    const char* shader;
+    uint32_t binding;
+  };
+  for (const At at : std::initializer_list<At>{{"light_volume_cells.frag", 3}, {"light_volume_ends.frag", 4},
+                                               {"light_volume_faces.vert", 0}, {"light_volume_surface.vert", 0},
+                                               {"light_volume_faces.frag", 0}}) {
+    EXPECT_EQ(wrapped_error<GpuLightVolumeParams>(at.shader, 0, at.binding, "GpuLightVolumeParams"), "") << at.shader;
+  }
+}
+
+// ---- The structs inside blocks, member by member ----------------------------------------
+
+TEST(UniformMirrors, NestedStructsMatchTheirGlsl) {
+  EXPECT_NESTED_MATCH(fog::GpuFogFrame, "FogFrame");
+  EXPECT_NESTED_MATCH(fog::GpuViewRays, "ViewRays");
+  EXPECT_NESTED_MATCH(fog::GpuFroxelGrid, "FroxelGrid");
+  EXPECT_NESTED_MATCH(plumbing::GpuLightList, "LightList");
+  EXPECT_NESTED_MATCH(plumbing::GpuLight, "Light");
+  EXPECT_NESTED_MATCH(physics::GpuMediaField, "MediaField");
+  EXPECT_NESTED_MATCH(physics::GpuMediumVolume, "MediumVolume");
+  EXPECT_NESTED_MATCH(physics::GpuMediumCoefficients, "MediumCoefficients");
+  EXPECT_NESTED_MATCH(plumbing::ShadowViewBlock, "ShadowView");
+  EXPECT_NESTED_MATCH(GpuLightVolumeParams, "LightVolumeParams");
+}
+
+// The reader agrees with reflection where both see a struct: FogFrame is Frame's only
+// member, LightList one of the scene frame's.
+TEST(UniformMirrors, NestedLayoutsAgreeWithReflection) {
+  const rhi::UniformBlockLayout frame = plumbing::uniform_block_at(reflected("froxel_voxelize.comp").uniform_blocks, 0, 0);
+  EXPECT_EQ(SpirvStructs(spirv("froxel_voxelize.comp")).laid_out("FogFrame")->size, frame.members.at(0).size);
+  const rhi::UniformBlockLayout scene = plumbing::uniform_block_at(reflected("scene.frag").uniform_blocks, 0, 0);
+  EXPECT_EQ(SpirvStructs(spirv("scene.frag")).laid_out("LightList")->size, scene.members.at(2).size);
+  EXPECT_FALSE(SpirvStructs(spirv("composite.comp")).laid_out("FogFrame"));
+}
+
+// ---- Deliberate mismatches --------------------------------------------------------------
+
+// GpuSceneFrame with its ambient irradiance moved after the lights.
+struct MovedAmbientSceneFrame {
+  float view_projection[16];
+  plumbing::GpuLightList light_list;
+  float ambient_irradiance[4];
+  static constexpr std::array<uint64_t, 3> offsets() {
+    return {offsetof(MovedAmbientSceneFrame, view_projection), offsetof(MovedAmbientSceneFrame, ambient_irradiance),
+            offsetof(MovedAmbientSceneFrame, light_list)};
+  }
+};
+static_assert(sizeof(MovedAmbientSceneFrame) == sizeof(GpuSceneFrame));
+
+// GpuMediumVolume with its fade and noise swapped.
+struct SwappedMediumVolume {
+  float world_to_local[16];
+  float size_shape[4];
+  float noise[4];
+  float fade[4];
+  physics::GpuMediumCoefficients medium;
+  static constexpr std::array<uint64_t, 5> offsets() {
+    return {offsetof(SwappedMediumVolume, world_to_local), offsetof(SwappedMediumVolume, size_shape),
+            offsetof(SwappedMediumVolume, fade), offsetof(SwappedMediumVolume, noise), offsetof(SwappedMediumVolume, medium)};
+  }
+};
+
+TEST(UniformMirrors, MovedMemberFailsNamingIt) {
+  EXPECT_EQ(mirror_error<MovedAmbientSceneFrame>("scene.frag", 0, 0, "MovedAmbientSceneFrame"),
+            "host struct MovedAmbientSceneFrame does not match uniform block Frame (set 0, binding 0): member 1 "
+            "(ambient_irradiance, 16 bytes) is at offset 64 in the block, 848 in the host struct");
+  int matched = 0;
+  const std::vector<std::string> errors = nested_errors<SwappedMediumVolume>("MediumVolume", "SwappedMediumVolume", matched);
+  EXPECT_EQ(matched, 0);
+  ASSERT_FALSE(errors.empty());
+  EXPECT_EQ(errors[0], "froxel_voxelize.comp: host struct SwappedMediumVolume does not match uniform block MediumVolume "
+                       "(set 0, binding 0): member 2 (fade, 16 bytes) is at offset 80 in the block, 96 in the host struct");
+}
+
+// A wrapped block is checked by size: a frame block one vec4 short fails.
+TEST(UniformMirrors, WrappedBlockOfAnotherSizeFails) {
+  struct ShortFrame {
+    fog::GpuViewRays view;
+    fog::GpuFroxelGrid grid;
+    float jitter[4];
+    plumbing::GpuLightList light_list;
+    physics::GpuMediaField media;
+  };
+  EXPECT_EQ(wrapped_error<ShortFrame>("froxel_voxelize.comp", 0, 0, "ShortFrame"),
+            "host struct ShortFrame does not match uniform block Frame (set 0, binding 0): the block is " +
+                std::to_string(sizeof(fog::GpuFogFrame)) + " bytes, the host struct " + std::to_string(sizeof(ShortFrame)) +
+                " (the sizes must be equal)");
+}
+
+}  // namespace
+}  // namespace volgraph

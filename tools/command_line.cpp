@@ -1,0 +1,245 @@
+// The volgraph command line with CLI11 (see command_line.h). CLI11 never prints here:
+// every error it throws, and every value an option rejects, becomes one volgraph message
+// and exit 2; `--help` prints kUsage.
+#include "tools/command_line.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+namespace volgraph {
+
+const char* const kUsage = R"(usage: volgraph COMMAND [options]
+
+commands:
+  validate CONFIG              check a config without a GPU (exit 0 valid, 2 invalid)
+  plan CONFIG [--json|--dot]   the compiled plan: order, culling, lifetimes, memory, barriers
+  render CONFIG -o OUT         render to .png (sRGB 8-bit), .exr or .pfm (linear float)
+  reference CONFIG -o OUT      the CPU ground truth of the config's scene (double precision, exact
+                               visibility; pass parameters such as ambient or tone maps are not part
+                               of the scene and are ignored): .exr or .pfm linear float, or .png
+                               with linear values clamped to [0, 1] and sRGB-encoded (no tone map)
+  passes                       the pass types with their variants, parameters and slots
+  devices                      the Vulkan devices (index for --device N; lavapipe is the default)
+  test                         run the whole test suite (handled by tools/volgraph)
+
+options (plan, validate, render):
+  --size WxH                   frame size (overrides output.size)
+  --set PASS.PARAM=VALUE       set a pass parameter (VALUE in JSON: 2, 0.5, true, [1,2,3], word)
+  --variant PASS=VARIANT       swap a pass's variant
+  --no-cull                    keep every pass (debug)
+  --no-alias                   give every transient resource its own memory (debug)
+  --serialize                  a full barrier between every two passes (debug)
+
+options (reference):
+  --size WxH                   frame size (overrides output.size)
+  --threads N                  worker threads (default: the hardware's); the image does not depend on it
+  --spp N                      samples per pixel on a regular sub-pixel grid, N a square (1, 4, 9, …);
+                               default 1: pixel centres, as the GPU samples
+  --tolerance X                relative error allowed in each stretch of the media integral (default 1e-5)
+
+options (render):
+  --backend vulkan|webgpu      default vulkan; webgpu: Dawn (its Vulkan backend on lavapipe here)
+  --device N                   a Vulkan device by index (volgraph devices); default lavapipe (vulkan only)
+  --frames N                   render N frames, write the last
+  --timings                    per-pass GPU and CPU times of the last frame, JSON on stdout
+                               (CPU only, said so, where the device has no time stamps)
+  --timings-out FILE           the same JSON to FILE
+  --validation                 run under the Khronos validation layer (synchronization too);
+                               WebGPU validates always: any Dawn error fails the render (exit 1)
+  --dump PASS.SLOT=FILE        also write that resource: textures as images (3D: slices stacked, slice 0 on top), buffers raw (.bin)
+)";
+
+int bad_usage(const std::string& message) {
+  std::cerr << "volgraph: " << message << "\n(run 'volgraph --help' for usage)\n";
+  return kBadInput;
+}
+
+namespace {
+
+// A value option: every occurrence, in order, goes to `take`, which checks it (throwing
+// UsageError) and keeps it; where one value is kept, the last one wins.
+void value_option(CLI::App& app, const std::string& name, std::function<void(const std::string&)> take) {
+  app.add_option(name)->each(std::move(take))->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+void flag(CLI::App& app, const std::string& name, std::function<void()> set) {
+  app.add_flag_callback(name, std::move(set));
+}
+
+std::string quoted(const std::string& text) { return "\"" + text + "\""; }
+
+Extent size_value(const std::string& text) {
+  unsigned w = 0, h = 0;
+  char x = 0, extra = 0;
+  const bool parsed = std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &extra) == 3 && (x == 'x' || x == 'X');
+  if (!parsed || w < 1 || h < 1 || w > 16384 || h > 16384) {
+    throw UsageError("--size expects WxH with each side in [1, 16384], got " + quoted(text));
+  }
+  return Extent{w, h, 1};
+}
+
+// --frames, --device: a whole number in [low, 100000].
+int whole_number(const std::string& flag_name, const std::string& text, long low) {
+  char* end = nullptr;
+  const long n = std::strtol(text.c_str(), &end, 10);
+  if (*end || n < low || n > 100000) {
+    throw UsageError(flag_name + " expects a whole number ≥ " + std::to_string(low) + ", got " + quoted(text));
+  }
+  return int(n);
+}
+
+// --threads, --spp: a whole number in [1, 4096].
+long count_value(const std::string& flag_name, const std::string& text) {
+  char* end = nullptr;
+  const long n = std::strtol(text.c_str(), &end, 10);
+  if (*end || text.empty() || n < 1 || n > 4096) {
+    throw UsageError(flag_name + " expects a whole number in [1, 4096], got " + quoted(text));
+  }
+  return n;
+}
+
+// --spp N, N a square: its root, the samples along each axis of a pixel.
+int samples_per_axis(const std::string& text) {
+  const long n = count_value("--spp", text);
+  const long root = std::lround(std::sqrt(double(n)));
+  if (root * root != n) throw UsageError("--spp expects a square number (1, 4, 9, 16, …), got " + quoted(text));
+  return int(root);
+}
+
+double tolerance_value(const std::string& text) {
+  char* end = nullptr;
+  const double tolerance = std::strtod(text.c_str(), &end);
+  if (*end || text.empty() || !(tolerance >= 1e-12 && tolerance <= 0.1)) {
+    throw UsageError("--tolerance expects a number in [1e-12, 0.1], got " + quoted(text));
+  }
+  return tolerance;
+}
+
+std::string backend_value(const std::string& text) {
+  if (text != "vulkan" && text != "webgpu") throw UsageError("--backend expects vulkan or webgpu, got " + quoted(text));
+  return text;
+}
+
+}  // namespace
+
+void config_argument(CLI::App& app, Args& args) { app.add_option("config", args.config); }
+
+void graph_options(CLI::App& app, Args& args) {
+  value_option(app, "--size", [&](const std::string& v) { args.overrides.size = size_value(v); });
+  value_option(app, "--set", [&](const std::string& v) { args.overrides.sets.push_back(v); });
+  value_option(app, "--variant", [&](const std::string& v) { args.overrides.variants.push_back(v); });
+  flag(app, "--no-cull", [&] { args.compile.cull = false; });
+  flag(app, "--no-alias", [&] { args.compile.alias = false; });
+  flag(app, "--serialize", [&] { args.compile.serialize = true; });
+}
+
+void plan_options(CLI::App& app, Args& args) {
+  flag(app, "--json", [&] { args.json = true; });
+  flag(app, "--dot", [&] { args.dot = true; });
+}
+
+void output_option(CLI::App& app, Args& args) {
+  value_option(app, "-o,--output", [&](const std::string& v) { args.output = v; });
+}
+
+void render_options(CLI::App& app, Args& args) {
+  value_option(app, "--backend", [&](const std::string& v) { args.backend = backend_value(v); });
+  value_option(app, "--device", [&](const std::string& v) { args.device = whole_number("--device", v, 0); });
+  value_option(app, "--frames", [&](const std::string& v) { args.frames = whole_number("--frames", v, 1); });
+  flag(app, "--timings", [&] { args.timings = true; });
+  value_option(app, "--timings-out", [&](const std::string& v) { args.timings_out = v; });
+  flag(app, "--validation", [&] { args.validation = true; });
+  value_option(app, "--dump", [&](const std::string& v) { args.dumps.push_back(v); });
+}
+
+void reference_options(CLI::App& app, Args& args) {
+  value_option(app, "--threads", [&](const std::string& v) { args.threads = int(count_value("--threads", v)); });
+  value_option(app, "--spp", [&](const std::string& v) { args.samples_per_axis = samples_per_axis(v); });
+  value_option(app, "--tolerance", [&](const std::string& v) { args.tolerance = tolerance_value(v); });
+}
+
+void every_option(CLI::App& app, Args& args) {
+  config_argument(app, args);
+  graph_options(app, args);
+  plan_options(app, args);
+  output_option(app, args);
+  render_options(app, args);
+  reference_options(app, args);
+}
+
+namespace {
+
+bool is_help(const std::string& word) { return word == "--help" || word == "-h" || word == "help"; }
+
+const Command* find_command(std::span<const Command> commands, const std::string& name) {
+  for (const Command& c : commands) {
+    if (name == c.name) return &c;
+  }
+  return nullptr;
+}
+
+// The words CLI11 matched to nothing: an unknown option is an error; a stray word is
+// CONFIG while none was given (a CONFIG starting with '-' included), else unexpected.
+void take_leftovers(const std::vector<std::string>& words, Args& args) {
+  for (const std::string& word : words) {
+    if (word.rfind("--", 0) == 0) throw UsageError("unknown option " + word);
+    if (!args.config.empty()) throw UsageError("unexpected argument " + quoted(word));
+    args.config = word;
+  }
+}
+
+// CLI11's errors in volgraph's terms. A value goes missing only at the end of the line,
+// so the option that lacks it is the last word.
+int parse_error(const CLI::ParseError& error, const std::vector<std::string>& words) {
+  if (dynamic_cast<const CLI::CallForHelp*>(&error)) {
+    std::cout << kUsage;
+    return kOk;
+  }
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&error)) {
+    return bad_usage(words.back().substr(0, words.back().find('=')) + " needs a value");
+  }
+  return bad_usage(error.what());
+}
+
+// One subcommand per command; none prints anything of CLI11's own.
+void declare_commands(CLI::App& app, std::span<const Command> commands, Args& args) {
+  app.set_help_flag();
+  app.allow_extras();
+  app.require_subcommand(1);  // at most one: a CONFIG named like a command stays a CONFIG
+  for (const Command& command : commands) {
+    CLI::App* sub = app.add_subcommand(command.name);
+    sub->set_help_flag("-h,--help");
+    sub->allow_extras();
+    command.declare(*sub, args);
+  }
+}
+
+}  // namespace
+
+std::optional<int> parse_command_line(int argc, char** argv, std::span<const Command> commands, Args& args) {
+  const std::vector<std::string> words(argv + 1, argv + argc);
+  if (words.empty() || is_help(words[0])) {
+    std::cout << kUsage;
+    return words.empty() ? kBadInput : kOk;
+  }
+  if (!find_command(commands, words[0])) return bad_usage("unknown command " + quoted(words[0]));
+  CLI::App app{"volgraph", "volgraph"};
+  declare_commands(app, commands, args);
+  try {
+    app.parse(argc, argv);
+    args.command = words[0];
+    take_leftovers(app.remaining(true), args);
+  } catch (const CLI::ParseError& e) {
+    return parse_error(e, words);
+  } catch (const UsageError& e) {
+    return bad_usage(e.what());
+  }
+  return std::nullopt;
+}
+
+}  // namespace volgraph
