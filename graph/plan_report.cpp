@@ -92,7 +92,8 @@ std::string plan_text(const Graph& g, const Plan& plan, const PlanReportContext&
   for (size_t i = 0; i < plan.order.size(); ++i) {
     const PlannedPass& pp = plan.order[i];
     const GraphPass& p = g.passes[pp.pass];
-    o << "  " << i << ". " << p.name << "  (" << p.decl->name << "/" << variant_of(p) << ", " << pass_kind_name(p.kind) << ")\n";
+    o << "  " << i << ". " << p.name << "  (" << p.decl->name << "/" << variant_of(p) << ", " << pass_kind_name(p.kind)
+      << (p.decl->cached ? ", cached: skipped while its key holds" : "") << ")\n";
     for (uint32_t b = pp.barrier_begin; b < pp.barrier_begin + pp.barrier_count; ++b) {
       o << "       barrier " << barrier_text(g, plan.barriers[b]) << "\n";
     }
@@ -149,7 +150,7 @@ std::string plan_json(const Graph& g, const Plan& plan, const PlanReportContext&
       barriers.push_back(barrier_json(g, plan.barriers[b]));
     }
     order.push_back({{"pass", p.name}, {"type", p.decl->name}, {"variant", variant_of(p)},
-                     {"kind", pass_kind_name(p.kind)}, {"barriers", barriers}});
+                     {"kind", pass_kind_name(p.kind)}, {"cached", p.decl->cached}, {"barriers", barriers}});
   }
   j["order"] = order;
   Json initial = Json::array();

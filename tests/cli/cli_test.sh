@@ -158,12 +158,20 @@ got: $(cat "$tmp/err")"
       [ "$code" -eq 0 ] || fail "render --frames 5 on $backend: exit $code; $(cat "$tmp/err")"
       [ "$(head -c 2 "$tmp/out.pfm")" = "PF" ] && [ "$(head -c 2 "$tmp/history.pfm")" = "PF" ] || fail "no PFM from $backend"
       grep -q '"frames": 5' "$tmp/out" || fail "--timings on $backend: $(cat "$tmp/out")"
+      # a cached pass (demo_fog's opacity_shadow_map) is skipped on the last frame; others run
+      if grep -q '"type": "opacity_shadow_map"' "$tmp/out"; then
+        grep '"type": "opacity_shadow_map"' "$tmp/out" | grep -q '"cached": true' || fail "opacity_shadow_map not cached on $backend: $(cat "$tmp/out")"
+        grep '"type": "scene"' "$tmp/out" | grep -q '"cached": false' || fail "scene said cached on $backend"
+      fi
       rm -f "$tmp"/*.pfm
     done
     "$volgraph" plan "$config" >"$tmp/plan" || fail "plan"
     pass=${history%%.*}
     grep -q "persistent, own memory, history pair with $pass" "$tmp/plan" || fail "plan lists no history pair: $(cat "$tmp/plan")"
     grep -q "(history [1-9]" "$tmp/plan" || fail "plan gives no history bytes"
+    if grep -q "(opacity_shadow_map/" "$tmp/plan"; then
+      grep "(opacity_shadow_map/" "$tmp/plan" | grep -q "cached: skipped while its key holds" || fail "plan does not say the opacity map is cached"
+    fi
     sed -n "/^before the first frame:/,/^$/p" "$tmp/plan" | grep -q "barrier $pass" || fail "plan lists no initial barrier"
     "$volgraph" plan "$config" --json >"$tmp/plan.json" || fail "plan --json"
     grep -q '"role": "previous"' "$tmp/plan.json" && grep -q '"history_bytes": [1-9]' "$tmp/plan.json" &&
