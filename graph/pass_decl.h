@@ -122,7 +122,7 @@ struct PassDecl {
   // no history): the pass's key then stays equal between frames.
   bool frame_invariant = false;
   // Empty: the pass is one graph pass. Else the steps it runs as, in order; they share
-  // one execution (PassContext::step() says which is recording).
+  // one execution (PassSetup::step_is() says which is recording).
   std::vector<StepDecl> steps;
 
   int variant_index(std::string_view variant) const;  // -1 when unknown

@@ -118,12 +118,24 @@ std::vector<uint32_t> height_field_indices(uint32_t n) {
   return i;
 }
 
+// The technique needs a homogeneous medium: the global fog and nothing else (one message).
+std::vector<ParamProblem> check_homogeneous_fog(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
+  std::vector<std::string> others;
+  if (scene.media.height_fog) others.push_back("media.height_fog");
+  if (!scene.media.volumes.empty()) others.push_back(std::to_string(scene.media.volumes.size()) + " media.volumes");
+  if (others.empty() && scene.media.fog) return {};
+  const std::string has = others.empty() ? "no media.fog" : others.size() == 1 ? others[0] : others[0] + " and " + others[1];
+  return {{"", "light_volume integrates along each ray in closed form and needs homogeneous media, the global media.fog only; "
+               "the scene has " + has + " (use raymarch_fog or the froxel chain)"}};
+}
+
 struct LightVolumeTable : PassTable {
   LightVolumeTable()
       : PassTable("light_volume", PassKind::graphics,
                   "Volumetric shadows of the shadow map's light in homogeneous fog by polygonal light volumes (Billeter et al. 2010): "
                   "the shadow volume's faces add the analytic in-scattering integral, exact with respect to the shadow map.") {
     decl.needs = feature_bit(SceneFeature::medium);
+    decl.check_scene = check_homogeneous_fog;
   }
   VariantHandle height_field = variant("height_field",
       "Billeter et al.'s mesh: one vertex per cell, the surface interpolated between cells (fast; approximate at depth edges)");
@@ -311,28 +323,8 @@ class LightVolumeExecution final : public PassExecution {
   plumbing::RenderProgram unproject_, cells_program_, ends_program_, faces_, resolve_;
 };
 
-// The technique needs a homogeneous medium: the global fog and nothing else (one message).
-std::vector<ParamProblem> check_homogeneous_fog(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
-  std::vector<std::string> others;
-  if (scene.media.height_fog) others.push_back("media.height_fog");
-  if (!scene.media.volumes.empty()) others.push_back(std::to_string(scene.media.volumes.size()) + " media.volumes");
-  if (others.empty() && scene.media.fog) return {};
-  const std::string has = others.empty() ? "no media.fog" : others.size() == 1 ? others[0] : others[0] + " and " + others[1];
-  return {{"", "light_volume integrates along each ray in closed form and needs homogeneous media, the global media.fog only; "
-               "the scene has " + has + " (use raymarch_fog or the froxel chain)"}};
-}
-
 }  // namespace
 
-PassDecl light_volume_pass() {
-  PassDecl d = pass_type<LightVolumeTable, LightVolumeExecution>();
-  d.check_scene = check_homogeneous_fog;
-  for (StepDecl& step : d.steps) {  // the steps' decls were copied before: give them the check too
-    PassDecl with_check = *step.decl;
-    with_check.check_scene = check_homogeneous_fog;
-    step.decl = std::make_shared<const PassDecl>(std::move(with_check));
-  }
-  return d;
-}
+PassDecl light_volume_pass() { return pass_type<LightVolumeTable, LightVolumeExecution>(); }
 
 }  // namespace volgraph
