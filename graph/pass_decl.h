@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "graph/access.h"
-#include "graph/config/diagnostics.h"
+#include "graph/diagnostics.h"
 #include "graph/resource.h"
 #include "graph/scene_features.h"
 

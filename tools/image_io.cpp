@@ -16,7 +16,7 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
-#include "graph/config/diagnostics.h"
+#include "graph/diagnostics.h"
 #include "physics/srgb.h"
 
 namespace volgraph {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "graph/config/diagnostics.h"
+#include "graph/diagnostics.h"
 #include "graph/graph.h"
 #include "graph/plan.h"
 #include "graph/registry.h"

@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "graph/config/diagnostics.h"
+#include "graph/diagnostics.h"
 #include "graph/config/json_lines.h"
 
 namespace volgraph::config {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "graph/config/diagnostics.h"
+#include "graph/diagnostics.h"
 #include "graph/scene_features.h"
 
 namespace volgraph {

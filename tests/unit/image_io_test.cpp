@@ -10,7 +10,7 @@
 
 #include <stb/stb_image.h>
 
-#include "graph/config/diagnostics.h"
+#include "graph/diagnostics.h"
 #include "physics/srgb.h"
 #include "tools/image_io.h"
 

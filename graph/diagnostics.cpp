@@ -1,4 +1,4 @@
-#include "graph/config/diagnostics.h"
+#include "graph/diagnostics.h"
 
 #include <algorithm>
 #include <numeric>
