@@ -125,7 +125,7 @@ class SceneExecution final : public PassExecution {
     const Scene& scene = *c.scene;
     const Extent size = c.extent(t_.color);
     GpuSceneFrame f{};
-    to_floats(physics::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
+    physics::to_floats(physics::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
     const std::array<double, 3>& ambient = c.param(t_.ambient);
     for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i]);
     f.light_list = plumbing::pack_lights(scene.lights);

@@ -110,8 +110,8 @@ class ShadowMapExecution final : public PassExecution {
     block.mode[0] = c.variant().shader_code;
     if (casts) {
       const physics::Mat4 view_projection = light_view_projection(c, c.scene->lights[size_t(index)], *bounds);
-      to_floats(view_projection, block.light_view_projection);
-      to_floats(physics::inverse(view_projection), block.clip_to_world);
+      physics::to_floats(view_projection, block.light_view_projection);
+      physics::to_floats(physics::inverse(view_projection), block.clip_to_world);
     }
     const auto bytes = std::as_bytes(std::span(&block, 1));
     c.device.write_buffer(view_, 0, bytes);                    // for this pass's vertex shader

@@ -3,35 +3,28 @@
 // looks through NDC x = (i + 0.5)/W·2 − 1, y = 1 − (j + 0.5)/H·2; depth 0 at the near
 // plane and 1 at the far one (WebGPU's clip space). The GPU passes upload these
 // matrices; the CPU reference generates the same rays.
+//
+// Matrices are GLM's, as GLSL's: column-major, m[col][row], and GLM's right-handed,
+// depth-[0, 1] ("RH_ZO") projections are exactly this project's clip space (NDC +y up).
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <utility>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "graph/scene/scene.h"
 
 namespace volgraph::physics {
 
-struct Mat4 {
-  std::array<double, 16> m{};  // column-major, m[col * 4 + row], as GLSL
-  double& operator()(int row, int col) { return m[size_t(col * 4 + row)]; }
-  double operator()(int row, int col) const { return m[size_t(col * 4 + row)]; }
-  static Mat4 identity() {
-    Mat4 r;
-    for (int i = 0; i < 4; ++i) r(i, i) = 1;
-    return r;
-  }
-};
+using Mat4 = glm::dmat4;
 
-inline Mat4 operator*(const Mat4& a, const Mat4& b) {
-  Mat4 r;
-  for (int row = 0; row < 4; ++row)
-    for (int col = 0; col < 4; ++col)
-      for (int k = 0; k < 4; ++k) r(row, col) += a(row, k) * b(k, col);
-  return r;
-}
+// The scene's Vec3 (std::array) as GLM's vector and back.
+inline glm::dvec3 vec(const Vec3& v) { return {v[0], v[1], v[2]}; }
+inline Vec3 to_vec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
 inline Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 inline Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
@@ -45,94 +38,56 @@ inline Vec3 normalize(const Vec3& v) {
   return {v[0] / l, v[1] / l, v[2] / l};
 }
 
-// Column-major floats for a uniform block's mat4.
+// Column-major floats for a uniform block's mat4 (GLSL's layout, and GLM's).
 inline void to_floats(const Mat4& m, float* out) {
-  for (size_t i = 0; i < 16; ++i) out[i] = float(m.m[i]);
+  const double* column_major = glm::value_ptr(m);
+  for (size_t i = 0; i < 16; ++i) out[i] = float(column_major[i]);
 }
 
-// (x, y, z, w) → the transformed point divided by w.
+// (x, y, z, 1) → the transformed point divided by w.
 inline Vec3 transform_point(const Mat4& t, const Vec3& p) {
-  double out[4];
-  for (int row = 0; row < 4; ++row) out[row] = t(row, 0) * p[0] + t(row, 1) * p[1] + t(row, 2) * p[2] + t(row, 3);
-  return {out[0] / out[3], out[1] / out[3], out[2] / out[3]};
+  const glm::dvec4 h = t[0] * p[0] + t[1] * p[1] + t[2] * p[2] + t[3];
+  return to_vec3(glm::dvec3(h) / h.w);
 }
 
 // World to view: the camera at the origin looking down −Z, +Y up.
 inline Mat4 look_at(const Vec3& eye, const Vec3& target, const Vec3& up) {
-  const Vec3 f = normalize(sub(target, eye));
-  const Vec3 s = normalize(cross(f, up));
-  const Vec3 u = cross(s, f);
-  Mat4 r = Mat4::identity();
-  for (int c = 0; c < 3; ++c) {
-    r(0, c) = s[size_t(c)];
-    r(1, c) = u[size_t(c)];
-    r(2, c) = -f[size_t(c)];
-  }
-  r(0, 3) = -dot(s, eye);
-  r(1, 3) = -dot(u, eye);
-  r(2, 3) = dot(f, eye);
-  return r;
+  return glm::lookAtRH(vec(eye), vec(target), vec(up));
 }
 
 // View to clip, right-handed, depth in [0, 1]: z = −near → 0, z = −far → 1.
 inline Mat4 perspective(double fov_y_deg, double aspect, double near, double far) {
-  const double t = 1.0 / std::tan(fov_y_deg * M_PI / 360.0);
-  Mat4 r;
-  r(0, 0) = t / aspect;
-  r(1, 1) = t;
-  r(2, 2) = far / (near - far);
-  r(2, 3) = near * far / (near - far);
-  r(3, 2) = -1;
-  return r;
+  return glm::perspectiveRH_ZO(glm::radians(fov_y_deg), aspect, near, far);
 }
 
 // View to clip for a box [l, r] × [b, t] × [−near, −far], depth in [0, 1].
 inline Mat4 orthographic(double l, double r, double b, double t, double near, double far) {
-  Mat4 o = Mat4::identity();
-  o(0, 0) = 2 / (r - l);
-  o(1, 1) = 2 / (t - b);
-  o(2, 2) = 1 / (near - far);
-  o(0, 3) = -(r + l) / (r - l);
-  o(1, 3) = -(t + b) / (t - b);
-  o(2, 3) = near / (near - far);
-  return o;
+  return glm::orthoRH_ZO(l, r, b, t, near, far);
+}
+
+// Rotations by an angle in degrees about the X, Y and Z axes (counter-clockwise looking
+// down the axis towards the origin), written out as GLSL would: columns.
+inline Mat4 rotation_x(double deg) {
+  const double c = std::cos(glm::radians(deg)), s = std::sin(glm::radians(deg));
+  return Mat4(1, 0, 0, 0, 0, c, s, 0, 0, -s, c, 0, 0, 0, 0, 1);
+}
+inline Mat4 rotation_y(double deg) {
+  const double c = std::cos(glm::radians(deg)), s = std::sin(glm::radians(deg));
+  return Mat4(c, 0, -s, 0, 0, 1, 0, 0, s, 0, c, 0, 0, 0, 0, 1);
+}
+inline Mat4 rotation_z(double deg) {
+  const double c = std::cos(glm::radians(deg)), s = std::sin(glm::radians(deg));
+  return Mat4(c, s, 0, 0, -s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1);
 }
 
 // Object to world: scale, then rotate about X, then Y, then Z, then translate.
 inline Mat4 model_matrix(const Transform& t) {
-  auto rotation = [](int axis, double deg) {
-    const double c = std::cos(deg * M_PI / 180.0), s = std::sin(deg * M_PI / 180.0);
-    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-    Mat4 r = Mat4::identity();
-    r(a, a) = c;
-    r(a, b) = -s;
-    r(b, a) = s;
-    r(b, b) = c;
-    return r;
-  };
-  Mat4 scale = Mat4::identity(), translate = Mat4::identity();
-  for (int i = 0; i < 3; ++i) {
-    scale(i, i) = t.scale[size_t(i)];
-    translate(i, 3) = t.translate[size_t(i)];
-  }
-  return translate * rotation(2, t.rotate_deg[2]) * rotation(1, t.rotate_deg[1]) * rotation(0, t.rotate_deg[0]) * scale;
+  const Mat4 translate = glm::translate(Mat4(1), vec(t.translate)), scale = glm::scale(Mat4(1), vec(t.scale));
+  return translate * rotation_z(t.rotate_deg[2]) * rotation_y(t.rotate_deg[1]) * rotation_x(t.rotate_deg[0]) * scale;
 }
 
 // The inverse transpose of a transform's 3×3 part (in a Mat4): it carries normals.
-inline Mat4 normal_matrix(const Mat4& t) {
-  auto a = [&](int r, int c) { return t(r, c); };
-  const double det = a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
-                     a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));
-  Mat4 r = Mat4::identity();
-  for (int row = 0; row < 3; ++row) {
-    for (int col = 0; col < 3; ++col) {
-      // (A⁻¹)ᵀ[row][col] = cofactor(row, col) / det
-      const int r0 = (row + 1) % 3, r1 = (row + 2) % 3, c0 = (col + 1) % 3, c1 = (col + 2) % 3;
-      r(row, col) = (a(r0, c0) * a(r1, c1) - a(r0, c1) * a(r1, c0)) / det;
-    }
-  }
-  return r;
-}
+inline Mat4 normal_matrix(const Mat4& t) { return Mat4(glm::transpose(glm::inverse(glm::dmat3(t)))); }
 
 inline Mat4 view_projection(const Camera& c, double aspect) {
   return perspective(c.fov_y_deg, aspect, c.near, c.far) * look_at(c.position, c.target, c.up);
@@ -178,44 +133,9 @@ inline Vec3 pixel_ray(const Camera& c, uint32_t width, uint32_t height, double i
 }
 
 // The inverse of an affine transform (a model matrix): world to the object's space.
-inline Mat4 inverse_affine(const Mat4& m) {
-  const Mat4 inverse_transpose = normal_matrix(m);
-  Mat4 r = Mat4::identity();
-  for (int row = 0; row < 3; ++row) {
-    for (int col = 0; col < 3; ++col) r(row, col) = inverse_transpose(col, row);
-  }
-  for (int row = 0; row < 3; ++row) r(row, 3) = -(r(row, 0) * m(0, 3) + r(row, 1) * m(1, 3) + r(row, 2) * m(2, 3));
-  return r;
-}
+inline Mat4 inverse_affine(const Mat4& m) { return glm::affineInverse(m); }
 
-// The inverse of any invertible 4×4 matrix (a projection too): Gauss–Jordan elimination
-// with partial pivoting, in double.
-inline Mat4 inverse(const Mat4& m) {
-  Mat4 a = m, r = Mat4::identity();
-  for (int col = 0; col < 4; ++col) {
-    int pivot = col;
-    for (int row = col + 1; row < 4; ++row) {
-      if (std::abs(a(row, col)) > std::abs(a(pivot, col))) pivot = row;
-    }
-    for (int k = 0; k < 4; ++k) {
-      std::swap(a(col, k), a(pivot, k));
-      std::swap(r(col, k), r(pivot, k));
-    }
-    const double scale = 1.0 / a(col, col);
-    for (int k = 0; k < 4; ++k) {
-      a(col, k) *= scale;
-      r(col, k) *= scale;
-    }
-    for (int row = 0; row < 4; ++row) {
-      if (row == col) continue;
-      const double f = a(row, col);
-      for (int k = 0; k < 4; ++k) {
-        a(row, k) -= f * a(col, k);
-        r(row, k) -= f * r(col, k);
-      }
-    }
-  }
-  return r;
-}
+// The inverse of any invertible 4×4 matrix (a projection too).
+inline Mat4 inverse(const Mat4& m) { return glm::inverse(m); }
 
 }  // namespace volgraph::physics

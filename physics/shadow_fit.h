@@ -28,7 +28,7 @@ struct Box {
 // in that view's metres, the window x ∈ [left, right], y ∈ [bottom, top] and the depths
 // along the light's direction [near, far].
 struct OrthoFit {
-  Mat4 view;
+  Mat4 view{1.0};
   double left = -1, right = 1, bottom = -1, top = 1;
   double near = 0, far = 1;
   Mat4 view_projection() const { return orthographic(left, right, bottom, top, near, far) * view; }

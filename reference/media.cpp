@@ -24,10 +24,7 @@ constexpr double kMaxPanelsPerChord = 256;
 constexpr double kMaxSegmentsPerChord = 64;
 // e^(−this) is below double's resolution of 1: height fog beyond it adds nothing.
 constexpr double kNegligibleExponent = 50;
-Vec3 transform_vector(const Mat4& m, const Vec3& v) {
-  return {m(0, 0) * v[0] + m(0, 1) * v[1] + m(0, 2) * v[2], m(1, 0) * v[0] + m(1, 1) * v[1] + m(1, 2) * v[2],
-          m(2, 0) * v[0] + m(2, 1) * v[1] + m(2, 2) * v[2]};
-}
+Vec3 transform_vector(const Mat4& m, const Vec3& v) { return physics::to_vec3(glm::dmat3(m) * physics::vec(v)); }
 
 Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 Vec3 over(const Vec3& a, const Vec3& b) { return {a[0] / b[0], a[1] / b[1], a[2] / b[2]}; }
@@ -68,12 +65,7 @@ Vec3 unit_shape_size(const MediumVolume& v) {
   return v.shape == Shape::sphere ? Vec3{v.size[0], v.size[0], v.size[0]} : v.size;
 }
 
-Mat4 unit_shape_to_volume(const MediumVolume& v) {
-  Mat4 scale = Mat4::identity();
-  const Vec3 size = unit_shape_size(v);
-  for (int k = 0; k < 3; ++k) scale(k, k) = size[size_t(k)];
-  return scale;
-}
+Mat4 unit_shape_to_volume(const MediumVolume& v) { return glm::scale(Mat4(1), physics::vec(unit_shape_size(v))); }
 
 // Where the density reaches 1 inside the edge fade (MediaField's inside distance ≥ fade),
 // as a scale of the unit shape: the box's edges less the fade on each side, the sphere's
@@ -118,7 +110,7 @@ SceneMedia::SceneMedia(const Media& media, const MediaQuadrature& quadrature) : 
     const bool uniform = v.noise.edge_fade == 0 && v.noise.octaves == 0;
     const Vec3 size = unit_shape_size(v);
     const bool flat = std::min({size[0], size[1], size[2]}) <= 0;  // no inside: nothing along any ray
-    volumes_.push_back({v.shape, flat ? Mat4::identity() : physics::inverse_affine(model), core_scale(v), uniform, flat});
+    volumes_.push_back({v.shape, flat ? Mat4(1) : physics::inverse_affine(model), core_scale(v), uniform, flat});
   }
 }
 

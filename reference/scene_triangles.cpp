@@ -39,9 +39,7 @@ WorldVertex world_vertex(const std::vector<float>& vertices, uint32_t index, con
   const float* v = vertices.data() + size_t(index) * kMeshVertexFloats;
   WorldVertex w;
   w.position = physics::transform_point(model, {v[0], v[1], v[2]});
-  for (int row = 0; row < 3; ++row) {
-    w.normal[size_t(row)] = normals(row, 0) * v[3] + normals(row, 1) * v[4] + normals(row, 2) * v[5];
-  }
+  w.normal = physics::to_vec3(glm::dmat3(normals) * glm::dvec3(v[3], v[4], v[5]));
   w.uv = {v[6], v[7]};
   return w;
 }

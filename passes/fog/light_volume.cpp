@@ -71,12 +71,12 @@ constexpr double kNearPlaneScale = 1e-3;   // the faces' near plane, a fraction 
 // a near plane at n, with no far plane (a face behind the far plane still counts).
 physics::Mat4 faces_clip(const Camera& camera, double aspect) {
   const double cot = 1.0 / std::tan(camera.fov_y_deg * M_PI / 360.0);
-  physics::Mat4 p;
-  p(0, 0) = cot / aspect;
-  p(1, 1) = cot;
-  p(2, 2) = -1;
-  p(2, 3) = -kNearPlaneScale * camera.near;
-  p(3, 2) = -1;
+  physics::Mat4 p(0.0);  // m[col][row]
+  p[0][0] = cot / aspect;
+  p[1][1] = cot;
+  p[2][2] = -1;
+  p[3][2] = -kNearPlaneScale * camera.near;
+  p[2][3] = -1;
   return p * physics::look_at(camera.position, camera.target, camera.up);
 }
 

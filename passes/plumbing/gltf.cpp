@@ -6,6 +6,8 @@
 
 #include <tiny_gltf.h>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "physics/camera.h"
 
 namespace volgraph::plumbing {
@@ -61,19 +63,13 @@ std::vector<double> read_accessor(const tinygltf::Model& m, int index, int compo
 }
 
 Mat4 node_matrix(const tinygltf::Node& n) {
-  Mat4 m = Mat4::identity();
-  if (n.matrix.size() == 16) {
-    for (size_t i = 0; i < 16; ++i) m.m[i] = n.matrix[i];  // column-major, as glTF
-    return m;
-  }
-  Mat4 t = Mat4::identity(), r = Mat4::identity(), s = Mat4::identity();
-  if (n.translation.size() == 3) for (int i = 0; i < 3; ++i) t(i, 3) = n.translation[size_t(i)];
-  if (n.scale.size() == 3) for (int i = 0; i < 3; ++i) s(i, i) = n.scale[size_t(i)];
+  if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());  // column-major, as glTF
+  Mat4 t(1), r(1), s(1);
+  if (n.translation.size() == 3) t = glm::translate(Mat4(1), glm::make_vec3(n.translation.data()));
+  if (n.scale.size() == 3) s = glm::scale(Mat4(1), glm::make_vec3(n.scale.data()));
   if (n.rotation.size() == 4) {  // unit quaternion x, y, z, w
-    const double x = n.rotation[0], y = n.rotation[1], z = n.rotation[2], w = n.rotation[3];
-    r(0, 0) = 1 - 2 * (y * y + z * z); r(0, 1) = 2 * (x * y - z * w);     r(0, 2) = 2 * (x * z + y * w);
-    r(1, 0) = 2 * (x * y + z * w);     r(1, 1) = 1 - 2 * (x * x + z * z); r(1, 2) = 2 * (y * z - x * w);
-    r(2, 0) = 2 * (x * z - y * w);     r(2, 1) = 2 * (y * z + x * w);     r(2, 2) = 1 - 2 * (x * x + y * y);
+    const std::vector<double>& q = n.rotation;
+    r = glm::mat4_cast(glm::dquat(q[3], q[0], q[1], q[2]));  // GLM's quaternion takes w first
   }
   return t * r * s;
 }
@@ -145,7 +141,7 @@ GltfPrimitive primitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
     Vec3 nn = fallback_normal;
     if (!nrm.empty()) {
       const Vec3 raw{nrm[3 * v], nrm[3 * v + 1], nrm[3 * v + 2]};
-      for (int r = 0; r < 3; ++r) nn[size_t(r)] = carry(r, 0) * raw[0] + carry(r, 1) * raw[1] + carry(r, 2) * raw[2];
+      nn = to_vec3(glm::dmat3(carry) * vec(raw));
       const double l = std::sqrt(dot(nn, nn));
       nn = l > 0 ? Vec3{nn[0] / l, nn[1] / l, nn[2] / l} : fallback_normal;
     }
@@ -220,7 +216,7 @@ GltfModel load_gltf(const std::string& path) {
   const int scene = m.defaultScene >= 0 ? m.defaultScene : 0;
   if (m.scenes.empty()) fail("the file has no scene");
   if (size_t(scene) >= m.scenes.size()) fail("the default scene does not exist");
-  for (int root : m.scenes[size_t(scene)].nodes) visit(root, Mat4::identity(), 0);
+  for (int root : m.scenes[size_t(scene)].nodes) visit(root, Mat4(1), 0);
   if (model.primitives.empty()) fail("the default scene has no triangles");
   for (size_t i = 0; i < m.images.size(); ++i) {
     const std::string name = m.images[i].name.empty() ? m.images[i].uri : m.images[i].name;

@@ -91,14 +91,14 @@ float red(const Texels& t, uint32_t i, uint32_t j) { return t.rgba[4 * (size_t(j
 
 // The hard shadow lookup of shadow_lookup.glsl in double: lit or not at world point p.
 struct ShadowMap {
-  physics::Mat4 view_projection;
+  physics::Mat4 view_projection{1.0};
   double bias = 0;
   const Texels* depth = nullptr;
 
   std::array<double, 4> clip(const Vec3& p) const {
-    std::array<double, 4> c{};
-    for (int r = 0; r < 4; ++r) c[size_t(r)] = view_projection(r, 0) * p[0] + view_projection(r, 1) * p[1] + view_projection(r, 2) * p[2] + view_projection(r, 3);
-    return c;
+    const physics::Mat4& m = view_projection;
+    const glm::dvec4 c = m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + m[3];
+    return {c.x, c.y, c.z, c.w};
   }
   bool lit(const Vec3& p) const {
     const auto c = clip(p);
@@ -216,7 +216,7 @@ class LightVolume : public OnEachBackend<> {
   // The CPU evaluation of every pixel (red channel; the fog is grey), row-major.
   std::vector<double> exact(const Frame& f) const {
     ShadowMap map;
-    for (size_t i = 0; i < 16; ++i) map.view_projection.m[i] = f.view.light_view_projection[i];
+    map.view_projection = physics::Mat4(glm::make_mat4(f.view.light_view_projection));
     map.bias = f.view.params[0];
     map.depth = &f.shadow_depth;
     const Light& l = scene_.lights[0];

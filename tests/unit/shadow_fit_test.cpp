@@ -259,7 +259,7 @@ TEST(ShadowFit, InverseUndoesAProjection) {
   const Mat4 m = perspective(40, 1.5, 0.05, 80) * look_at({1, 2, 3}, {0, 0, -4}, {0, 1, 0});
   const Mat4 product = inverse(m) * m;
   for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) EXPECT_NEAR(product(r, c), r == c ? 1.0 : 0.0, 1e-12) << r << ", " << c;
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(product[c][r], r == c ? 1.0 : 0.0, 1e-12) << r << ", " << c;
   }
 }
 
