@@ -13,26 +13,19 @@
 #include "passes/fog/fog_passes.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
-#include "shaders/include/phase_codes.h"
+#include "passes/fog/phase_variants.h"
 
 namespace volgraph {
 namespace {
 
-struct FroxelScatterTable : PassTable {
+struct FroxelScatterTable : fog::PhaseTable {
   FroxelScatterTable()
-      : PassTable("froxel_scatter", PassKind::compute,
+      : PhaseTable("froxel_scatter", PassKind::compute,
                   "Per froxel, the light scattered toward the camera per metre: lights × phase × visibility, ambient, emission.") {
     decl.needs = feature_bit(SceneFeature::medium);
   }
-  // Variants: the phase function (the first is the default).
-  VariantHandle hg = variant("hg", "Henyey–Greenstein with the medium's g", PHASE_HG);
-  VariantHandle isotropic = variant("isotropic", "p = 1/4π", PHASE_ISOTROPIC);
-  VariantHandle rayleigh = variant("rayleigh", "3/(16π)·(1 + cos²θ)", PHASE_RAYLEIGH);
-  VariantHandle schlick = variant("schlick", "Schlick's approximation of HG, k = 1.55g − 0.55g³ (clamped)", PHASE_SCHLICK);
-  VariantHandle dual_hg = variant("dual_hg", "forward HG (the medium's g) and backward HG (g_back) mixed by w_forward", PHASE_DUAL_HG);
+  // The phase variants and dual_hg's lobes come first (fog::PhaseTable); then:
   // Parameters.
-  ParamHandle<double> g_back = number("g_back", -0.3, -0.999, 0.999, "", "dual_hg: the backward lobe's g");
-  ParamHandle<double> w_forward = number("w_forward", 0.7, 0, 1, "", "dual_hg: the forward lobe's weight");
   ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
   ParamHandle<int64_t> shadow_steps = integer("shadow_steps", 0, 0, 256, "",
       "volumetric self-shadowing: steps of the march through the media toward each light not covered by media_shadow (0: off)");

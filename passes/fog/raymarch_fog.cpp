@@ -19,16 +19,16 @@
 #include "passes/fog/fog_passes.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
-#include "shaders/include/phase_codes.h"
+#include "passes/fog/phase_variants.h"
 
 namespace volgraph {
 namespace {
 
 SizeSpec fog_image_size() { return SizeSpec::of_output_divided_by_choice("resolution", {{"full", 1}, {"half", 2}}); }
 
-struct RaymarchFogTable : PassTable {
+struct RaymarchFogTable : fog::PhaseTable {
   RaymarchFogTable()
-      : PassTable("raymarch_fog", PassKind::compute,
+      : PhaseTable("raymarch_fog", PassKind::compute,
                   "Per-pixel ray marching through the media to the scene's depth (equal steps, a per-pixel jittered sample in each, "
                   "Hillaire's energy-conserving step): in-scattering (the phase variant, shadow map, volumetric shadows) and transmittance.") {
     decl.needs = feature_bit(SceneFeature::medium);
@@ -36,15 +36,8 @@ struct RaymarchFogTable : PassTable {
       return fog::media_fit_problems(scene, "marched");
     };
   }
-  // Variants: the phase function, as froxel_scatter's (the first is the default).
-  VariantHandle hg = variant("hg", "Henyey–Greenstein with the medium's g", PHASE_HG);
-  VariantHandle isotropic = variant("isotropic", "p = 1/4π", PHASE_ISOTROPIC);
-  VariantHandle rayleigh = variant("rayleigh", "3/(16π)·(1 + cos²θ)", PHASE_RAYLEIGH);
-  VariantHandle schlick = variant("schlick", "Schlick's approximation of HG, k = 1.55g − 0.55g³ (clamped)", PHASE_SCHLICK);
-  VariantHandle dual_hg = variant("dual_hg", "forward HG (the medium's g) and backward HG (g_back) mixed by w_forward", PHASE_DUAL_HG);
+  // The phase variants and dual_hg's lobes come first (fog::PhaseTable); then:
   // Parameters.
-  ParamHandle<double> g_back = number("g_back", -0.3, -0.999, 0.999, "", "dual_hg: the backward lobe's g");
-  ParamHandle<double> w_forward = number("w_forward", 0.7, 0, 1, "", "dual_hg: the forward lobe's weight");
   ParamHandle<int64_t> steps = integer("steps", 64, 1, 4096, "", "equal steps from the camera to the surface");
   ParamHandle<int64_t> shadow_steps =
       integer("shadow_steps", 0, 0, 1024, "", "steps of the march toward each light for volumetric shadows (0: off)");
