@@ -26,6 +26,13 @@ using Mat4 = glm::dmat4;
 inline glm::dvec3 vec(const Vec3& v) { return {v[0], v[1], v[2]}; }
 inline Vec3 to_vec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
+// v / |v|: the rounding of the scene-side normalize below, which the camera's rays keep
+// (the reference renderer's images are compared against stored ones); glm::normalize
+// multiplies by inversesqrt instead.
+inline glm::dvec3 unit(const glm::dvec3& v) { return v / glm::length(v); }
+
+// The scene-side helpers on Vec3, for passes/, reference/ and tests/ (physics/ computes
+// with glm::dvec3).
 inline Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 inline Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 inline Vec3 scaled(const Vec3& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }
@@ -102,14 +109,14 @@ struct ViewRays {
 
 inline ViewRays view_rays(const Camera& c, double aspect) {
   const double t = std::tan(c.fov_y_deg * M_PI / 360.0);
-  const Vec3 f = normalize(sub(c.target, c.position));
-  const Vec3 s = normalize(cross(f, c.up));
-  const Vec3 u = cross(s, f);
-  return {c.position, f, scaled(s, t * aspect), scaled(u, t)};
+  const glm::dvec3 f = unit(vec(c.target) - vec(c.position));
+  const glm::dvec3 s = unit(glm::cross(f, vec(c.up)));
+  const glm::dvec3 u = glm::cross(s, f);
+  return {c.position, to_vec3(f), to_vec3(s * (t * aspect)), to_vec3(u * t)};
 }
 
 inline Vec3 view_ray(const ViewRays& v, double ndc_x, double ndc_y) {
-  return add(v.forward, add(scaled(v.right, ndc_x), scaled(v.up, ndc_y)));
+  return to_vec3(vec(v.forward) + (vec(v.right) * ndc_x + vec(v.up) * ndc_y));
 }
 
 // Where world point p lies in the view (shaders/include/view_rays.glsl `view_uvz`): the
@@ -119,9 +126,9 @@ struct ViewUvz {
 };
 
 inline ViewUvz view_uvz(const ViewRays& v, const Vec3& p) {
-  const Vec3 d = sub(p, v.position);
-  const double z = dot(d, v.forward);
-  const double along_x = dot(d, v.right) / dot(v.right, v.right), along_y = dot(d, v.up) / dot(v.up, v.up);
+  const glm::dvec3 d = vec(p) - vec(v.position), right = vec(v.right), up = vec(v.up);
+  const double z = glm::dot(d, vec(v.forward));
+  const double along_x = glm::dot(d, right) / glm::dot(right, right), along_y = glm::dot(d, up) / glm::dot(up, up);
   const double inverse_z = 1.0 / std::max(z, 1e-20);
   return {0.5 + 0.5 * along_x * inverse_z, 0.5 - 0.5 * along_y * inverse_z, z};
 }
@@ -129,7 +136,7 @@ inline ViewUvz view_uvz(const ViewRays& v, const Vec3& p) {
 // The direction (unit, world space) pixel (i, j) of a W × H frame looks along.
 inline Vec3 pixel_ray(const Camera& c, uint32_t width, uint32_t height, double i, double j) {
   const double x = (i + 0.5) / width * 2 - 1, y = 1 - (j + 0.5) / height * 2;
-  return normalize(view_ray(view_rays(c, double(width) / height), x, y));
+  return to_vec3(unit(vec(view_ray(view_rays(c, double(width) / height), x, y))));
 }
 
 // The inverse of an affine transform (a model matrix): world to the object's space.

@@ -23,8 +23,8 @@ inline double froxel_depth(const FroxelRange& r, double w) {
 }
 
 inline double froxel_w(const FroxelRange& r, double z) {
-  if (r.distribution == FroxelDistribution::linear) return std::clamp((z - r.near) / (r.far - r.near), 0.0, 1.0);
-  return std::clamp(std::log(std::max(z, r.near) / r.near) / std::log(r.far / r.near), 0.0, 1.0);
+  if (r.distribution == FroxelDistribution::linear) return glm::clamp((z - r.near) / (r.far - r.near), 0.0, 1.0);
+  return glm::clamp(std::log(std::max(z, r.near) / r.near) / std::log(r.far / r.near), 0.0, 1.0);
 }
 
 // Where world point p falls in the grid (range r) of view v (froxel.glsl `froxel_uvw`,

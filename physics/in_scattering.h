@@ -67,22 +67,20 @@ template <typename Shadows = Unshadowed>
 Vec3 in_scattering(const MediaSample& m, const Vec3& p, const Vec3& to_camera, const PhaseChoice& phase,
                    const std::vector<Light>& lights, const Vec3& ambient, const Media& media, const LightMarch& march,
                    bool skip_without_scattering, const Shadows& shadows = {}) {
-  const bool scatters = m.sigma_s[0] > 0 || m.sigma_s[1] > 0 || m.sigma_s[2] > 0;
+  const bool scatters = glm::any(glm::greaterThan(vec(m.sigma_s), glm::dvec3(0)));
   if (skip_without_scattering && !scatters) return m.emission;
-  Vec3 light = ambient;
+  glm::dvec3 light = vec(ambient);
   for (size_t i = 0; i < lights.size(); ++i) {
     const LightArriving a = light_arriving(lights[i], p);
-    const Vec3 visible = shadows.visibility(i, p);
-    const bool delivers = a.irradiance[0] != 0 || a.irradiance[1] != 0 || a.irradiance[2] != 0;
-    if ((visible[0] <= 0 && visible[1] <= 0 && visible[2] <= 0) || !delivers) continue;
+    const glm::dvec3 visible = vec(shadows.visibility(i, p)), irradiance = vec(a.irradiance);
+    const bool delivers = glm::any(glm::notEqual(irradiance, glm::dvec3(0)));
+    if (glm::all(glm::lessThanEqual(visible, glm::dvec3(0))) || !delivers) continue;
     const int steps = shadows.media_shadow_mapped(i) ? 0 : march.steps;
-    const Vec3 through = transmittance_to_light(media, lights[i], p, steps, march.max_distance, march.jitter);
-    const double phase_value = phase_of(phase, m.g, dot(a.travel, to_camera));
-    for (size_t c = 0; c < 3; ++c) light[c] += phase_value * a.irradiance[c] * (visible[c] * through[c]);
+    const glm::dvec3 through = vec(transmittance_to_light(media, lights[i], p, steps, march.max_distance, march.jitter));
+    const double phase_value = phase_of(phase, m.g, glm::dot(vec(a.travel), vec(to_camera)));
+    light += phase_value * irradiance * (visible * through);
   }
-  Vec3 s;
-  for (size_t c = 0; c < 3; ++c) s[c] = m.sigma_s[c] * light[c] + m.emission[c];
-  return s;
+  return to_vec3(vec(m.sigma_s) * light + vec(m.emission));
 }
 
 }  // namespace volgraph::physics

@@ -11,19 +11,18 @@ namespace volgraph::physics {
 
 double light_march_length(const Light& light, const Vec3& p, double max_distance) {
   if (light.type == LightType::directional) return max_distance;
-  const Vec3 d = sub(light.position, p);
-  return std::sqrt(dot(d, d));
+  return glm::length(vec(light.position) - vec(p));
 }
 
 Vec3 optical_depth_along(const MediaField& field, const Vec3& p, const Vec3& direction, double length, int steps, double jitter) {
-  Vec3 optical_depth{0, 0, 0};
-  if (steps <= 0) return optical_depth;
+  glm::dvec3 optical_depth(0);
+  if (steps <= 0) return to_vec3(optical_depth);
   const double step_length = length / steps;
   for (int k = 0; k < steps; ++k) {
-    const MediaSample s = field.sample(add(p, scaled(direction, (k + jitter) * step_length)));
-    optical_depth = add(optical_depth, scaled(s.sigma_t(), step_length));
+    const MediaSample s = field.sample(to_vec3(vec(p) + vec(direction) * ((k + jitter) * step_length)));
+    optical_depth += vec(s.sigma_t()) * step_length;
   }
-  return optical_depth;
+  return to_vec3(optical_depth);
 }
 
 Media media_toward_light(const Media& media, const Light& light) {
@@ -35,11 +34,10 @@ Media media_toward_light(const Media& media, const Light& light) {
 Vec3 transmittance_to_light(const Media& media, const Light& light, const Vec3& p, int steps, double max_distance, double jitter) {
   if (steps <= 0) return {1, 1, 1};
   const MediaField field(media_toward_light(media, light));
-  const Vec3 to_light = scaled(light_arriving(light, p).travel, -1);
-  const Vec3 optical_depth = optical_depth_along(field, p, to_light, light_march_length(light, p, max_distance), steps, jitter);
-  Vec3 t;
-  for (size_t c = 0; c < 3; ++c) t[c] = std::exp(-std::min(optical_depth[c], kMaxExponent<double>));
-  return t;
+  const Vec3 to_light = to_vec3(-vec(light_arriving(light, p).travel));
+  const glm::dvec3 optical_depth =
+      vec(optical_depth_along(field, p, to_light, light_march_length(light, p, max_distance), steps, jitter));
+  return to_vec3(glm::exp(-glm::min(optical_depth, kMaxExponent<double>)));
 }
 
 }  // namespace volgraph::physics

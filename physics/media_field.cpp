@@ -22,11 +22,11 @@ int shape_code(Shape shape) {
 }
 
 void add_medium(MediaSample& s, double& g_weight, const Medium& m, double density) {
-  const Vec3 sigma_s = scaled(m.sigma_s, density);
-  s.sigma_s = add(s.sigma_s, sigma_s);
-  s.sigma_a = add(s.sigma_a, scaled(m.sigma_a, density));
-  s.emission = add(s.emission, scaled(m.emission, density));
-  const double weight = sigma_s[0] + sigma_s[1] + sigma_s[2];
+  const glm::dvec3 sigma_s = vec(m.sigma_s) * density;
+  s.sigma_s = to_vec3(vec(s.sigma_s) + sigma_s);
+  s.sigma_a = to_vec3(vec(s.sigma_a) + vec(m.sigma_a) * density);
+  s.emission = to_vec3(vec(s.emission) + vec(m.emission) * density);
+  const double weight = sigma_s.x + sigma_s.y + sigma_s.z;
   s.g += m.g * weight;
   g_weight += weight;
 }
@@ -52,19 +52,18 @@ double MediaField::inside_distance(size_t i, const Vec3& p) const {
   return inside_distance_local(i, transform_point(world_to_local_[i], p));
 }
 
-double MediaField::inside_distance_local(size_t i, const Vec3& local) const {
+double MediaField::inside_distance_local(size_t i, const Vec3& local_point) const {
   const MediumVolume& v = media_.volumes[i];
+  const glm::dvec3 local = vec(local_point), size = vec(v.size);
   switch (v.shape) {
     case Shape::box: {
-      double d = 1e300;
-      for (size_t k = 0; k < 3; ++k) d = std::min(d, 0.5 * v.size[k] - std::abs(local[k]));
-      return d;
+      const glm::dvec3 d = 0.5 * size - glm::abs(local);
+      return glm::min(glm::min(d.x, d.y), d.z);
     }
-    case Shape::sphere: return v.size[0] - std::sqrt(dot(local, local));
+    case Shape::sphere: return size.x - glm::length(local);
     default: {
-      const Vec3 radii{std::max(v.size[0], 1e-12), std::max(v.size[1], 1e-12), std::max(v.size[2], 1e-12)};
-      const Vec3 q{local[0] / radii[0], local[1] / radii[1], local[2] / radii[2]};
-      return (1 - std::sqrt(dot(q, q))) * std::min({radii[0], radii[1], radii[2]});
+      const glm::dvec3 radii = glm::max(size, 1e-12);
+      return (1 - glm::length(local / radii)) * glm::min(glm::min(radii.x, radii.y), radii.z);
     }
   }
 }
@@ -79,10 +78,10 @@ double MediaField::volume_density(size_t i, const Vec3& p) const {
   const double d = inside_distance_local(i, local);
   if (d < 0) return 0;
   const Noise& noise = media_.volumes[i].noise;
-  const double fade = noise.edge_fade > 0 ? std::clamp(d / noise.edge_fade, 0.0, 1.0) : 1.0;
+  const double fade = noise.edge_fade > 0 ? glm::clamp(d / noise.edge_fade, 0.0, 1.0) : 1.0;
   if (noise.octaves == 0 || fade == 0) return fade;
-  const Vec3 q = scaled(local, 1 / noise.scale);
-  return fade * noise_density(q[0], q[1], q[2], noise.octaves, noise.coverage);
+  const glm::dvec3 q = vec(local) * (1 / noise.scale);
+  return fade * noise_density(q.x, q.y, q.z, noise.octaves, noise.coverage);
 }
 
 MediaSample MediaField::sample(const Vec3& p) const {

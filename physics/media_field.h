@@ -19,7 +19,7 @@ namespace volgraph::physics {
 struct MediaSample {
   Vec3 sigma_s{0, 0, 0}, sigma_a{0, 0, 0}, emission{0, 0, 0};
   double g = 0;
-  Vec3 sigma_t() const { return add(sigma_s, sigma_a); }
+  Vec3 sigma_t() const { return to_vec3(vec(sigma_s) + vec(sigma_a)); }
 };
 
 // The media with each volume's world-to-local transform computed once.

@@ -23,9 +23,10 @@ std::array<Vec3, 8> box_corners(const Box& b) {
   return corners;
 }
 
-Vec3 box_centre(const Box& b) { return scaled(add(b.min, b.max), 0.5); }
+Vec3 box_centre(const Box& b) { return to_vec3((vec(b.min) + vec(b.max)) * 0.5); }
 
-double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
+// The box's diagonal length.
+double diagonal(const Box& b) { return glm::length(vec(b.max) - vec(b.min)); }
 
 // The 12 edges of a hexahedron whose corner i has the bits (x, y, z): corners one bit apart.
 std::array<std::array<size_t, 2>, 12> hexahedron_edges() {
@@ -44,7 +45,7 @@ struct Plane {
   double offset = 0;
 };
 
-double signed_distance(const Plane& plane, const Vec3& p) { return dot(plane.normal, p) - plane.offset; }
+double signed_distance(const Plane& plane, const Vec3& p) { return glm::dot(vec(plane.normal), vec(p)) - plane.offset; }
 
 // The first three corners of the face where corner bit `bit` equals `side` (not in a line
 // on a frustum slice).
@@ -59,17 +60,17 @@ std::array<size_t, 3> face_corners(size_t bit, size_t side) {
 
 // The 6 face planes of a hexahedron with planar faces (a frustum slice), facing inward.
 std::array<Plane, 6> hexahedron_planes(const std::array<Vec3, 8>& corners) {
-  Vec3 centroid{0, 0, 0};
-  for (const Vec3& c : corners) centroid = add(centroid, scaled(c, 1.0 / 8));
+  glm::dvec3 centroid(0);
+  for (const Vec3& c : corners) centroid += vec(c) * (1.0 / 8);
   std::array<Plane, 6> planes;
   size_t n = 0;
   for (size_t bit = 1; bit < 8; bit <<= 1) {
     for (const size_t side : {size_t{0}, bit}) {
       const std::array<size_t, 3> face = face_corners(bit, side);
-      const Vec3& a = corners[face[0]];
-      Vec3 normal = normalize(cross(sub(corners[face[1]], a), sub(corners[face[2]], a)));
-      if (dot(normal, sub(centroid, a)) < 0) normal = scaled(normal, -1);
-      planes[n++] = {normal, dot(normal, a)};
+      const glm::dvec3 a = vec(corners[face[0]]);
+      glm::dvec3 normal = unit(glm::cross(vec(corners[face[1]]) - a, vec(corners[face[2]]) - a));
+      if (glm::dot(normal, centroid - a) < 0) normal = -normal;
+      planes[n++] = {to_vec3(normal), glm::dot(normal, a)};
     }
   }
   return planes;
@@ -77,7 +78,7 @@ std::array<Plane, 6> hexahedron_planes(const std::array<Vec3, 8>& corners) {
 
 // Where the segment a→b crosses a plane, from the ends' signed distances (opposite signs).
 Vec3 crossing(const Vec3& a, const Vec3& b, double distance_a, double distance_b) {
-  return add(a, scaled(sub(b, a), distance_a / (distance_a - distance_b)));
+  return to_vec3(vec(a) + (vec(b) - vec(a)) * (distance_a / (distance_a - distance_b)));
 }
 
 // The region a frustum slice and a box share, with a tolerance for points on its faces.
@@ -144,7 +145,7 @@ Bounds3 bounds_in(const Mat4& frame, std::span<const Vec3> points) {
 // World to a light's view at `eye`, looking along `direction` (unit).
 Mat4 light_view(const Vec3& eye, const Vec3& direction) {
   const Vec3 up = std::abs(direction[1]) > 0.99 ? Vec3{0, 0, 1} : Vec3{0, 1, 0};
-  return look_at(eye, add(eye, direction), up);
+  return look_at(eye, to_vec3(vec(eye) + vec(direction)), up);
 }
 
 double tan_half_fov(const Camera& camera) { return std::tan(camera.fov_y_deg * M_PI / 360.0); }
@@ -196,22 +197,24 @@ Interval snapped_window(double receivers_lo, double side, uint32_t texels) {
 
 DepthRange receiver_depths(const Camera& camera, const Box& scene, double distance) {
   if (distance > 0) return {camera.near, std::min(camera.far, distance)};
-  const Vec3 forward = normalize(sub(camera.target, camera.position));
+  const glm::dvec3 forward = unit(vec(camera.target) - vec(camera.position));
   double deepest = -std::numeric_limits<double>::infinity();
-  for (const Vec3& corner : box_corners(scene)) deepest = std::max(deepest, dot(sub(corner, camera.position), forward));
+  for (const Vec3& corner : box_corners(scene)) {
+    deepest = std::max(deepest, glm::dot(vec(corner) - vec(camera.position), forward));
+  }
   return {camera.near, std::min(camera.far, deepest)};
 }
 
 std::array<Vec3, 8> frustum_slice_corners(const Camera& camera, double aspect, const DepthRange& depths) {
-  const Vec3 forward = normalize(sub(camera.target, camera.position));
-  const Vec3 side = normalize(cross(forward, camera.up));
-  const Vec3 up = cross(side, forward);
+  const glm::dvec3 forward = unit(vec(camera.target) - vec(camera.position));
+  const glm::dvec3 side = unit(glm::cross(forward, vec(camera.up)));
+  const glm::dvec3 up = glm::cross(side, forward);
   const double t = tan_half_fov(camera);
   std::array<Vec3, 8> corners;
   for (size_t i = 0; i < 8; ++i) {
     const double x = i & 1 ? 1 : -1, y = i & 2 ? 1 : -1, depth = i & 4 ? depths.far : depths.near;
-    const Vec3 ray = add(forward, add(scaled(side, x * t * aspect), scaled(up, y * t)));
-    corners[i] = add(camera.position, scaled(ray, depth));
+    const glm::dvec3 ray = forward + (side * (x * t * aspect) + up * (y * t));
+    corners[i] = to_vec3(vec(camera.position) + ray * depth);
   }
   return corners;
 }
@@ -220,7 +223,7 @@ std::array<Vec3, 8> frustum_slice_corners(const Camera& camera, double aspect, c
 // other and each one's edges crossing the other's faces.
 std::vector<Vec3> slice_box_intersection(const std::array<Vec3, 8>& slice, const Box& box) {
   const std::array<Vec3, 8> corners = box_corners(box);
-  const double scale = length(sub(box.max, box.min)) + length(sub(slice[7], slice[0]));
+  const double scale = diagonal(box) + glm::length(vec(slice[7]) - vec(slice[0]));
   const SharedRegion region{box, hexahedron_planes(slice), 1e-9 * scale};
   std::vector<Vec3> vertices;
   for (const Vec3& p : slice) {
@@ -235,11 +238,11 @@ std::vector<Vec3> slice_box_intersection(const std::array<Vec3, 8>& slice, const
 }
 
 OrthoFit fit_directional_to_scene(const Vec3& direction, const Box& scene) {
-  const Vec3 dir = normalize(direction);
+  const Vec3 dir = to_vec3(unit(vec(direction)));
   const Vec3 centre = box_centre(scene);
-  const double radius = std::max(length(sub(scene.max, scene.min)) / 2, 1e-3);
+  const double radius = std::max(diagonal(scene) / 2, 1e-3);
   OrthoFit fit;
-  fit.view = light_view(sub(centre, scaled(dir, 2 * radius)), dir);
+  fit.view = light_view(to_vec3(vec(centre) - vec(dir) * (2 * radius)), dir);
   fit.left = fit.bottom = -radius;
   fit.right = fit.top = radius;
   fit.near = 0.5 * radius;
@@ -255,8 +258,8 @@ OrthoFit fit_directional_to_camera(const Vec3& direction, const Box& scene, cons
   if (receivers.empty()) return fit_directional_to_scene(direction, scene);
 
   OrthoFit fit;
-  fit.view = light_view(box_centre(scene), normalize(direction));  // fixed while the camera moves: a stable texel grid
-  fit_depths(bounds_in(fit.view, box_corners(scene)), length(sub(scene.max, scene.min)), fit);
+  fit.view = light_view(box_centre(scene), to_vec3(unit(vec(direction))));  // fixed while the camera moves: a stable texel grid
+  fit_depths(bounds_in(fit.view, box_corners(scene)), diagonal(scene), fit);
   // The receivers lie inside the box, so their bounds are already within the box's.
   const Bounds3 seen = bounds_in(fit.view, receivers);
   const double diameter = slice_sphere_diameter(view.camera, view.aspect, depths);
@@ -271,7 +274,7 @@ OrthoFit fit_directional_to_camera(const Vec3& direction, const Box& scene, cons
 }
 
 Mat4 fit_spot(const Light& light, const Box& scene) {
-  const Mat4 view = light_view(light.position, normalize(light.direction));
+  const Mat4 view = light_view(light.position, to_vec3(unit(vec(light.direction))));
   const Bounds3 box = bounds_in(view, box_corners(scene));
   const double nearest = -box.hi[2], deepest = -box.lo[2];  // depths along the spot's axis
   const double far = std::max(1.01 * deepest, 0.1);
@@ -295,7 +298,7 @@ Box including(const Box& box, std::span<const Vec3> points) {
 
 Box volume_bounds(const MediumVolume& volume) {
   const double r = volume.size[0];
-  const Vec3 half = volume.shape == Shape::box ? scaled(volume.size, 0.5) : volume.shape == Shape::sphere ? Vec3{r, r, r} : volume.size;
+  const Vec3 half = volume.shape == Shape::box ? to_vec3(vec(volume.size) * 0.5) : volume.shape == Shape::sphere ? Vec3{r, r, r} : volume.size;
   const Mat4 to_world = model_matrix(volume.transform);
   std::array<Vec3, 8> corners;
   for (int corner = 0; corner < 8; ++corner) {
