@@ -53,7 +53,7 @@ struct ScatterAccumulator {
   Real transmittance = 1;
 };
 
-// Wronski 2014 (the eq. 14.15): the slice's in-scattered radiance per metre S,
+// Wronski 2014 (RTR4 eq. 14.15): the slice's in-scattered radiance per metre S,
 // taken as constant, times its length dz, attenuated by the transmittance in front of
 // it; then the slice's own extinction. Overestimates light in dense slices.
 template <typename Real>
@@ -62,7 +62,7 @@ void integrate_wronski(ScatterAccumulator<Real>& a, Real in_scatter, Real sigma_
   a.transmittance *= transmittance(sigma_t, dz);
 }
 
-// Hillaire 2015 (the eq. 14.16), energy-conserving: S integrated against the
+// Hillaire 2015 (RTR4 eq. 14.16), energy-conserving: S integrated against the
 // slice's own extinction, ∫₀^dz S e^(−σt t) dt = S·dz·(1 − e^(−σt dz))/(σt dz); exact
 // for constant S and σt, and stable as σt → 0 (it becomes S·dz).
 template <typename Real>
@@ -80,7 +80,7 @@ Real height_fog_optical_depth(Real sigma_base, Real falloff, Real base_height, R
   return sigma_base * at_origin * length * one_minus_exp_over_x(falloff * direction_y * length);
 }
 
-// Depth fog (the eq. 14.12–14.14): the fraction f of the surface's radiance
+// Depth fog (RTR4 eq. 14.12–14.14): the fraction f of the surface's radiance
 // that remains at view distance z; the pixel is f·L_surface + (1 − f)·L_fog.
 template <typename Real>
 Real depth_fog_linear(Real z, Real z_start, Real z_end) {
@@ -105,7 +105,7 @@ constexpr Real kMinTransmittance = Real(1e-6);
 template <typename Real>
 constexpr Real kNegligibleTransmittance = Real(1e-4);
 
-// σt from the transmittance `colour` seen through `distance` metres (the issue's
+// σt from the transmittance `colour` seen through `distance` metres (RTR4
 // eq. 14.23): σt = −ln(colour)/distance.
 template <typename Real>
 Real sigma_t_from_transmittance(Real colour, Real distance) {

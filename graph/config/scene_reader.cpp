@@ -136,7 +136,7 @@ void read_light(const Node& n, Light& l) {
 
 // The medium's σ from one of three inputs: σs and σa directly; albedo + extinction
 // (σs = albedo·σt, σa = σt − σs); or albedo + the transmittance colour seen through a
-// distance (the eq. 14.23: σt = −ln(colour)/distance, colour 0 as opaque as
+// distance (RTR4 eq. 14.23: σt = −ln(colour)/distance, colour 0 as opaque as
 // kMinTransmittance allows).
 void read_coefficients(const Node& n, Medium& m) {
   const bool physical = n.member("sigma_s") || n.member("sigma_a");

@@ -1,4 +1,4 @@
-// depth_fog (the eq. 14.12–14.14): the classic fog factor f of the distance z to
+// depth_fog (RTR4 eq. 14.12–14.14): the classic fog factor f of the distance z to
 // each pixel's surface — linear between `start` and `end`, exponential e^(−density·z), or
 // exponential squared e^(−(density·z)²) — as the transmittance, and (1 − f)·`color` as the
 // in-scattered radiance. z is measured along the pixel's ray from the camera (not view

@@ -38,6 +38,7 @@
 #include "reference/image_render.h"
 #include "reference/renderer.h"
 #include "tests/gpu/backends.h"
+#include "tests/support/adaptive_simpson.h"
 #include "tests/gpu/fog_scenes.h"
 #include "shaders/include/phase_codes.h"
 
@@ -404,16 +405,6 @@ MarchCase point_fog_march(const std::string& variant) {
   return c;
 }
 
-// Adaptive Simpson on [a, b] (absolute tolerance).
-double simpson(const std::function<double(double)>& f, double a, double b, double fa, double fm, double fb, double whole,
-               double tolerance, int depth) {
-  const double m = (a + b) / 2, lm = (a + m) / 2, rm = (m + b) / 2;
-  const double flm = f(lm), frm = f(rm);
-  const double left = (m - a) / 6 * (fa + 4 * flm + fm), right = (b - m) / 6 * (fm + 4 * frm + fb);
-  if (depth <= 0 || std::abs(left + right - whole) <= 15 * tolerance) return left + right + (left + right - whole) / 15;
-  return simpson(f, a, m, fa, flm, fm, left, tolerance / 2, depth - 1) + simpson(f, m, b, fm, frm, fb, right, tolerance / 2, depth - 1);
-}
-
 // The radiance of each pixel (rgb, row 0 at the top) by single scattering along its ray
 // to view depth 20, the in-scattering from physics::in_scattering with `phase`.
 std::vector<Vec3> single_scattering_image(const Scene& scene, const physics::PhaseChoice& phase) {
@@ -435,8 +426,7 @@ std::vector<Vec3> single_scattering_image(const Scene& scene, const physics::Pha
           const Vec3 s = physics::in_scattering(sample, p, to_camera, phase, scene.lights, {0, 0, 0}, scene.media, march, true);
           return std::exp(-sigma_t[ch] * t) * s[ch];
         };
-        const double end = 20 * length, fa = f(0), fm = f(end / 2), fb = f(end);
-        pixel[ch] = simpson(f, 0, end, fa, fm, fb, end / 6 * (fa + 4 * fm + fb), 1e-9, 40);
+        pixel[ch] = test::adaptive_simpson(f, 0, 20 * length, 1e-9, 40);
       }
       image.push_back(pixel);
     }

@@ -20,7 +20,7 @@ TEST(Media, OneMinusExpOverXKeepsFloatPrecisionWhereTheNaiveFormFails) {
     const double exact = exact_one_minus_exp_over_x(double(x));
     EXPECT_NEAR(one_minus_exp_over_x(x) / exact, 1.0, 2e-6) << "x " << x;
   }
-  // The traps (the figures, float32): 1.0014 at 1e-5, 1.19 at 1e-7, 0 at 1e-9, NaN at 0.
+  // The traps (float32): 1.0014 at 1e-5, 1.19 at 1e-7, 0 at 1e-9, NaN at 0.
   auto naive = [](float x) { return (1.0f - std::exp(-x)) / x; };
   EXPECT_GT(std::abs(naive(1e-5f) - 1.0f), 1e-3f);
   EXPECT_GT(std::abs(naive(1e-7f) - 1.0f), 0.1f);

@@ -7,24 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/adaptive_simpson.h"
+
 #include "physics/phase.h"
 
 namespace volgraph::physics {
 namespace {
 
-// Adaptive Simpson on [a, b] (absolute tolerance), for the sharp lobes near g = ±1.
-double simpson(const std::function<double(double)>& f, double a, double b, double fa, double fm, double fb, double whole,
-               double tolerance, int depth) {
-  const double m = (a + b) / 2, lm = (a + m) / 2, rm = (m + b) / 2;
-  const double flm = f(lm), frm = f(rm);
-  const double left = (m - a) / 6 * (fa + 4 * flm + fm), right = (b - m) / 6 * (fm + 4 * frm + fb);
-  if (depth <= 0 || std::abs(left + right - whole) <= 15 * tolerance) return left + right + (left + right - whole) / 15;
-  return simpson(f, a, m, fa, flm, fm, left, tolerance / 2, depth - 1) + simpson(f, m, b, fm, frm, fb, right, tolerance / 2, depth - 1);
-}
-double integrate(const std::function<double(double)>& f, double a, double b) {
-  const double fa = f(a), fm = f((a + b) / 2), fb = f(b);
-  return simpson(f, a, b, fa, fm, fb, (b - a) / 6 * (fa + 4 * fm + fb), 1e-11, 60);
-}
+// Fine enough for the sharp lobes near g = ±1.
+double integrate(const std::function<double(double)>& f, double a, double b) { return test::adaptive_simpson(f, a, b, 1e-11, 60); }
 
 // ∫ p dω = 2π ∫₋₁¹ p(μ) dμ, and the mean cosine ∫ μ p dω.
 double sphere_integral(const std::function<double(double)>& p) { return 2 * M_PI * integrate(p, -1, 1); }
