@@ -162,7 +162,10 @@ SlotHandle PassTable::output(std::string name, ResourceKind kind, Usage usage, F
 }
 
 SlotHandle PassTable::output_like(std::string name, SlotHandle like, Usage usage, std::string doc) {
-  return add_slot(slot_out_like(std::move(name), decl.slots.at(like.index).name, usage, std::move(doc)), {});
+  const SlotDecl& source = decl.slots.at(like.index);
+  SlotDecl slot = slot_out_like(std::move(name), source.name, usage, std::move(doc));
+  slot.kind = source.kind;  // the kind is the source's; format and size follow the resource bound to it
+  return add_slot(std::move(slot), {});
 }
 
 SlotHandle PassTable::inout(std::string name, ResourceKind kind, Usage usage, std::string doc) {
@@ -170,7 +173,10 @@ SlotHandle PassTable::inout(std::string name, ResourceKind kind, Usage usage, st
 }
 
 SlotHandle PassTable::history(std::string name, SlotHandle output, std::string doc) {
-  return add_slot(slot_history(std::move(name), decl.slots.at(output.index).name, std::move(doc)), {});
+  const SlotDecl& source = decl.slots.at(output.index);
+  SlotDecl slot = slot_history(std::move(name), source.name, std::move(doc));
+  slot.kind = source.kind;  // last frame's version of that output: the same kind
+  return add_slot(std::move(slot), {});
 }
 
 SlotHandle PassTable::internal(std::string name, ResourceKind kind, Format format, SizeSpec size, std::string doc) {

@@ -1,6 +1,8 @@
 // The executor runs a compiled plan through the backend interface, on each backend:
 // exact values for a graph whose answer is known, the same image under every debug
 // switch, tone maps equal to the CPU twin, GPU times per pass, validation silent.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "graph/config/config.h"
@@ -81,6 +83,49 @@ TEST_P(ExecutorTest, LambertPlaneRendersRhoEOverPi) {
   const Texels t = render(c, {});
   for (size_t i = 0; i < t.rgba.size(); i += 4) {
     for (size_t ch = 0; ch < 3; ++ch) ASSERT_EQ(t.rgba[i + ch], 0.5f) << "texel " << i / 4;
+  }
+}
+
+// A Lambertian plane whose ρE/π no fp16 value holds (ρ 0.8, 0.3, 0.7 under E 1, 2.5, 0.9):
+// the default rgba16_float colour holds it within one fp16 step (Vulkan lets the conversion
+// round toward zero: lavapipe truncates), and with the colour overridden to rgba32_float
+// the plane renders ρE/π to float precision (2 ulp relative).
+std::string inexact_lambert_plane(const std::string& color_format) {
+  return R"({
+    "output": { "size": [16, 12] },
+    "scene": {
+      "camera": { "position": [0, 3, 0.001], "target": [0, 0, 0], "fov_y_deg": 30 },
+      "materials": { "m": { "albedo": [0.8, 0.3, 0.7] } },
+      "objects": [ { "shape": "plane", "size": [100, 1, 100], "material": "m" } ],
+      "lights": [ { "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 2.5, 0.9] } ] },
+    "graph": { "passes": [
+      { "name": "lit", "type": "scene")" +
+         (color_format.empty() ? std::string() : R"(, "outputs": { "color": { "format": ")" + color_format + R"(" } })") + R"( },
+      { "name": "out", "type": "composite", "variant": "none", "inputs": { "color": "lit.color" } } ],
+      "outputs": ["out.output"] } })";
+}
+
+double fp16_step_at(double v) { return std::ldexp(1.0, std::ilogb(v) - 10); }
+
+TEST_P(ExecutorTest, LambertPlaneIsWithinOneFp16StepOfRhoEOverPi) {
+  const LoadedConfig c = load_config_text("lambert.json", inexact_lambert_plane(""), registry_);
+  const Texels t = render(c, {});
+  const double want[3] = {0.8 / M_PI, 0.75 / M_PI, 0.63 / M_PI};
+  for (size_t i = 0; i < t.rgba.size(); i += 4) {
+    for (size_t ch = 0; ch < 3; ++ch) {
+      ASSERT_LT(std::abs(t.rgba[i + ch] - want[ch]), fp16_step_at(want[ch])) << "texel " << i / 4 << " ch " << ch;
+    }
+  }
+}
+
+TEST_P(ExecutorTest, LambertPlaneInRgba32fIsRhoEOverPiToFloatPrecision) {
+  const LoadedConfig c = load_config_text("lambert.json", inexact_lambert_plane("rgba32_float"), registry_);
+  const Texels t = render(c, {});
+  const double want[3] = {0.8 / M_PI, 0.75 / M_PI, 0.63 / M_PI};
+  for (size_t i = 0; i < t.rgba.size(); i += 4) {
+    for (size_t ch = 0; ch < 3; ++ch) {
+      ASSERT_NEAR(t.rgba[i + ch], want[ch], 2.4e-7 * want[ch]) << "texel " << i / 4 << " ch " << ch;
+    }
   }
 }
 
