@@ -1,5 +1,6 @@
 #include "passes/plumbing/gltf.h"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
 #include <stdexcept>
@@ -183,6 +184,25 @@ bool keep_encoded(tinygltf::Image* image, const int index, std::string* error, s
   return true;
 }
 
+void note_once(std::vector<std::string>& notes, std::string note) {
+  if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(std::move(note));
+}
+
+// Materials' features the passes do not draw: extensions and alpha modes other than opaque.
+std::vector<std::string> ignored_features(const tinygltf::Model& m) {
+  std::vector<std::string> notes;
+  for (const tinygltf::Material& mat : m.materials) {
+    for (const auto& [extension, value] : mat.extensions) note_once(notes, extension + " (ignored: drawn opaque)");
+    if (!mat.alphaMode.empty() && mat.alphaMode != "OPAQUE") note_once(notes, "alphaMode " + mat.alphaMode + " (drawn opaque)");
+  }
+  for (const tinygltf::Mesh& mesh : m.meshes) {
+    for (const tinygltf::Primitive& p : mesh.primitives) {
+      if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != -1) note_once(notes, "primitive mode " + std::to_string(p.mode) + " (skipped: triangles only)");
+    }
+  }
+  return notes;
+}
+
 }  // namespace
 
 size_t GltfModel::triangle_count() const {
@@ -200,7 +220,11 @@ GltfModel load_gltf(const std::string& path) {
   const bool ok = binary ? loader.LoadBinaryFromFile(&m, &error, &warning, path)
                          : loader.LoadASCIIFromFile(&m, &error, &warning, path);
   if (!ok) fail("malformed glTF: " + (error.empty() ? std::string("tinygltf could not read it") : error));
+  for (const std::string& extension : m.extensionsRequired) {
+    fail("the file requires the glTF extension " + extension + ", which volgraph does not support");
+  }
   GltfModel model;
+  model.ignored = ignored_features(m);
   std::function<void(int, const Mat4&, int)> visit = [&](int node, const Mat4& parent, int depth) {
     if (node < 0 || size_t(node) >= m.nodes.size() || depth > 64) fail("the node hierarchy is broken");
     const tinygltf::Node& n = m.nodes[size_t(node)];

@@ -38,10 +38,14 @@ struct GltfImage {
 struct GltfModel {
   std::vector<GltfPrimitive> primitives;
   std::vector<GltfImage> images;
+  // What the file uses that volgraph does not render, each once, e.g.
+  // "KHR_materials_transmission (drawn opaque)"; empty when everything is drawn as specified.
+  std::vector<std::string> ignored;
   size_t triangle_count() const;
 };
 
-// Throws std::runtime_error with what is wrong with the file.
+// Throws std::runtime_error with what is wrong with the file, or naming the extension when
+// the file requires one volgraph does not support (glTF 2.0 §3.12: a loader must refuse it).
 GltfModel load_gltf(const std::string& path);
 
 }  // namespace volgraph::plumbing

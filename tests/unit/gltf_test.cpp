@@ -1,5 +1,7 @@
 // glTF loading (tinygltf): the shipped sample models' triangle counts (../shared/assets/
-// gltf/SOURCES.md), node transforms, unit normals, and a broken file named as such.
+// gltf/SOURCES.md), node transforms, unit normals, a broken file named as such, every model
+// under ../shared/assets/gltf/ loading with what it uses and volgraph does not draw named, and
+// a file requiring an unsupported extension refused with the extension's name.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -99,6 +101,43 @@ TEST(Gltf, ABrokenFileIsMalformed) {
     FAIL() << "expected an error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("malformed glTF"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
+// Every model in the shared assets loads: triangles with finite positions, and the features
+// volgraph does not draw named (the transmission samples' KHR_materials_transmission).
+TEST(Gltf, EverySharedModelLoadsAndNamesWhatItIgnores) {
+  int models = 0;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(kAssets)) {
+    const std::string ext = e.path().extension().string();
+    if (ext != ".glb" && ext != ".gltf") continue;
+    ++models;
+    const std::string name = e.path().filename().string();
+    const GltfModel m = load_gltf(e.path().string());
+    EXPECT_GT(m.triangle_count(), 0u) << name;
+    for (const GltfPrimitive& p : m.primitives) {
+      for (float v : p.vertices) ASSERT_TRUE(std::isfinite(v)) << name;
+    }
+    const bool transmissive = name == "AttenuationTest.glb" || name == "GlassVaseFlowers.glb" ||
+                              name == "TransmissionTest.glb" || name == "GlassBrokenWindow.glb";
+    const bool names_transmission =
+        std::any_of(m.ignored.begin(), m.ignored.end(), [](const std::string& s) { return s.find("KHR_materials_transmission") == 0; });
+    EXPECT_EQ(names_transmission, transmissive) << name;
+    if (name == "zdm2.glb" || name == "Suzanne.gltf") EXPECT_TRUE(m.ignored.empty()) << name << ": " << m.ignored.front();
+  }
+  EXPECT_EQ(models, 9);  // ../shared/assets/gltf/SOURCES.md lists nine models
+}
+
+TEST(Gltf, ARequiredExtensionVolgraphLacksIsRefusedByName) {
+  const auto path = std::filesystem::temp_directory_path() / ("volgraph_draco_" + std::to_string(::getpid()) + ".gltf");
+  std::ofstream(path) << R"({ "asset": { "version": "2.0" }, "extensionsUsed": ["KHR_draco_mesh_compression"],
+    "extensionsRequired": ["KHR_draco_mesh_compression"], "scenes": [ { "nodes": [] } ], "scene": 0 })";
+  try {
+    load_gltf(path.string());
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("requires the glTF extension KHR_draco_mesh_compression"), std::string::npos) << e.what();
   }
   std::filesystem::remove(path);
 }
