@@ -107,7 +107,7 @@ pass_tests(clear
 # copy: only through configs (tests/clear_composite.json, refraction_copy.json) below.
 
 # ---- Tests that load shipped configs: every pass type in them ----------------------------
-each_shipped_config("(^|/)(ConfigRender|CrossBackend)\\.[A-Za-z]+/")   # golden images, cross-backend
+each_shipped_config("(^|/)(ConfigRender|CrossBackend|TemporalFirstFrame)\\.[A-Za-z]+/")   # golden images, cross-backend, first frames
 config_tests("^WebGpuResources\\.CreatedObjects" SHIPPED)                  # every shipped config
 config_tests("(^|/)GraphResourcesTest\\.PlanMemory" demo_primitives.json demo_point_lights.json refraction_copy.json)
 config_tests("^ShippedConfigs\\.PointLights" demo_point_lights.json)
