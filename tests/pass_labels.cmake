@@ -27,7 +27,7 @@ set(froxel_opacity_shadow "(^|/)FroxelFog\\.(StressLimits|ADenseBoxShadowsTheFog
 # tests/gpu/temporal_fog_test.cpp: froxel_voxelize → froxel_scatter → froxel_temporal.
 set(temporal_froxels "(^|/)TemporalFog\\.(TheHistoryPair|AStillCameraWithoutJitter|AStillCameraConvergesToTheAverage|TheDefaultBlend|AfterTheCameraRises|AfterTheCameraMovesTheReprojectedFroxel|StressScenes|PassesAfterATemporalPass)")
 # ... scene → raymarch_fog → pixel_temporal.
-set(temporal_pixels "(^|/)TemporalFog\\.(AfterTheCameraMovesTheReprojectedPixel|AStillCameraConvergesForThePerPixelMarch|StressScenes|PassesAfterATemporalPass|APassReadingAHistoryPair)")
+set(temporal_pixels "(^|/)(TemporalFog\\.(AfterTheCameraMovesTheReprojectedPixel|AStillCameraConvergesForThePerPixelMarch|StressScenes|PassesAfterATemporalPass|APassReadingAHistoryPair)|PixelTemporalFirstFrame\\.)")
 # tests/gpu/raymarch_fog_test.cpp: scene → raymarch_fog → fog_apply → composite.
 set(raymarch "(^|/)RaymarchFog\\.")
 # tests/gpu/closed_fog_test.cpp: scene → depth_fog | height_fog | analytic_fog → fog_apply → composite.

@@ -121,6 +121,49 @@ TEST_P(TemporalFirstFrame, IsBitIdenticalToTheGraphWithoutTemporalPasses) {
   for (size_t k = 0; k < a.rgba.size(); ++k) ASSERT_EQ(a.rgba[k], b.rgba[k]) << config() << " value " << k;
 }
 
+// pixel_temporal's own outputs on the first frame, at its default parameters, against
+// the raymarch_fog outputs it blends (froxel_temporal's: TemporalFog.TheHistoryPair…):
+// the rgb of the in-scattering and the transmittance, bit for bit, jitter on.
+class PixelTemporalFirstFrame : public OnEachBackend<> {
+ protected:
+  Backend backend() const override { return GetParam(); }
+  void SetUp() override {
+    register_builtin_passes(registry_);
+    OnEachBackend::SetUp();
+  }
+  PassRegistry registry_;
+};
+
+TEST_P(PixelTemporalFirstFrame, PassesThisFramesMarchThroughBitForBit) {
+  const LoadedConfig c = load_config_text("pixel_temporal_first_frame.json", R"({ "output": { "size": [32, 24] },
+  "scene": { "camera": { "position": [0, 1, 0], "target": [0, 1, -1], "fov_y_deg": 50, "near": 0.1, "far": 100 },
+             "materials": { "grey": { "albedo": [0.5, 0.5, 0.5] } },
+             "objects": [ { "shape": "box", "size": [1, 1.5, 1], "material": "grey", "transform": { "translate": [-0.5, 1, -4] } } ],
+             "lights": [ { "type": "point", "position": [1.6, 2.2, -3.5], "intensity": [20, 20, 20] } ],
+             "media": { "height_fog": { "sigma_s": [0.3, 0.3, 0.3], "sigma_a": [0.02, 0.02, 0.02], "base_height": 0, "falloff": 0.8 } } },
+  "graph": { "passes": [
+    { "name": "lit", "type": "scene" },
+    { "name": "fog_march", "type": "raymarch_fog", "params": { "steps": 8, "max_distance": 12, "jitter": true }, "inputs": { "depth": "lit.depth" } },
+    { "name": "fog_temporal", "type": "pixel_temporal",
+      "inputs": { "depth": "lit.depth", "fog_scattering": "fog_march.fog_scattering", "fog_transmittance": "fog_march.fog_transmittance" } } ],
+    "outputs": ["fog_temporal.scattering", "fog_temporal.transmittance", "fog_march.fog_scattering", "fog_march.fog_transmittance"] } })",
+                                           registry_);
+  Executor executor(device(), c.graph, &c.config.scene, {});
+  executor.run_frame();
+  for (uint32_t k = 0; k < 2; ++k) {
+    const Texels blended = executor.read_output(k), marched = executor.read_output(k + 2);
+    ASSERT_EQ(blended.rgba.size(), marched.rgba.size());
+    size_t nonzero = 0;
+    for (size_t i = 0; i < blended.rgba.size(); i += 4) {
+      for (size_t ch = 0; ch < 3; ++ch) ASSERT_EQ(blended.rgba[i + ch], marched.rgba[i + ch]) << "output " << k << " texel " << i / 4;
+      nonzero += marched.rgba[i] != 0;
+    }
+    EXPECT_GT(nonzero, blended.rgba.size() / 8) << "output " << k << ": the march has something to pass through";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, PixelTemporalFirstFrame, ::testing::ValuesIn(gpu_backends()), backend_test_name);
+
 std::string test_name(const ::testing::TestParamInfo<ConfigOnBackend>& info) {
   return config_test_name(std::get<0>(info.param)) + "_" + std::string(backend_name(std::get<1>(info.param)));
 }
