@@ -27,7 +27,7 @@ set(froxel_opacity_shadow "(^|/)FroxelFog\\.(StressLimits|ADenseBoxShadowsTheFog
 # tests/gpu/temporal_fog_test.cpp: froxel_voxelize → froxel_scatter → froxel_temporal.
 set(temporal_froxels "(^|/)TemporalFog\\.(TheHistoryPair|AStillCameraWithoutJitter|AStillCameraConvergesToTheAverage|TheDefaultBlend|AfterTheCameraRises|AfterTheCameraMovesTheReprojectedFroxel|StressScenes|PassesAfterATemporalPass)")
 # ... scene → raymarch_fog → pixel_temporal.
-set(temporal_pixels "(^|/)TemporalFog\\.(AfterTheCameraMovesTheReprojectedPixel|AStillCameraConvergesForThePerPixelMarch|StressScenes|PassesAfterATemporalPass|APassReadingAHistoryPair)")
+set(temporal_pixels "(^|/)(TemporalFog\\.(AfterTheCameraMovesTheReprojectedPixel|AStillCameraConvergesForThePerPixelMarch|StressScenes|PassesAfterATemporalPass|APassReadingAHistoryPair)|PixelTemporalFirstFrame\\.)")
 # tests/gpu/raymarch_fog_test.cpp: scene → raymarch_fog → fog_apply → composite.
 set(raymarch "(^|/)RaymarchFog\\.")
 # tests/gpu/closed_fog_test.cpp: scene → depth_fog | height_fog | analytic_fog → fog_apply → composite.
@@ -107,7 +107,7 @@ pass_tests(clear
 # copy: only through configs (tests/clear_composite.json, refraction_copy.json) below.
 
 # ---- Tests that load shipped configs: every pass type in them ----------------------------
-each_shipped_config("(^|/)(ConfigRender|CrossBackend)\\.[A-Za-z]+/")   # golden images, cross-backend
+each_shipped_config("(^|/)(ConfigRender|CrossBackend|TemporalFirstFrame)\\.[A-Za-z]+/")   # golden images, cross-backend, first frames
 config_tests("^WebGpuResources\\.CreatedObjects" SHIPPED)                  # every shipped config
 config_tests("(^|/)GraphResourcesTest\\.PlanMemory" demo_primitives.json demo_point_lights.json refraction_copy.json)
 config_tests("^ShippedConfigs\\.PointLights" demo_point_lights.json)

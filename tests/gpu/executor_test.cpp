@@ -195,7 +195,9 @@ TEST_P(ExecutorTest, AlbedoTextureMultipliesTheFactorInLinearLight) {
 TEST_P(ExecutorTest, ShadowMappedPlaneDoesNotShadowItself) {
   const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/lambert_plane.json", registry_);
   const Texels t = render(c, {});
-  for (size_t i = 0; i < t.rgba.size(); i += 4) ASSERT_EQ(t.rgba[i], 0.5f) << "texel " << i / 4;
+  for (size_t i = 0; i < t.rgba.size(); i += 4) {
+    for (size_t ch = 0; ch < 3; ++ch) ASSERT_EQ(t.rgba[i + ch], 0.5f) << "texel " << i / 4 << " ch " << ch;
+  }
 }
 
 // DESIGN.md: a surface in full shadow renders only what other terms give it — here the

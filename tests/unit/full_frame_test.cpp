@@ -34,6 +34,17 @@ TEST(FullFrame, AliasingIsWithinFivePercentOfTheLowerBound) {
   EXPECT_GT(m.persistent_bytes, 0u);  // froxel and cloud history, atmosphere LUT caches
 }
 
+// The memory table of the README (estimated requirements, bench_compile's figures):
+// aliasing reaches the lower bound exactly, and --no-alias allocates the unaliased sum.
+TEST(FullFrame, AliasedMemoryEqualsTheLowerBound) {
+  const auto frame = fixtures::full_frame();
+  const MemoryStats aliased = compile(frame.graph).memory;
+  EXPECT_EQ(aliased.aliased_bytes, aliased.lower_bound_bytes) << placement_method_name(aliased.method);
+  const MemoryStats unaliased = compile(frame.graph, {.alias = false}).memory;
+  EXPECT_EQ(unaliased.aliased_bytes, unaliased.unaliased_bytes);
+  EXPECT_EQ(unaliased.lower_bound_bytes, aliased.lower_bound_bytes);
+}
+
 TEST(FullFrame, ASceneWithoutMediaAtmosphereCloudsOrTranslucencyCullsTheirPasses) {
   const SceneFeatures scene = feature_bit(SceneFeature::geometry) | feature_bit(SceneFeature::lights) |
                               feature_bit(SceneFeature::shadow_casting_light);
