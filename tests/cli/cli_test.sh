@@ -131,6 +131,13 @@ hostile_case() {
         --threads 2 2>"$tmp/err" || fail "reference exit $? (124: it ran past 20 s): $(cat "$tmp/err")"
       grep -q "warning: .*under-resolved" "$tmp/err" || fail "no under-resolved warning: $(cat "$tmp/err")"
       ;;
+    undecodable_texture)  # a texture that fails only when decoded: bad input (exit 2) at render time, nothing written
+      for command in render reference; do
+        expect_exit 2 "textures/bad_zlib.png: error: not an image volgraph reads" \
+          "$volgraph" $command "$(dirname "$0")/hostile/undecodable_texture.json" --size 32x18 -o "$tmp/x.pfm"
+      done
+      no_files_but
+      ;;
     *) fail "unknown hostile case $1" ;;
   esac
 }
