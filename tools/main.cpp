@@ -153,6 +153,12 @@ std::string timings_json(const std::vector<PassTiming>& timings, const rhi::Devi
   return o.str();
 }
 
+// The host ran out of memory allocating what the message names: not the input's fault
+// (exit 1), said in the user's terms rather than as std::bad_alloc.
+struct OutOfHostMemory : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct Dump {
   uint32_t resource;
   std::string file;
@@ -290,7 +296,14 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
   settings.samples_per_axis = uint32_t(args.samples_per_axis);
   settings.threads = unsigned(args.threads);
   settings.progress = isatty(STDERR_FILENO) ? &std::cerr : nullptr;
-  const reference::ReferenceImage image = reference::render_image(*renderer, settings);
+  reference::ReferenceImage image;
+  try {
+    image = reference::render_image(*renderer, settings);
+  } catch (const std::bad_alloc&) {
+    const double mib = double(settings.width) * settings.height * 3 * sizeof(double) / (1 << 20);
+    throw OutOfHostMemory("the reference image, " + std::to_string(settings.width) + "×" + std::to_string(settings.height) +
+                          " pixels of 3 doubles (" + std::to_string(int64_t(std::ceil(mib))) + " MiB)");
+  }
   Image out{image.width, image.height, std::vector<float>(size_t(image.width) * image.height * 4, 1.0f)};
   for (size_t p = 0; p < size_t(image.width) * image.height; ++p) {
     for (size_t c = 0; c < 3; ++c) out.rgba[p * 4 + c] = float(image.rgb[p * 3 + c]);
@@ -453,6 +466,9 @@ int main(int argc, char** argv) {
     return kFailure;
   } catch (const IoError& e) {
     std::cerr << "volgraph: cannot write " << e.what() << "\n";
+    return kFailure;
+  } catch (const OutOfHostMemory& e) {
+    std::cerr << "volgraph: out of host memory: " << e.what() << "\n";
     return kFailure;
   } catch (const std::bad_alloc&) {
     std::cerr << "volgraph: out of host memory (" << args.command << " " << args.config << ": an allocation failed)\n";
