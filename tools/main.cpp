@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <cmath>
 #include <iomanip>
 #include <sstream>

@@ -621,13 +621,13 @@ class Wiring {
     if (config_.outputs.empty()) {
       diags_.error({config_.file, "/graph/outputs", 0}, "the graph has no outputs; expected \"outputs\": [\"pass.slot\", …]");
     }
-    for (const GraphOutput& o : config_.outputs) {
-      outputs_.push_back(resolve_source(o.source, o.where));
-      const std::optional<SlotRef>& ref = outputs_.back();
-      if (ref && decls_[ref->pass]->slots[size_t(ref->slot)].kind == ResourceKind::buffer) {
-        diags_.error(o.where, "\"" + o.source + "\" is a buffer; graph outputs are images (the first is the frame -o writes; "
-                              "--dump PASS.SLOT=FILE.bin writes a buffer)");
-      }
+    for (const GraphOutput& o : config_.outputs) outputs_.push_back(resolve_source(o.source, o.where));
+    // The first output is the frame (render -o writes it): an image. Later ones may be
+    // anything a caller reads back.
+    if (!outputs_.empty() && outputs_[0] && decls_[outputs_[0]->pass]->slots[size_t(outputs_[0]->slot)].kind == ResourceKind::buffer) {
+      diags_.error(config_.outputs[0].where, "\"" + config_.outputs[0].source +
+                                                 "\" is a buffer; the first graph output is the frame, an image (--dump "
+                                                 "PASS.SLOT=FILE.bin writes a buffer)");
     }
   }
 
