@@ -16,15 +16,16 @@ std::string system_reason() { return std::strerror(errno); }
 
 }  // namespace
 
-void write_file_checked(const std::string& path, std::span<const std::byte> bytes) {
+void write_file_checked(const std::string& path, std::span<const std::byte> bytes, const std::string& name) {
+  const std::string named = name.empty() ? path : name;
   FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw IoError(path + ": " + system_reason());
+  if (!f) throw IoError(named + ": " + system_reason());
   const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
   const bool flushed = written && std::fflush(f) == 0;
   const std::string reason = flushed ? "" : system_reason();
   const bool closed = std::fclose(f) == 0;
-  if (!flushed) throw IoError(path + ": " + reason);
-  if (!closed) throw IoError(path + ": " + system_reason());
+  if (!flushed) throw IoError(named + ": " + reason);
+  if (!closed) throw IoError(named + ": " + system_reason());
 }
 
 void check_output_target(const std::string& path, const std::string& flag) {
@@ -50,7 +51,7 @@ void OutputFiles::stage(const std::string& path, const std::string& flag, std::s
   const std::string temporary =
       path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(staged_.size()) + target.extension().string();
   staged_.push_back({temporary, path});
-  write_file_checked(temporary, bytes);
+  write_file_checked(temporary, bytes, path);
 }
 
 void OutputFiles::commit() {

@@ -18,8 +18,9 @@ struct IoError : std::runtime_error {
 };
 
 // Writes `bytes` to `path` (created or truncated), checking every fwrite, the fflush and
-// the fclose; throws IoError "PATH: <the system's reason>" when one fails.
-void write_file_checked(const std::string& path, std::span<const std::byte> bytes);
+// the fclose; throws IoError "NAME: <the system's reason>" when one fails, NAME `path`
+// unless given (the target a temporary stands for).
+void write_file_checked(const std::string& path, std::span<const std::byte> bytes, const std::string& name = "");
 
 // Whether `path` can take a file: its folder exists and it is not itself a folder.
 // Throws ConfigError at `flag` (e.g. "-o") with what is wrong.

@@ -138,6 +138,23 @@ hostile_case() {
       done
       no_files_but
       ;;
+    full_disk)  # a write that fails (a one-page tmpfs fills up): exit 1, the target named, no file left at all
+      mkdir "$tmp/full"
+      if ! mount -t tmpfs -o size=4k tmpfs "$tmp/full" 2>/dev/null; then
+        echo "ok (skipped: cannot mount a tmpfs here)"
+        exit 0
+      fi
+      trap 'umount "$tmp/full"; rm -rf "$tmp"' EXIT
+      for out in x.png x.pfm x.exr; do
+        expect_exit 1 "volgraph: cannot write $tmp/full/$out: No space left on device" \
+          "$volgraph" render "$config" --size 320x180 -o "$tmp/full/$out"
+        [ -z "$(ls -A "$tmp/full")" ] || fail "-o $out on a full disk left: $(ls -A "$tmp/full")"
+      done
+      # The frame fits (a page), the dump after it does not: neither is left.
+      expect_exit 1 "volgraph: cannot write $tmp/full/lit.pfm: No space left on device" \
+        "$volgraph" render "$config" --size 8x4 -o "$tmp/full/x.png" --dump "lit.color=$tmp/full/lit.pfm"
+      [ -z "$(ls -A "$tmp/full")" ] || fail "a failed --dump left: $(ls -A "$tmp/full")"
+      ;;
     *) fail "unknown hostile case $1" ;;
   esac
 }
