@@ -19,7 +19,9 @@ namespace volgraph {
 namespace {
 
 // glTF files must load and textures decode: a malformed one is bad input, reported at
-// the object's "file" or the material's "albedo_texture".
+// the object's "file" or the material's "albedo_texture"; and the scene must fit the
+// draws the GPU passes can make (plumbing::kMaxSceneDraws), reported at the first
+// object past them.
 std::vector<ParamProblem> check_models(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
   std::vector<ParamProblem> problems;
   for (const Material& m : scene.materials) {
@@ -30,14 +32,25 @@ std::vector<ParamProblem> check_models(const PassDecl&, const Scene& scene, cons
     where.pointer += "/albedo_texture";
     problems.push_back({"", m.albedo_texture + ": " + problem, where});
   }
+  size_t draws = 0;
   for (const Object& o : scene.objects) {
-    if (o.shape != Shape::gltf) continue;
-    try {
-      plumbing::load_gltf(o.file);
-    } catch (const std::exception& e) {
-      Where where = o.where;
-      where.pointer += "/file";
-      problems.push_back({"", o.file + ": " + e.what(), where});
+    const size_t before = draws;
+    if (o.shape != Shape::gltf) {
+      ++draws;
+    } else {
+      try {
+        draws += plumbing::load_gltf(o.file).primitives.size();
+      } catch (const std::exception& e) {
+        Where where = o.where;
+        where.pointer += "/file";
+        problems.push_back({"", o.file + ": " + e.what(), where});
+      }
+    }
+    if (before <= plumbing::kMaxSceneDraws && draws > plumbing::kMaxSceneDraws) {
+      problems.push_back({"", "the scene's objects make more than " + std::to_string(plumbing::kMaxSceneDraws) +
+                                  " draws from here on (a glTF object one per primitive); at most " +
+                                  std::to_string(plumbing::kMaxSceneDraws) + " are supported",
+                          o.where});
     }
   }
   return problems;

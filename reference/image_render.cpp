@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 namespace volgraph::reference {
@@ -49,7 +50,11 @@ ReferenceImage render_image(const Renderer& renderer, const RenderSettings& sett
   Progress progress(settings.progress, settings.height);
   std::vector<std::thread> workers;
   for (unsigned t = 1; t < threads; ++t) {
-    workers.emplace_back([&] { render_rows(renderer, settings, next_row, progress, image); });
+    try {
+      workers.emplace_back([&] { render_rows(renderer, settings, next_row, progress, image); });
+    } catch (const std::system_error&) {  // the system gives no more threads: render with those it gave
+      break;
+    }
   }
   render_rows(renderer, settings, next_row, progress, image);
   for (std::thread& w : workers) w.join();

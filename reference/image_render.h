@@ -14,7 +14,7 @@ namespace volgraph::reference {
 struct RenderSettings {
   uint32_t width = 320, height = 180;
   uint32_t samples_per_axis = 1;  // sub-pixel samples per axis (spp = its square)
-  unsigned threads = 0;           // 0: std::thread::hardware_concurrency()
+  unsigned threads = 0;           // 0: std::thread::hardware_concurrency(); fewer when the system gives fewer
   std::ostream* progress = nullptr;  // "\rreference: N %" lines while rendering, if set
 };
 

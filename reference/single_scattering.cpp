@@ -35,6 +35,7 @@ class Segment {
   }
 
   Vec3 integrand(double t) const {
+    ++evaluations_;
     const Vec3 x = add(origin_, scaled(direction_, t));
     return times(transmittance(t), source_(x));
   }
@@ -113,7 +114,9 @@ class Segment {
     const Vec3 halves = add(left, right);
     const Vec3 change = add(halves, scaled(whole, -1));
     const double error = max_abs(change);
-    if (depth >= settings_.max_depth || error <= 15 * tolerance || error <= kRoundOff * max_abs(halves)) {
+    if (!std::isfinite(error)) return halves;  // no error estimate to extrapolate with
+    const bool at_floor = depth >= settings_.max_depth || evaluations_ >= settings_.max_evaluations;
+    if (at_floor || error <= 15 * tolerance || error <= kRoundOff * max_abs(halves)) {
       return add(halves, scaled(change, 1.0 / 15));  // Richardson extrapolation
     }
     return add(refine(a, m, fa, flm, fm, left, tolerance / 2, depth + 1), refine(m, b, fm, frm, fb, right, tolerance / 2, depth + 1));
@@ -125,6 +128,7 @@ class Segment {
   Vec3 t_a_;
   const std::function<Vec3(const Vec3&)>& source_;
   const IntegrationSettings& settings_;
+  mutable uint64_t evaluations_ = 0;  // integrand calls so far (IntegrationSettings::max_evaluations)
 };
 
 }  // namespace

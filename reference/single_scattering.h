@@ -33,6 +33,12 @@ struct IntegrationSettings {
   // …but no more than this many per segment.
   uint32_t max_initial_panels = 256;
   uint32_t max_depth = 30;  // bisections of an initial panel
+  // Integrand evaluations one segment's refinement may spend: the floor under it where
+  // the integrand never settles (a point light on the surface a ray ends at: 1/d²
+  // growth and shadow-ray visibility flickering at every scale), so that such a pixel
+  // takes at most this many evaluations; panels refined after it is spent keep their
+  // Richardson estimate. Converging segments use a small fraction of it.
+  uint64_t max_evaluations = uint64_t{1} << 14;
 };
 
 struct RayScattering {

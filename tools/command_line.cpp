@@ -3,6 +3,8 @@
 // and exit 2; `--help` prints kUsage.
 #include "tools/command_line.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -37,7 +39,7 @@ options (plan, validate, render):
 
 options (reference):
   --size WxH                   frame size (overrides output.size)
-  --threads N                  worker threads (default: the hardware's); the image does not depend on it
+  --threads N                  worker threads, at most 256 (default: the hardware's); the image does not depend on it
   --spp N                      samples per pixel on a regular sub-pixel grid, N a square (1, 4, 9, …);
                                default 1: pixel centres, as the GPU samples
   --tolerance X                relative error allowed in each stretch of the media integral (default 1e-5)
@@ -73,34 +75,44 @@ void flag(CLI::App& app, const std::string& name, std::function<void()> set) {
 
 std::string quoted(const std::string& text) { return "\"" + text + "\""; }
 
-Extent size_value(const std::string& text) {
-  unsigned w = 0, h = 0;
-  char x = 0, extra = 0;
-  const bool parsed = std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &extra) == 3 && (x == 'x' || x == 'X');
-  if (!parsed || w < 1 || h < 1 || w > 16384 || h > 16384) {
-    throw UsageError("--size expects WxH with each side in [1, 16384], got " + quoted(text));
+// Digits only (no sign, space or other text), at most `max`: the number, else nullopt.
+std::optional<unsigned long> digits_value(const std::string& text, unsigned long max) {
+  if (text.empty() || text.size() > 9 || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); })) {
+    return std::nullopt;
   }
-  return Extent{w, h, 1};
+  const unsigned long n = std::stoul(text);
+  if (n > max) return std::nullopt;
+  return n;
+}
+
+// WxH: two runs of digits around one x, each side in [1, 16384].
+Extent size_value(const std::string& text) {
+  const size_t x = text.find_first_of("xX");
+  const auto w = x == std::string::npos ? std::nullopt : digits_value(text.substr(0, x), 16384);
+  const auto h = x == std::string::npos ? std::nullopt : digits_value(text.substr(x + 1), 16384);
+  if (!w || !h || *w < 1 || *h < 1) {
+    throw UsageError("--size expects WxH, digits only, each side in [1, 16384], got " + quoted(text));
+  }
+  return Extent{uint32_t(*w), uint32_t(*h), 1};
 }
 
 // --frames, --device: a whole number in [low, 100000].
 int whole_number(const std::string& flag_name, const std::string& text, long low) {
-  char* end = nullptr;
-  const long n = std::strtol(text.c_str(), &end, 10);
-  if (*end || n < low || n > 100000) {
+  const std::optional<unsigned long> n = digits_value(text, 100000);
+  if (!n || long(*n) < low) {
     throw UsageError(flag_name + " expects a whole number ≥ " + std::to_string(low) + ", got " + quoted(text));
   }
-  return int(n);
+  return int(*n);
 }
 
-// --threads, --spp: a whole number in [1, 4096].
-long count_value(const std::string& flag_name, const std::string& text) {
-  char* end = nullptr;
-  const long n = std::strtol(text.c_str(), &end, 10);
-  if (*end || text.empty() || n < 1 || n > 4096) {
-    throw UsageError(flag_name + " expects a whole number in [1, 4096], got " + quoted(text));
+// --threads: a whole number in [1, kMaxThreads]; --spp: in [1, 4096].
+constexpr long kMaxThreads = 256;
+long count_value(const std::string& flag_name, const std::string& text, long max = 4096) {
+  const std::optional<unsigned long> n = digits_value(text, (unsigned long)max);
+  if (!n || *n < 1) {
+    throw UsageError(flag_name + " expects a whole number in [1, " + std::to_string(max) + "], got " + quoted(text));
   }
-  return n;
+  return long(*n);
 }
 
 // --spp N, N a square: its root, the samples along each axis of a pixel.
@@ -143,8 +155,15 @@ void plan_options(CLI::App& app, Args& args) {
   flag(app, "--dot", [&] { args.dot = true; });
 }
 
+// An option that names one file: given twice, which one was meant is unclear.
+void once(std::string& kept, const std::string& flag_name, const std::string& value) {
+  if (!kept.empty()) throw UsageError(flag_name + " given twice (\"" + kept + "\" and \"" + value + "\"); expected one file");
+  if (value.empty()) throw UsageError(flag_name + " expects a file name, got an empty one");
+  kept = value;
+}
+
 void output_option(CLI::App& app, Args& args) {
-  value_option(app, "-o,--output", [&](const std::string& v) { args.output = v; });
+  value_option(app, "-o,--output", [&](const std::string& v) { once(args.output, "-o", v); });
 }
 
 void render_options(CLI::App& app, Args& args) {
@@ -152,13 +171,13 @@ void render_options(CLI::App& app, Args& args) {
   value_option(app, "--device", [&](const std::string& v) { args.device = whole_number("--device", v, 0); });
   value_option(app, "--frames", [&](const std::string& v) { args.frames = whole_number("--frames", v, 1); });
   flag(app, "--timings", [&] { args.timings = true; });
-  value_option(app, "--timings-out", [&](const std::string& v) { args.timings_out = v; });
+  value_option(app, "--timings-out", [&](const std::string& v) { once(args.timings_out, "--timings-out", v); });
   flag(app, "--validation", [&] { args.validation = true; });
   value_option(app, "--dump", [&](const std::string& v) { args.dumps.push_back(v); });
 }
 
 void reference_options(CLI::App& app, Args& args) {
-  value_option(app, "--threads", [&](const std::string& v) { args.threads = int(count_value("--threads", v)); });
+  value_option(app, "--threads", [&](const std::string& v) { args.threads = int(count_value("--threads", v, kMaxThreads)); });
   value_option(app, "--spp", [&](const std::string& v) { args.samples_per_axis = samples_per_axis(v); });
   value_option(app, "--tolerance", [&](const std::string& v) { args.tolerance = tolerance_value(v); });
 }

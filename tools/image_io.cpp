@@ -7,17 +7,20 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <stdexcept>
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
 #include "graph/diagnostics.h"
 #include "physics/srgb.h"
+#include "tools/output_files.h"
 
 namespace volgraph {
 namespace {
@@ -26,16 +29,26 @@ namespace {
   throw ConfigError({{{"<command line>", flag + " " + path, 0}, message}});
 }
 
-bool write_png(const std::string& file, const Image& image) {
-  std::vector<uint8_t> bytes(size_t(image.width) * image.height * 4);
-  for (size_t i = 0; i < bytes.size(); ++i) {
-    const float v = (i % 4 == 3) ? std::clamp(image.rgba[i], 0.0f, 1.0f) : physics::srgb_encode(image.rgba[i]);
-    bytes[i] = uint8_t(std::lround(v * 255.0f));
-  }
-  return stbi_write_png(file.c_str(), int(image.width), int(image.height), 4, bytes.data(), int(image.width * 4)) != 0;
+void append(std::vector<std::byte>& out, const void* data, size_t size) {
+  const auto* bytes = static_cast<const std::byte*>(data);
+  out.insert(out.end(), bytes, bytes + size);
 }
 
-bool write_exr(const std::string& file, const Image& image) {
+std::vector<std::byte> encode_png(const Image& image) {
+  std::vector<uint8_t> texels(size_t(image.width) * image.height * 4);
+  for (size_t i = 0; i < texels.size(); ++i) {
+    const float v = (i % 4 == 3) ? std::clamp(image.rgba[i], 0.0f, 1.0f) : physics::srgb_encode(image.rgba[i]);
+    texels[i] = uint8_t(std::lround(v * 255.0f));
+  }
+  std::vector<std::byte> out;
+  auto collect = [](void* context, void* data, int size) { append(*static_cast<std::vector<std::byte>*>(context), data, size_t(size)); };
+  if (!stbi_write_png_to_func(collect, &out, int(image.width), int(image.height), 4, texels.data(), int(image.width * 4))) {
+    throw std::runtime_error("the PNG encoder failed");
+  }
+  return out;
+}
+
+std::vector<std::byte> encode_exr(const Image& image) {
   Imf::Header header(int(image.width), int(image.height));
   Imf::FrameBuffer frame;
   const char* names[] = {"R", "G", "B", "A"};
@@ -44,25 +57,32 @@ bool write_exr(const std::string& file, const Image& image) {
     header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
     frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + 4 * c, 16, size_t(image.width) * 16));
   }
-  Imf::OutputFile out(file.c_str(), header);
-  out.setFrameBuffer(frame);
-  out.writePixels(int(image.height));
-  return true;
+  Imf::StdOSStream stream;
+  {
+    Imf::OutputFile out(stream, header);
+    out.setFrameBuffer(frame);
+    out.writePixels(int(image.height));
+  }  // the file is complete once closed
+  const std::string bytes = stream.str();
+  std::vector<std::byte> result;
+  append(result, bytes.data(), bytes.size());
+  return result;
 }
 
 // PFM stores scanlines bottom to top: the last one written is row 0, the top.
-bool write_pfm(const std::string& file, const Image& image) {
-  FILE* f = std::fopen(file.c_str(), "wb");
-  if (!f) return false;
-  bool ok = std::fprintf(f, "PF\n%u %u\n-1.0\n", image.width, image.height) > 0;
+std::vector<std::byte> encode_pfm(const Image& image) {
+  const std::string header = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+  std::vector<std::byte> out;
+  out.reserve(header.size() + size_t(image.width) * image.height * 12);
+  append(out, header.data(), header.size());
   std::vector<float> row(size_t(image.width) * 3);
-  for (uint32_t y = image.height; ok && y-- > 0;) {
+  for (uint32_t y = image.height; y-- > 0;) {
     for (uint32_t x = 0; x < image.width; ++x) {
       for (int c = 0; c < 3; ++c) row[3 * x + c] = image.rgba[4 * (size_t(y) * image.width + x) + c];
     }
-    ok = std::fwrite(row.data(), sizeof(float), row.size(), f) == row.size();
+    append(out, row.data(), row.size() * sizeof(float));
   }
-  return std::fclose(f) == 0 && ok;
+  return out;
 }
 
 }  // namespace
@@ -76,26 +96,22 @@ std::optional<ImageFormat> image_format_for(const std::string& path) {
   return std::nullopt;
 }
 
+std::vector<std::byte> encode_image(const Image& image, ImageFormat format) {
+  switch (format) {
+    case ImageFormat::png: return encode_png(image);
+    case ImageFormat::exr: return encode_exr(image);
+    case ImageFormat::pfm: return encode_pfm(image);
+  }
+  return {};
+}
+
 void write_image(const std::string& path, const Image& image, const std::string& flag) {
   const auto format = image_format_for(path);
   if (!format) fail(flag, path, "unsupported image type; expected a .png, .exr or .pfm file name");
-  const std::filesystem::path target(path);
-  std::error_code ec;
-  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
-  if (!std::filesystem::is_directory(folder, ec)) fail(flag, path, "folder " + folder.string() + " does not exist");
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid()) + target.extension().string();
-  bool written = false;
-  std::string why = "cannot write it";
-  try {
-    written = *format == ImageFormat::png ? write_png(temporary, image)
-              : *format == ImageFormat::exr ? write_exr(temporary, image)
-                                            : write_pfm(temporary, image);
-  } catch (const std::exception& e) {
-    why = e.what();
-  }
-  if (written && std::rename(temporary.c_str(), path.c_str()) == 0) return;
-  std::filesystem::remove(temporary, ec);
-  fail(flag, path, why);
+  check_output_target(path, flag);
+  OutputFiles files;
+  files.stage(path, flag, encode_image(image, *format));
+  files.commit();
 }
 
 Image read_pfm(const std::string& path) {

@@ -1,8 +1,10 @@
 // Frame images on disk. DESIGN.md: row 0 is the top of every image; .png is
-// tone-mapped sRGB 8-bit, .exr and .pfm linear float. Writes go to a temporary name
-// in the same folder and are renamed into place, so a failure leaves no partial file.
+// tone-mapped sRGB 8-bit, .exr and .pfm linear float. An image is encoded in memory
+// first, then written with every write, flush and close checked (output_files.h stages
+// several outputs and renames them into place together), so a failure leaves no file.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -20,7 +22,12 @@ enum class ImageFormat { png, exr, pfm };
 
 std::optional<ImageFormat> image_format_for(const std::string& path);
 
-// Throws ConfigError (the output path is the user's input) naming `flag` (e.g. "-o").
+// The bytes of `image` as a file of `format`.
+std::vector<std::byte> encode_image(const Image& image, ImageFormat format);
+
+// Writes one image: ConfigError (the path is the user's input, named with `flag`, e.g.
+// "-o") for an unsupported type or a target that cannot take a file; IoError
+// (output_files.h) when the write itself fails. Nothing is left behind on failure.
 void write_image(const std::string& path, const Image& image, const std::string& flag = "-o");
 
 // Reads a .pfm written by write_image (or any colour PFM). Throws ConfigError.

@@ -3,6 +3,9 @@
 // fault, 2 bad input (one clear message each).
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <new>
+#include <span>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -10,7 +13,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -22,6 +24,7 @@
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "tools/command_line.h"
 #include "tools/image_io.h"
+#include "tools/output_files.h"
 #include "tools/webgpu_backend.h"
 #include "graph/plan_report.h"
 #include "graph/pooling.h"
@@ -149,6 +152,12 @@ std::string timings_json(const std::vector<PassTiming>& timings, const rhi::Devi
   return o.str();
 }
 
+// The host ran out of memory allocating what the message names: not the input's fault
+// (exit 1), said in the user's terms rather than as std::bad_alloc.
+struct OutOfHostMemory : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct Dump {
   uint32_t resource;
   std::string file;
@@ -202,16 +211,6 @@ std::vector<Dump> add_dumps(const std::vector<std::string>& requests, Graph& gra
   return dumps;
 }
 
-void write_bytes(const std::string& file, const std::vector<std::byte>& bytes) {
-  const std::string temporary = file + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    if (!out) throw ConfigError({{{"<command line>", "--dump " + file, 0}, "cannot write it"}});
-  }
-  std::rename(temporary.c_str(), file.c_str());
-}
-
 // VOLGRAPH_SIMULATE_FAULT=out_of_memory|device_lost makes the driver fail (to test how
 // failures are reported); none when unset, nullopt for another value.
 std::optional<vulkan::SimulatedFault> simulated_fault() {
@@ -225,10 +224,6 @@ std::optional<vulkan::SimulatedFault> simulated_fault() {
 void render_frames(rhi::Device& device, const Args& args, LoadedConfig& loaded);
 
 int render(const Args& args, LoadedConfig loaded) {
-  if (args.output.empty()) return bad_usage("render needs -o OUT (.png, .exr or .pfm)");
-  if (!image_format_for(args.output)) {
-    throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
-  }
   const std::optional<vulkan::SimulatedFault> fault = simulated_fault();
   if (!fault) return bad_usage("VOLGRAPH_SIMULATE_FAULT must be out_of_memory or device_lost");
   if (args.backend == "webgpu") {
@@ -245,24 +240,31 @@ int render(const Args& args, LoadedConfig loaded) {
   return messages.empty() ? kOk : kFailure;
 }
 
-// Renders the frames on `device` and writes the output, the dumps and the timings.
+void stage_image(OutputFiles& files, const std::string& path, const std::string& flag, const Image& image) {
+  files.stage(path, flag, encode_image(image, *image_format_for(path)));  // the type was checked
+}
+
+// Renders the frames on `device` and writes the output, the dumps and the timings: all
+// of them, renamed into place together once every one is written, or none.
 void render_frames(rhi::Device& device, const Args& args, LoadedConfig& loaded) {
   const std::vector<Dump> dumps = add_dumps(args.dumps, loaded.graph);
   Executor executor(device, loaded.graph, &loaded.config.scene, args.compile);
   for (int f = 0; f < args.frames; ++f) executor.run_frame();
+  OutputFiles files;
   const Texels texels = executor.read_output(0);
-  write_image(args.output, Image{texels.width, texels.height, texels.rgba});
+  stage_image(files, args.output, "-o", Image{texels.width, texels.height, texels.rgba});
   for (const Dump& d : dumps) {
     if (loaded.graph.resources[d.resource].desc.kind == ResourceKind::buffer) {
-      write_bytes(d.file, executor.read_buffer(d.resource));
+      files.stage(d.file, "--dump", executor.read_buffer(d.resource));
     } else {
       const Texels t = executor.read_texture(d.resource);  // a 3D texture: its slices stacked, slice 0 on top
-      write_image(d.file, Image{t.width, t.height * t.depth, t.rgba}, "--dump");
+      stage_image(files, d.file, "--dump", Image{t.width, t.height * t.depth, t.rgba});
     }
   }
   const std::string timings = timings_json(executor.timings(), device, args.frames, executor.frame_wall_ms());
+  if (!args.timings_out.empty()) files.stage(args.timings_out, "--timings-out", std::as_bytes(std::span(timings)));
+  files.commit();
   if (args.timings) std::cout << timings;
-  if (!args.timings_out.empty()) std::ofstream(args.timings_out) << timings;
 }
 
 // What `plan --backend webgpu` says first: WebGPU pools whole objects instead of aliasing.
@@ -277,10 +279,6 @@ std::string webgpu_memory_line(const Graph& graph, const Plan& plan) {
 // The CPU ground truth (reference/): the config's scene only, its size from output.size
 // or --size.
 int reference_render(const Args& args, const LoadedConfig& loaded) {
-  if (args.output.empty()) return bad_usage("reference needs -o OUT (.png, .exr or .pfm)");
-  if (!image_format_for(args.output)) {
-    throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
-  }
   const auto start = std::chrono::steady_clock::now();
   std::optional<reference::Renderer> renderer;
   try {
@@ -297,18 +295,35 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
   settings.samples_per_axis = uint32_t(args.samples_per_axis);
   settings.threads = unsigned(args.threads);
   settings.progress = isatty(STDERR_FILENO) ? &std::cerr : nullptr;
-  const reference::ReferenceImage image = reference::render_image(*renderer, settings);
+  reference::ReferenceImage image;
+  try {
+    image = reference::render_image(*renderer, settings);
+  } catch (const std::bad_alloc&) {
+    const double mib = double(settings.width) * settings.height * 3 * sizeof(double) / (1 << 20);
+    throw OutOfHostMemory("the reference image, " + std::to_string(settings.width) + "×" + std::to_string(settings.height) +
+                          " pixels of 3 doubles (" + std::to_string(int64_t(std::ceil(mib))) + " MiB)");
+  }
   Image out{image.width, image.height, std::vector<float>(size_t(image.width) * image.height * 4, 1.0f)};
   for (size_t p = 0; p < size_t(image.width) * image.height; ++p) {
     for (size_t c = 0; c < 3; ++c) out.rgba[p * 4 + c] = float(image.rgb[p * 3 + c]);
   }
-  write_image(args.output, out);
+  OutputFiles files;
+  stage_image(files, args.output, "-o", out);
+  files.commit();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cerr << "reference: " << image.width << "×" << image.height << " in " << std::fixed << std::setprecision(2) << seconds << " s\n";
   return kOk;
 }
 
 // The commands: each runs on the parsed arguments (the command line is checked already).
+
+// `path` with its folders resolved (symbolic links, "..") so that two names of one file
+// compare equal; the parts that do not exist yet are kept as written.
+std::filesystem::path canonical_path(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::path canonical = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+  return ec ? std::filesystem::path(path).lexically_normal() : canonical;
+}
 
 // The config loaded once at its own size; --size then resizes the graph (extents are
 // resolved for a frame size when it is compiled, graph.h resize()), as a viewer does.
@@ -342,13 +357,49 @@ int run_plan(const Args& args, const PassRegistry& registry) {
   return kOk;
 }
 
+// The file a --dump request names ("" when it names none; add_dumps reports that).
+std::string dump_file(const std::string& request) {
+  const size_t eq = request.find('=');
+  return eq == std::string::npos ? "" : request.substr(eq + 1);
+}
+
+// Every file the command will write, checked before any work: -o of a type we write,
+// each target a file in an existing folder, and no two outputs (nor an output and the
+// config) the same file, which would leave only the last writer's.
+void check_outputs(const Args& args) {
+  if (args.output.empty()) throw UsageError(args.command + " needs -o OUT (.png, .exr or .pfm)");
+  if (!image_format_for(args.output)) {
+    throw ConfigError({{{"<command line>", "-o " + args.output, 0}, "unsupported image type; expected a .png, .exr or .pfm file name"}});
+  }
+  std::vector<std::pair<std::string, std::string>> files = {{"-o", args.output}};  // flag, file
+  if (!args.timings_out.empty()) files.push_back({"--timings-out", args.timings_out});
+  for (const std::string& d : args.dumps) {
+    if (!dump_file(d).empty()) files.push_back({"--dump", dump_file(d)});
+  }
+  std::vector<std::pair<std::string, std::filesystem::path>> seen = {{"the config", canonical_path(args.config)}};
+  for (const auto& [flag, file] : files) {
+    check_output_target(file, flag);
+    const std::filesystem::path canonical = canonical_path(file);
+    for (const auto& [other, path] : seen) {
+      if (path == canonical) {
+        throw UsageError(flag + " " + file + " is the same file as " + other + "; expected a different file for each output");
+      }
+    }
+    seen.push_back({flag + " " + file, canonical});
+  }
+}
+
 int run_render(const Args& args, const PassRegistry& registry) {
+  check_outputs(args);
   LoadedConfig loaded = load(args, registry);
   compile_loaded(loaded, args.compile);  // the config's errors before any device work
   return render(args, std::move(loaded));
 }
 
-int run_reference(const Args& args, const PassRegistry& registry) { return reference_render(args, load(args, registry)); }
+int run_reference(const Args& args, const PassRegistry& registry) {
+  check_outputs(args);
+  return reference_render(args, load(args, registry));
+}
 
 int run_passes(const Args&, const PassRegistry& registry) { return print_passes(registry); }
 
@@ -411,6 +462,15 @@ int main(int argc, char** argv) {
     return kBadInput;
   } catch (const DeviceError& e) {
     std::cerr << "volgraph: " << device_error_heading(e.kind) << e.what() << "\n";
+    return kFailure;
+  } catch (const IoError& e) {
+    std::cerr << "volgraph: cannot write " << e.what() << "\n";
+    return kFailure;
+  } catch (const OutOfHostMemory& e) {
+    std::cerr << "volgraph: out of host memory: " << e.what() << "\n";
+    return kFailure;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "volgraph: out of host memory (" << args.command << " " << args.config << ": an allocation failed)\n";
     return kFailure;
   } catch (const std::exception& e) {
     std::cerr << "volgraph: internal error: " << e.what() << "\n";

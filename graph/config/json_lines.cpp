@@ -1,5 +1,6 @@
 #include "graph/config/json_lines.h"
 
+#include <map>
 #include <string>
 
 namespace volgraph {
@@ -24,6 +25,11 @@ class Scanner {
     skip_space();
     value("");
     return std::move(lines_);
+  }
+
+  std::vector<DuplicateKey> duplicates() {
+    run();
+    return std::move(duplicates_);
   }
 
  private:
@@ -74,9 +80,14 @@ class Scanner {
   void object(const std::string& pointer) {
     ++pos_;
     skip_space();
+    std::map<std::string, int> seen;  // key → its line
     while (pos_ < text_.size() && text_[pos_] != '}') {
       const int key_line = line_;
-      const std::string key = pointer + "/" + pointer_token(string_literal());
+      const std::string name = string_literal();
+      const std::string key = pointer + "/" + pointer_token(name);
+      if (const auto [it, fresh] = seen.emplace(name, key_line); !fresh) {
+        duplicates_.push_back({key, name, key_line, it->second});
+      }
       skip_space();
       ++pos_;  // colon
       skip_space();
@@ -105,6 +116,7 @@ class Scanner {
   size_t pos_ = 0;
   int line_ = 1;
   JsonLines lines_;
+  std::vector<DuplicateKey> duplicates_;
 };
 
 }  // namespace
@@ -115,6 +127,28 @@ int line_of_offset(std::string_view text, size_t offset) {
   int line = 1;
   for (size_t i = 0; i < offset && i < text.size(); ++i) line += text[i] == '\n';
   return line;
+}
+
+std::vector<DuplicateKey> duplicate_keys(std::string_view text) { return Scanner(text).duplicates(); }
+
+std::optional<size_t> too_deep_at(std::string_view text, int max_depth) {
+  int depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    else if (c == '[' || c == '{') {
+      if (++depth > max_depth) return i;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace volgraph

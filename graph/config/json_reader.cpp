@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <vector>
 
+#include <unistd.h>
+
 namespace volgraph::config {
 namespace {
 
@@ -15,6 +17,16 @@ std::string number_text(double v) {
 }
 
 }  // namespace
+
+std::string file_problem(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) return "no such file";
+  if (std::filesystem::is_directory(status)) return "is a directory";
+  if (!std::filesystem::is_regular_file(status)) return "not a regular file";
+  if (::access(path.c_str(), R_OK) != 0) return "permission denied";
+  return "";
+}
 
 std::string describe(const Json& j) {
   switch (j.type()) {
@@ -143,9 +155,9 @@ std::optional<std::string> Node::existing_path() const {
     return std::nullopt;
   }
   const std::filesystem::path p = std::filesystem::path(source_->dir) / *text;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(p, ec)) {
-    error("file not found: \"" + *text + "\" (looked for " + p.lexically_normal().string() + ")");
+  if (const std::string problem = file_problem(p.string()); !problem.empty()) {
+    const std::string what = problem == "no such file" ? "file not found" : problem;
+    error(what + ": \"" + *text + "\" (looked for " + p.lexically_normal().string() + ")");
     return std::nullopt;
   }
   return p.lexically_normal().string();

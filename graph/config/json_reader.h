@@ -60,6 +60,10 @@ class Node {
   Diagnostics* diags_;
 };
 
+// Why `path` cannot be read as a file ("" when it can): "no such file", "is a directory",
+// "not a regular file" (a FIFO, a device: never opened, it could block), "permission denied".
+std::string file_problem(const std::string& path);
+
 std::string describe(const Json& j);  // "a string \"x\"", "an object", ... for messages
 std::string range_text(double min, double max);
 

@@ -23,8 +23,13 @@ using config::Source;
 constexpr uint32_t kMaxTexture2D = 16384;
 constexpr uint32_t kMaxTexture3D = 2048;
 constexpr int kMaxIncludeDepth = 16;
+// Nesting of arrays and objects in one file: far deeper than any config needs, shallow
+// enough that no reader of the document recurses near the stack's end.
+constexpr int kMaxJsonDepth = 256;
 
 const Where kCommandLine{"<command line>", "", 0};
+
+bool integer_format(Format f) { return f == Format::r32_uint; }
 
 bool valid_name(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
@@ -121,14 +126,15 @@ class Loader {
     std::string contents;
     if (text) {
       contents = *text;
-    } else if (!read_text(path, contents)) {
-      diags_.error(from.file.empty() ? Where{path, "", 0} : from, "cannot read \"" + path + "\": no such file");
+    } else if (const std::string problem = read_text(path, contents); !problem.empty()) {
+      diags_.error(from.file.empty() ? Where{path, "", 0} : from, "cannot read \"" + path + "\": " + problem);
       return;
     }
     sources_.push_back(std::make_unique<Source>());
     Source& src = *sources_.back();
     src.file = path;
     src.dir = std::filesystem::path(path).parent_path().string();
+    if (!text_checks_pass(path, contents)) return;
     Json json;
     try {
       json = Json::parse(contents);
@@ -139,6 +145,7 @@ class Loader {
       diags_.error({path, "", 0}, "invalid JSON: " + json_message(e));
       return;
     }
+    if (!unique_keys(path, contents)) return;
     jsons_.push_back(std::make_unique<Json>(std::move(json)));
     src.lines = index_json_lines(contents);
     stack_.push_back(canonical);
@@ -149,15 +156,42 @@ class Loader {
   Diagnostics& diagnostics() { return diags_; }
 
  private:
-  static bool read_text(const std::string& path, std::string& out) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return false;
+  // The file's text, or why it cannot be read (config::file_problem).
+  static std::string read_text(const std::string& path, std::string& out) {
+    if (std::string problem = config::file_problem(path); !problem.empty()) return problem;
     std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
+    if (!in) return "cannot open it";
     std::ostringstream s;
     s << in.rdbuf();
+    if (in.bad()) return "read error";
     out = s.str();
+    return "";
+  }
+
+  // What the JSON parser would let pass or choke on: a NUL byte (nlohmann/json ends the
+  // input there, ignoring the rest) and nesting deeper than kMaxJsonDepth.
+  bool text_checks_pass(const std::string& path, const std::string& contents) {
+    if (const size_t nul = contents.find('\0'); nul != std::string::npos) {
+      diags_.error({path, "", line_of_offset(contents, nul)},
+                   "a NUL byte at offset " + std::to_string(nul) + "; expected JSON text");
+      return false;
+    }
+    if (const std::optional<size_t> deep = too_deep_at(contents, kMaxJsonDepth)) {
+      diags_.error({path, "", line_of_offset(contents, *deep)},
+                   "arrays and objects nest deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+      return false;
+    }
     return true;
+  }
+
+  // nlohmann/json keeps the last of repeated keys silently; each repeat is an error.
+  bool unique_keys(const std::string& path, const std::string& contents) {
+    const std::vector<DuplicateKey> duplicates = duplicate_keys(contents);
+    for (const DuplicateKey& d : duplicates) {
+      diags_.error({path, d.pointer, d.line},
+                   "duplicate key \"" + d.key + "\" (first at line " + std::to_string(d.first_line) + "); keys must be unique");
+    }
+    return duplicates.empty();
   }
 
   void read_document(const Node& doc, int depth) {
@@ -479,7 +513,11 @@ class Wiring {
       return;
     }
     const FormatInfo& f = format_info(*o.format);
-    if (f.is_depth != format_info(slot.format).is_depth) {
+    if (integer_format(*o.format) != integer_format(slot.format)) {
+      diags_.error(o.where, "slot \"" + slot.name + "\" of \"" + decl.name + "\" holds " +
+                                (integer_format(slot.format) ? "integers" : "floating-point or normalised values") + ", " +
+                                std::string(f.name) + " does not; expected a format like " + std::string(format_info(slot.format).name));
+    } else if (f.is_depth != format_info(slot.format).is_depth) {
       diags_.error(o.where, "slot \"" + slot.name + "\" needs a " + (f.is_depth ? "colour" : "depth") + " format, got " +
                                 std::string(f.name));
     } else if ((slot.usage == Usage::storage_write || slot.usage == Usage::storage_read_write) && !f.storage_capable) {
@@ -584,6 +622,13 @@ class Wiring {
       diags_.error({config_.file, "/graph/outputs", 0}, "the graph has no outputs; expected \"outputs\": [\"pass.slot\", …]");
     }
     for (const GraphOutput& o : config_.outputs) outputs_.push_back(resolve_source(o.source, o.where));
+    // The first output is the frame (render -o writes it): an image. Later ones may be
+    // anything a caller reads back.
+    if (!outputs_.empty() && outputs_[0] && decls_[outputs_[0]->pass]->slots[size_t(outputs_[0]->slot)].kind == ResourceKind::buffer) {
+      diags_.error(config_.outputs[0].where, "\"" + config_.outputs[0].source +
+                                                 "\" is a buffer; the first graph output is the frame, an image (--dump "
+                                                 "PASS.SLOT=FILE.bin writes a buffer)");
+    }
   }
 
   // Passes in an order where every source comes before its readers; reports cycles.
@@ -805,8 +850,8 @@ void apply_overrides(Config& config, const Overrides& o, Diagnostics& diags) {
   for (const std::string& v : o.variants) {
     const std::string flag = "--variant " + v;
     const size_t eq = v.find('=');
-    if (eq == std::string::npos) {
-      diags.error({kCommandLine.file, flag, 0}, "expected --variant PASS=VARIANT");
+    if (eq == std::string::npos || eq + 1 == v.size()) {
+      diags.error({kCommandLine.file, flag, 0}, "expected --variant PASS=VARIANT with a variant's name");
       continue;
     }
     if (PassNode* p = find_pass(v.substr(0, eq), flag)) {
@@ -856,7 +901,52 @@ LoadedConfig load_config_text(const std::string& name, const std::string& text, 
   return load(name, &text, registry, overrides);
 }
 
+namespace {
+
+bool is_attachment(Usage u) {
+  return u == Usage::color_attachment || u == Usage::color_attachment_load || u == Usage::depth_attachment ||
+         u == Usage::depth_read;
+}
+
+std::string extent_text(const Extent& e) { return std::to_string(e.width) + "x" + std::to_string(e.height); }
+
+// The attachments of one render pass must have one size (Vulkan and WebGPU render into
+// them together); an output's size override can break that.
+void check_attachments_agree(const LoadedConfig& loaded) {
+  const Graph& graph = loaded.graph;
+  for (uint32_t g = 0; g < graph.passes.size(); ++g) {
+    const GraphPass& pass = graph.passes[g];
+    const ResourceUse* first = nullptr;
+    for (const ResourceUse& u : pass.uses) {
+      if (!is_attachment(u.usage) || u.resource == kNone) continue;
+      if (!first) {
+        first = &u;
+        continue;
+      }
+      const Extent a = graph.resources[first->resource].desc.extent, b = graph.resources[u.resource].desc.extent;
+      if (a.width == b.width && a.height == b.height) continue;
+      const uint32_t p = pass.group != kNone ? pass.group : g;
+      Where where{loaded.config.file, "/graph/passes", 0};
+      if (p < loaded.config.passes.size()) {
+        const PassNode& node = loaded.config.passes[p];
+        where = node.where;
+        for (const OutputOverride& o : node.outputs) {
+          if (o.slot == pass.decl->slots[u.slot].name || o.slot == pass.decl->slots[first->slot].name) where = o.where;
+        }
+      }
+      const std::string name = pass.group != kNone ? pass.name.substr(0, pass.name.find('/')) : pass.name;
+      throw ConfigError({{where, "pass \"" + name + "\": its render targets differ in size: \"" +
+                                     pass.decl->slots[first->slot].name + "\" is " + extent_text(a) + ", \"" +
+                                     pass.decl->slots[u.slot].name + "\" " + extent_text(b) +
+                                     "; the attachments of one render pass must have one size"}});
+    }
+  }
+}
+
+}  // namespace
+
 Plan compile_loaded(const LoadedConfig& loaded, const CompileOptions& options, const RequirementsFn& requirements) {
+  check_attachments_agree(loaded);
   try {
     return compile(loaded.graph, options, requirements);
   } catch (const GraphError& e) {

@@ -1,6 +1,8 @@
 #include "graph/config/scene_reader.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "physics/media.h"  // header-only: sigma from a transmittance colour
 #include "physics/lighting.h"  // header-only: the light limit
@@ -12,6 +14,40 @@ namespace {
 constexpr double kHuge = 1e9;            // metres: well past any scene
 constexpr double kMaxRadiance = 1e9;
 constexpr double kMaxCoefficient = 1e6;  // 1/m
+// Direction vectors shorter than this have no usable direction: normalising them in
+// float (the GPU) underflows, in double (the reference) loses every digit.
+constexpr double kMinDirectionLength = 1e-6;
+// The camera's up may not lie within this sine of its view direction (about 0.006°):
+// the view basis takes its right vector from their cross product, which the GPU
+// computes in float (relative error near 1e-7), so closer than this its direction is
+// mostly rounding; exactly parallel, it is zero.
+constexpr double kMinUpSine = 1e-4;
+
+// far / near at most this: the GPU's projection works in float, where far / (near − far)
+// rounds to −1 once near / far falls toward float's epsilon (1.2e-7), and the depth
+// buffer then holds no depth (fog_apply's depth_aware, measured on demo_raymarch_fog:
+// unchanged up to 1e7, the frame darkened from 3e7); a factor 10 below that.
+constexpr double kMaxFarOverNear = 1e6;
+// A volume's largest extent over its smallest (size × transform scale) at most this: the
+// GPU carries a volume's world-to-local transform in float, which loses a thin axis
+// past it (demo_fog's ball: within 0.1 % of the reference's mean up to 1e5, 2.5 % off at
+// 1e6, the whole frame darkened at 1e8; the reference's mean does not change).
+constexpr double kMaxVolumeAnisotropy = 1e4;
+
+std::string short_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+double length(const Vec3& v) { return std::hypot(v[0], v[1], v[2]); }
+
+// A direction of length ≥ kMinDirectionLength at member `key` (when present).
+void check_direction(const Node& obj, const char* key, const Vec3& v, const char* what) {
+  const auto member = obj.member(key);
+  if (!member || length(v) >= kMinDirectionLength) return;
+  member->error(std::string(what) + " has length " + short_number(length(v)) + "; expected a direction of length at least 1e-6");
+}
 
 template <typename Enum>
 std::optional<Enum> choice(const Node& n, const std::vector<std::pair<std::string, Enum>>& options) {
@@ -41,10 +77,22 @@ void read_camera(const Node& n, Camera& c) {
   read(n, "fov_y_deg", c.fov_y_deg, 1, 179);
   read(n, "near", c.near, 1e-4, 1e6);
   read(n, "far", c.far, 1e-3, kHuge);
-  const double dx = c.target[0] - c.position[0], dy = c.target[1] - c.position[1], dz = c.target[2] - c.position[2];
-  if (dx * dx + dy * dy + dz * dz == 0) n.error("camera target equals its position; expected a view direction");
-  if (c.up[0] == 0 && c.up[1] == 0 && c.up[2] == 0) n.error("camera up is the zero vector");
-  if (c.far <= c.near) n.error("camera far (" + std::to_string(c.far) + ") must exceed near (" + std::to_string(c.near) + ")");
+  const Vec3 view{c.target[0] - c.position[0], c.target[1] - c.position[1], c.target[2] - c.position[2]};
+  check_direction(n, "up", c.up, "camera up");
+  if (length(view) < kMinDirectionLength) {
+    n.error("camera target is within 1e-6 m of its position; expected a view direction (target − position) of length at least 1e-6");
+  } else if (length(c.up) >= kMinDirectionLength) {
+    const Vec3 v = physics::scaled(view, 1 / length(view)), u = physics::scaled(c.up, 1 / length(c.up));
+    if (length(physics::cross(v, u)) < kMinUpSine) {
+      n.error("camera up is parallel to the view direction (target − position); expected an up at least 0.006° (sine 1e-4) away from it");
+    }
+  }
+  if (c.far <= c.near) {
+    n.error("camera far (" + std::to_string(c.far) + ") must exceed near (" + std::to_string(c.near) + ")");
+  } else if (c.far > kMaxFarOverNear * c.near) {
+    n.error("camera far / near is " + short_number(c.far / c.near) +
+            "; expected at most 1e6 (the GPU's float depth cannot tell depths apart past that)");
+  }
 }
 
 void read_material(const Node& n, const std::string& name, Material& m) {
@@ -130,7 +178,7 @@ void read_light(const Node& n, Light& l) {
   read(n, "inner_cone_deg", l.inner_cone_deg, 0, 89.9);
   read(n, "outer_cone_deg", l.outer_cone_deg, 0.1, 89.9);
   read(n, "cast_shadows", l.cast_shadows);
-  if (l.direction[0] == 0 && l.direction[1] == 0 && l.direction[2] == 0) n.error("light direction is the zero vector");
+  check_direction(n, "direction", l.direction, "light direction");
   if (spot && l.inner_cone_deg > l.outer_cone_deg) n.error("spot inner_cone_deg exceeds outer_cone_deg");
 }
 
@@ -202,6 +250,18 @@ void read_noise(const Node& n, Noise& noise) {
   }
 }
 
+// A volume's extents along its own axes (size, a sphere's radius on all three, times the
+// transform's scale) within kMaxVolumeAnisotropy of each other; a flat one (a size of 0)
+// has no inside and is allowed.
+void check_anisotropy(const Node& n, const MediumVolume& v) {
+  Vec3 extent{};
+  for (size_t k = 0; k < 3; ++k) extent[k] = (v.shape == Shape::sphere ? v.size[0] : v.size[k]) * v.transform.scale[k];
+  const double smallest = std::min({extent[0], extent[1], extent[2]}), largest = std::max({extent[0], extent[1], extent[2]});
+  if (!(smallest > 0) || largest <= kMaxVolumeAnisotropy * smallest) return;
+  n.error("the volume's extents (size × transform scale) span a ratio of " + short_number(largest / smallest) +
+          "; expected at most 1e4 (the GPU's float transform loses the thin axis past that)");
+}
+
 void read_media(const Node& n, Media& media) {
   if (!n.object({"fog", "height_fog", "volumes"})) return;
   if (auto f = n.member("fog")) {
@@ -231,6 +291,7 @@ void read_media(const Node& n, Media& media) {
         }
       }
       if (auto t = v.member("transform")) read_transform(*t, vol.transform);
+      check_anisotropy(v, vol);
       media.volumes.push_back(vol);
     }
   }

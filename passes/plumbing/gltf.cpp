@@ -244,6 +244,10 @@ GltfModel load_gltf(const std::string& path) {
   if (model.primitives.empty()) fail("the default scene has no triangles");
   for (size_t i = 0; i < m.images.size(); ++i) {
     const std::string name = m.images[i].name.empty() ? m.images[i].uri : m.images[i].name;
+    if (m.images[i].image.empty()) {  // tinygltf only warns about an image file it cannot read
+      fail("image " + std::to_string(i) + (name.empty() ? "" : " (" + name + ")") + " cannot be read" +
+           (warning.empty() ? "" : ": " + warning.substr(0, warning.find('\n'))));
+    }
     model.images.push_back({path + " image " + std::to_string(i) + (name.empty() ? "" : " (" + name + ")"), std::move(m.images[i].image)});
   }
   return model;

@@ -19,6 +19,14 @@
 
 namespace volgraph::plumbing {
 
+// The most draws (a primitive object is one, a glTF object one per primitive) a scene
+// may have: each draw takes its own vertex, index and uniform buffers and bind group,
+// which lavapipe backs with memory maps of their own; near 8,150 objects (a frame with a
+// shadow map) the process runs out of them (Linux's vm.max_map_count, 65530) and the
+// driver crashes, on Vulkan and under Dawn alike. Half that leaves room for the rest of
+// the frame; the scene pass refuses more at validate time.
+constexpr size_t kMaxSceneDraws = 4096;
+
 // std140 mirror of the Object block (shaders/include/object_uniforms.glsl).
 struct GpuObjectBlock {
   float model[16];

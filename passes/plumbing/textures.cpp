@@ -8,7 +8,9 @@
 #include <stdexcept>
 
 #include <stb/stb_image.h>
+#include <zlib.h>
 
+#include "graph/diagnostics.h"
 #include "physics/srgb.h"
 
 namespace volgraph::plumbing {
@@ -71,7 +73,9 @@ LinearLevel half(const LinearLevel& above) {
 Rgba8Image decode_image(const uint8_t* bytes, size_t size, const std::string& describe) {
   int width = 0, height = 0, components = 0;
   stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &components, 4);
-  if (!pixels) throw std::runtime_error(describe + ": not an image volgraph reads (" + stbi_failure_reason() + ")");
+  if (!pixels) {  // the user's file: bad input, named
+    throw ConfigError({{{describe, "", 0}, std::string("not an image volgraph reads (") + stbi_failure_reason() + ")"}});
+  }
   Rgba8Image image{uint32_t(width), uint32_t(height), std::vector<uint8_t>(pixels, pixels + size_t(width) * size_t(height) * 4)};
   stbi_image_free(pixels);
   return image;
@@ -82,7 +86,34 @@ Rgba8Image read_image_file(const std::string& path) {
   return decode_image(bytes.data(), bytes.size(), path);
 }
 
+namespace {
+
+uint32_t big_endian(const uint8_t* p) { return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3]; }
+
+// A PNG's chunks walked to IEND (ISO/IEC 15948, PNG 2nd ed., §5.3: length, type, data,
+// then the CRC-32 of type and data): "" when every chunk is whole and its CRC holds, or
+// the bytes are no PNG. What stb_image's header check cannot see: a truncated file or a
+// damaged chunk, which fail only when the texels are decoded.
+std::string png_chunks_problem(const uint8_t* bytes, size_t size) {
+  constexpr uint8_t kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+  if (size < 8 || !std::equal(kSignature, kSignature + 8, bytes)) return "";
+  for (size_t at = 8;;) {
+    if (size - at < 12) return "a truncated PNG: it ends at byte " + std::to_string(size) + " without its IEND chunk";
+    const uint32_t length = big_endian(bytes + at);
+    if (length > size - at - 12) return "a truncated PNG: the chunk at byte " + std::to_string(at) + " runs past its end";
+    const uint8_t* type = bytes + at + 4;
+    const uLong crc = crc32(crc32(0L, Z_NULL, 0), type, uInt(length + 4));
+    const std::string name(reinterpret_cast<const char*>(type), 4);
+    if (crc != big_endian(type + 4 + length)) return "a damaged PNG: chunk " + name + " at byte " + std::to_string(at) + " fails its CRC";
+    at += 12 + size_t(length);
+    if (name == "IEND") return "";
+  }
+}
+
+}  // namespace
+
 std::string image_problem(const uint8_t* bytes, size_t size) {
+  if (std::string problem = png_chunks_problem(bytes, size); !problem.empty()) return problem;
   int width = 0, height = 0, components = 0;
   if (!stbi_info_from_memory(bytes, int(size), &width, &height, &components)) {
     return std::string("not an image volgraph reads (PNG, JPEG, BMP, TGA): ") + stbi_failure_reason();

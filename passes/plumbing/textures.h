@@ -19,12 +19,12 @@ struct Rgba8Image {
   std::vector<uint8_t> texels;  // row 0 at the top, 4 bytes a texel
 };
 
-// Decodes PNG, JPEG, BMP, TGA… (stb_image) to RGBA; throws std::runtime_error saying why
-// a file cannot be read. `describe` names the image in the message.
+// Decodes PNG, JPEG, BMP, TGA… (stb_image) to RGBA; throws ConfigError (the image is
+// the user's input) saying why it cannot be decoded, named by `describe`.
 Rgba8Image decode_image(const uint8_t* bytes, size_t size, const std::string& describe);
 Rgba8Image read_image_file(const std::string& path);
 // Whether the bytes are an image decode_image reads, without decoding it ("" if so,
-// else why not).
+// else why not): stb_image's header check, and for a PNG every chunk whole with its CRC.
 std::string image_problem(const uint8_t* bytes, size_t size);
 std::string image_file_problem(const std::string& path);
 

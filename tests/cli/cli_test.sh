@@ -10,6 +10,9 @@
 #                                         command lines and a broken model exit 2 and write nothing
 #   cli_test.sh VOLGRAPH webgpu CONFIG    render --backend webgpu (64x36) writes a PFM, timings and a --dump;
 #                                         simulated driver failures exit 1 with their message, no file
+#   cli_test.sh VOLGRAPH hostile CONFIG CASE  one hostile-user case (below): a clear message and exit 2 for bad
+#                                         input, exit 1 for a failure that is not the input's, no file written,
+#                                         no crash and no hang
 #   cli_test.sh VOLGRAPH frames CONFIG PASS.SLOT [webgpu]  a fog demo over 5 frames under validation (and
 #                                         on WebGPU), PASS.SLOT (a history output) dumped after them; plan
 #                                         lists the history pairs
@@ -18,6 +21,143 @@ volgraph=$1 mode=$2 config=${3:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
+
+# expect_exit CODE MESSAGE COMMAND…: the command exits CODE with MESSAGE on the first line of stderr.
+expect_exit() {
+  expected_code=$1 expected=$2
+  shift 2
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  code=$?
+  [ "$code" -eq "$expected_code" ] || fail "'$*' exit $code (expected $expected_code); stderr: $(head -c 2000 "$tmp/err")"
+  head -n 1 "$tmp/err" | grep -qF -- "$expected" || fail "'$*': expected '$expected', got: $(head -c 2000 "$tmp/err")"
+}
+
+# no_files_but LIST…: nothing in $tmp but the named files (and out, err).
+no_files_but() {
+  left=$(ls -A "$tmp" | grep -v -x -e out -e err $(printf -- ' -e %s' "$@"))
+  [ -z "$left" ] || fail "files left behind: $left"
+}
+
+# A JSON scene of the config's graph with N boxes.
+boxes_config() {
+  python3 - "$config" "$1" <<'PY'
+import json, sys
+objects = [{"shape": "box", "size": [0.05, 0.05, 0.05], "material": "grey",
+            "transform": {"translate": [(i % 90) * 0.1 - 4.5, 0.05, -(i // 90) * 0.1]}} for i in range(int(sys.argv[2]))]
+print(json.dumps({"include": sys.argv[1], "scene": {"materials": {"grey": {}}, "objects": objects}}))
+PY
+}
+
+hostile_case() {
+  case "$1" in
+    deep_nesting)  # 50,000 levels: refused before any reader recurses
+      { printf '{"include": "%s", "scene": ' "$config"; head -c 50000 /dev/zero | tr '\0' '['; head -c 50000 /dev/zero | tr '\0' ']'; printf '}'; } >"$tmp/deep.json"
+      for command in validate plan "render -o $tmp/x.pfm" "reference -o $tmp/x.pfm"; do
+        # shellcheck disable=SC2086
+        expect_exit 2 "deep.json:1: error: arrays and objects nest deeper than 256 levels" "$volgraph" $command "$tmp/deep.json"
+      done
+      no_files_but deep.json
+      ;;
+    nul_byte)  # nlohmann/json stops at a NUL: what follows would be ignored
+      { printf '{"include": "%s"}\n' "$config"; printf '\0{"scene": 1}\n'; } >"$tmp/nul.json"
+      expect_exit 2 "nul.json:2: error: a NUL byte at offset" "$volgraph" validate "$tmp/nul.json"
+      ;;
+    size)  # --size: digits only, each side in [1, 16384]; no wrap-around
+      for size in 4294967360x36 +64x+36 " 64x36" "64x36 " 64x-36 0x36 16385x36 64x 64 64x36x2; do
+        expect_exit 2 "volgraph: --size expects WxH, digits only" "$volgraph" plan "$config" --size "$size"
+      done
+      "$volgraph" plan "$config" --size 64x36 >/dev/null || fail "--size 64x36 refused"
+      ;;
+    threads)  # --threads is bounded; thread creation failing falls back to fewer threads
+      expect_exit 2 "volgraph: --threads expects a whole number in [1, 256], got \"4096\"" \
+        "$volgraph" reference "$config" -o "$tmp/x.pfm" --threads 4096
+      no_files_but
+      "$volgraph" reference "$config" -o "$tmp/x.pfm" --size 8x4 --threads 256 2>"$tmp/err" || fail "--threads 256: $(cat "$tmp/err")"
+      ;;
+    same_file)  # two outputs, or an output and the config, naming one file
+      cp "$config" "$tmp/config.json"
+      cp -r "$(dirname "$config")/scenes" "$(dirname "$config")/graphs" "$tmp/"
+      expect_exit 2 "is the same file as -o" "$volgraph" render "$tmp/config.json" -o "$tmp/x.pfm" --timings-out "$tmp/x.pfm"
+      expect_exit 2 "is the same file as -o" "$volgraph" render "$tmp/config.json" -o "$tmp/x.pfm" --dump "lit.color=$tmp/../$(basename "$tmp")/x.pfm"
+      expect_exit 2 "is the same file as the config" "$volgraph" render "$tmp/config.json" -o "$tmp/x.pfm" --timings-out "$tmp/config.json"
+      cmp -s "$config" "$tmp/config.json" || fail "the config was overwritten"
+      no_files_but config.json scenes graphs
+      ;;
+    repeated_options)  # one file per option; a variant needs a name
+      expect_exit 2 "volgraph: -o given twice" "$volgraph" render "$config" -o "$tmp/a.pfm" -o "$tmp/b.pfm"
+      expect_exit 2 "volgraph: --timings-out given twice" "$volgraph" render "$config" -o "$tmp/a.pfm" --timings-out "$tmp/a.json" --timings-out "$tmp/b.json"
+      expect_exit 2 "<command line>: error at --variant final=: expected --variant PASS=VARIANT with a variant's name" \
+        "$volgraph" plan "$config" --variant final=
+      no_files_but
+      ;;
+    missing_folder)  # an output into a folder that is not there: refused before rendering, nothing written
+      expect_exit 2 "<command line>: error at --timings-out $tmp/no/t.json: folder $tmp/no does not exist" \
+        "$volgraph" render "$config" --size 64x36 -o "$tmp/x.pfm" --timings-out "$tmp/no/t.json"
+      expect_exit 2 "<command line>: error at --dump $tmp/no/lit.pfm: folder $tmp/no does not exist" \
+        "$volgraph" render "$config" --size 64x36 -o "$tmp/x.pfm" --dump "lit.color=$tmp/no/lit.pfm"
+      mkdir "$tmp/d.pfm"
+      expect_exit 2 "<command line>: error at -o $tmp/d.pfm: is a directory" "$volgraph" render "$config" --size 64x36 -o "$tmp/d.pfm"
+      no_files_but d.pfm
+      ;;
+    not_a_file)  # a config that is a folder, a FIFO or unreadable: said so, not "no such file"
+      mkdir "$tmp/dir.json"
+      expect_exit 2 "error: cannot read \"$tmp/dir.json\": is a directory" "$volgraph" validate "$tmp/dir.json"
+      mkfifo "$tmp/fifo.json"
+      expect_exit 2 "error: cannot read \"$tmp/fifo.json\": not a regular file" "$volgraph" validate "$tmp/fifo.json"
+      if [ "$(id -u)" -ne 0 ]; then  # root reads any file
+        cp "$config" "$tmp/locked.json" && chmod 000 "$tmp/locked.json"
+        expect_exit 2 "error: cannot read \"$tmp/locked.json\": permission denied" "$volgraph" validate "$tmp/locked.json"
+      fi
+      ;;
+    host_memory)  # the host out of memory: said so, exit 1 (not the input's fault)
+      (ulimit -v 1000000 && exec "$volgraph" reference "$config" -o "$tmp/x.pfm" --size 16384x16384 --threads 1) >"$tmp/out" 2>"$tmp/err"
+      code=$?
+      [ "$code" -eq 1 ] || fail "exit $code (expected 1); stderr: $(cat "$tmp/err")"
+      grep -qF "volgraph: out of host memory: the reference image, 16384×16384 pixels of 3 doubles (6144 MiB)" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+      no_files_but
+      ;;
+    too_many_objects)  # more objects than the backends bind: refused at validate with the maximum
+      boxes_config 8200 >"$tmp/boxes.json"
+      expect_exit 2 "boxes.json:1: error at /scene/objects/4093: the scene's objects make more than 4096 draws" "$volgraph" validate "$tmp/boxes.json"
+      boxes_config 4000 >"$tmp/boxes.json"
+      "$volgraph" validate "$tmp/boxes.json" >/dev/null || fail "4000 objects refused"
+      ;;
+    point_light_on_surface)  # the in-scattering integrand unbounded at a ray's end: the refinement still stops
+      timeout 20 "$volgraph" reference "$(dirname "$0")/hostile/point_light_on_surface.json" -o "$tmp/x.pfm" --size 17x9 \
+        --threads 2 2>"$tmp/err" || fail "reference exit $? (124: it ran past 20 s): $(cat "$tmp/err")"
+      ;;
+    fine_noise)  # under-resolved noise: warned about, and the time stays bounded
+      timeout 20 "$volgraph" reference "$(dirname "$0")/hostile/fine_noise.json" -o "$tmp/x.pfm" --size 16x9 \
+        --threads 2 2>"$tmp/err" || fail "reference exit $? (124: it ran past 20 s): $(cat "$tmp/err")"
+      grep -q "warning: .*under-resolved" "$tmp/err" || fail "no under-resolved warning: $(cat "$tmp/err")"
+      ;;
+    undecodable_texture)  # a texture that fails only when decoded: bad input (exit 2) at render time, nothing written
+      for command in render reference; do
+        expect_exit 2 "textures/bad_zlib.png: error: not an image volgraph reads" \
+          "$volgraph" $command "$(dirname "$0")/hostile/undecodable_texture.json" --size 32x18 -o "$tmp/x.pfm"
+      done
+      no_files_but
+      ;;
+    full_disk)  # a write that fails (a one-page tmpfs fills up): exit 1, the target named, no file left at all
+      mkdir "$tmp/full"
+      if ! mount -t tmpfs -o size=4k tmpfs "$tmp/full" 2>/dev/null; then
+        echo "ok (skipped: cannot mount a tmpfs here)"
+        exit 0
+      fi
+      trap 'umount "$tmp/full"; rm -rf "$tmp"' EXIT
+      for out in x.png x.pfm x.exr; do
+        expect_exit 1 "volgraph: cannot write $tmp/full/$out: No space left on device" \
+          "$volgraph" render "$config" --size 320x180 -o "$tmp/full/$out"
+        [ -z "$(ls -A "$tmp/full")" ] || fail "-o $out on a full disk left: $(ls -A "$tmp/full")"
+      done
+      # The frame fits (a page), the dump after it does not: neither is left.
+      expect_exit 1 "volgraph: cannot write $tmp/full/lit.pfm: No space left on device" \
+        "$volgraph" render "$config" --size 8x4 -o "$tmp/full/x.png" --dump "lit.color=$tmp/full/lit.pfm"
+      [ -z "$(ls -A "$tmp/full")" ] || fail "a failed --dump left: $(ls -A "$tmp/full")"
+      ;;
+    *) fail "unknown hostile case $1" ;;
+  esac
+}
 
 case "$mode" in
   good)
@@ -176,6 +316,9 @@ got: $(cat "$tmp/err")"
     "$volgraph" plan "$config" --json >"$tmp/plan.json" || fail "plan --json"
     grep -q '"role": "previous"' "$tmp/plan.json" && grep -q '"history_bytes": [1-9]' "$tmp/plan.json" &&
       grep -q '"initial_barriers": \[$' "$tmp/plan.json" || fail "plan --json lacks the history pair"
+    ;;
+  hostile)
+    hostile_case "$4"
     ;;
   *) fail "unknown mode $mode" ;;
 esac

@@ -1,9 +1,13 @@
 // How long the reference takes on two threads at 320×180 (printed, not asserted: the
 // machine is shared): the helmet demo (surfaces, textures, a spot and a point light)
 // and the primitives demo in fog (global fog, height fog and a fog ball, single
-// scattering of the sun); and that the fog image is the same on one and two threads.
+// scattering of the sun); and that the fog image is the same on one and two threads, and
+// when the system refuses some of the threads asked for.
 #include <chrono>
 #include <cstdio>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -71,6 +75,40 @@ TEST(ReferenceTiming, FoggyImageIsTheSameOnOneAndTwoThreads) {
   const ReferenceImage one = render_image(renderer, {.width = 32, .height = 18, .threads = 1});
   const ReferenceImage two = render_image(renderer, {.width = 32, .height = 18, .threads = 2});
   EXPECT_TRUE(one.rgb == two.rgb);
+}
+
+// Bytes of address space the process maps now (/proc/self/statm: its first field, pages).
+size_t mapped_bytes() {
+  unsigned long pages = 0;
+  if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%lu", &pages) != 1) pages = 0;
+    std::fclose(f);
+  }
+  return size_t(pages) * size_t(::sysconf(_SC_PAGESIZE));
+}
+
+// When the system gives fewer threads than asked (here: address space for few 8 MiB
+// stacks, so std::thread throws std::system_error), the image is rendered with those it
+// gave — the same image — instead of std::terminate.
+TEST(ReferenceTiming, ThreadsTheSystemRefusesFallBackToFewer) {
+  LoadedConfig loaded = load_shipped("demo_primitives.json", 16, 9);
+  add_demo_fog(loaded.config.scene);
+  const Renderer renderer(loaded.config.scene);
+  const ReferenceImage one = render_image(renderer, {.width = 16, .height = 9, .threads = 1});
+  rlimit old{};
+  ASSERT_EQ(::getrlimit(RLIMIT_AS, &old), 0);
+  const rlimit tight{mapped_bytes() + (size_t{48} << 20), old.rlim_max};
+  ASSERT_EQ(::setrlimit(RLIMIT_AS, &tight), 0);
+  ReferenceImage many;
+  bool rendered = false;
+  try {
+    many = render_image(renderer, {.width = 16, .height = 9, .threads = 256});
+    rendered = true;
+  } catch (const std::exception&) {  // (the limit is restored before failing)
+  }
+  ::setrlimit(RLIMIT_AS, &old);
+  ASSERT_TRUE(rendered);
+  EXPECT_TRUE(one.rgb == many.rgb);
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // Image files: row 0 at the top in every format, PNG's sRGB encoding exact, EXR and PFM
-// lossless for float data, and a failed write leaving no file behind.
+// lossless for float data, a failed write (a full disk included) leaving no file behind,
+// and outputs renamed into place together.
 #include <filesystem>
 #include <fstream>
+#include <span>
 
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -13,6 +15,7 @@
 #include "graph/diagnostics.h"
 #include "physics/srgb.h"
 #include "tools/image_io.h"
+#include "tools/output_files.h"
 
 namespace volgraph {
 namespace {
@@ -113,6 +116,54 @@ TEST_F(ImageIo, AFailedWriteLeavesNoTemporaryFile) {
   std::filesystem::create_directories(dir_ / "taken.pfm" / "inside");
   EXPECT_THROW(write_image(path("taken.pfm"), test_image()), ConfigError);
   EXPECT_EQ(files(), 1u);  // only the folder that was in the way
+}
+
+// A full disk: /dev/full takes the open and fails the writes (ENOSPC), which the
+// stdio buffer reports only at the flush.
+TEST(WriteFileChecked, AFullDiskIsAnIoErrorNamingTheFile) {
+  for (const ImageFormat format : {ImageFormat::png, ImageFormat::exr, ImageFormat::pfm}) {
+    const std::vector<std::byte> bytes = encode_image(test_image(), format);
+    ASSERT_FALSE(bytes.empty());
+    try {
+      write_file_checked("/dev/full", bytes);
+      ADD_FAILURE() << "expected an IoError";
+    } catch (const IoError& e) {
+      EXPECT_NE(std::string(e.what()).find("/dev/full: No space left on device"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST_F(ImageIo, EncodedPngIsTheImage) {
+  const std::vector<std::byte> bytes = encode_image(test_image(), ImageFormat::png);
+  int w = 0, h = 0, n = 0;
+  stbi_uc* texels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h, &n, 4);
+  ASSERT_NE(texels, nullptr);
+  EXPECT_EQ(w, 3);
+  EXPECT_EQ(h, 2);
+  EXPECT_EQ(texels[0], 255);  // the top-left texel is red
+  EXPECT_EQ(texels[1], 0);
+  stbi_image_free(texels);
+}
+
+// Outputs are all or none: the first is not in place when a later one fails.
+TEST_F(ImageIo, OutputFilesRenameNothingUntilEveryFileIsWritten) {
+  const std::vector<std::byte> bytes = encode_image(test_image(), ImageFormat::pfm);
+  {
+    OutputFiles outputs;
+    outputs.stage(path("first.pfm"), "-o", bytes);
+    EXPECT_THROW(outputs.stage(path("no/such/folder/second.pfm"), "--dump", bytes), ConfigError);
+  }  // never committed: the temporary is removed
+  EXPECT_EQ(files(), 0u);
+  OutputFiles outputs;
+  outputs.stage(path("first.pfm"), "-o", bytes);
+  const std::string timings = "{}";
+  outputs.stage(path("second.json"), "--timings-out", std::as_bytes(std::span(timings)));
+  EXPECT_EQ(files(), 2u);  // two temporaries, no target yet
+  EXPECT_FALSE(std::filesystem::exists(path("first.pfm")));
+  outputs.commit();
+  EXPECT_TRUE(std::filesystem::exists(path("first.pfm")));
+  EXPECT_TRUE(std::filesystem::exists(path("second.json")));
+  EXPECT_EQ(files(), 2u);
 }
 
 TEST(Srgb, MatchesTheStandardAtItsKnots) {

@@ -92,6 +92,51 @@ TEST_F(Loader, NumberTooLargeForADoubleIsInvalidJson) {  // found by fuzz_loader
   one_error(replace(kValid, "[64, 32]", "[1e400, 32]"), "", "invalid JSON: number overflow");
 }
 
+TEST_F(Loader, NestingPast256LevelsIsRefusedBeforeParsing) {
+  const std::string deep = std::string(50000, '[') + std::string(50000, ']');
+  const Diagnostic d = one_error(replace(kValid, "\"output\": { \"size\": [64, 32] },", "\"description\": " + deep + ","), "",
+                                 "arrays and objects nest deeper than 256 levels");
+  EXPECT_EQ(d.where.line, 2);
+}
+
+TEST_F(Loader, NulByteIsAnErrorAtItsLine) {
+  const Diagnostic d = one_error(kValid + std::string("\n\0{}", 4), "", "a NUL byte at offset");
+  EXPECT_EQ(d.where.line, 18);
+}
+
+TEST_F(Loader, RepeatedKeyIsAnErrorAtTheRepeat) {
+  const Diagnostic d = one_error(replace(kValid, "\"output\": { \"size\": [64, 32] },", "\"output\": {},\n  \"output\": {},"),
+                                 "/output", "duplicate key \"output\" (first at line 2)");
+  EXPECT_EQ(d.where.line, 3);
+}
+
+TEST_F(Loader, TinyLightDirectionIsRefusedAtItsPointer) {
+  one_error(replace(kValid, "\"direction\": [0, -1, 0]", "\"direction\": [1e-200, -1e-200, 0]"), "/scene/lights/0/direction",
+            "light direction has length 1.41e-200; expected a direction of length at least 1e-6");
+}
+
+TEST_F(Loader, CameraUpAlongTheViewIsRefused) {
+  one_error(replace(kValid, "\"position\": [0, 1, 5]", "\"position\": [0, 5, 0]"), "/scene/camera",
+            "camera up is parallel to the view direction");
+}
+
+TEST_F(Loader, IntegerFormatForAFloatColourIsRefused) {
+  one_error(replace(kValid, "\"name\": \"lit\", \"type\": \"scene\",", "\"name\": \"lit\", \"type\": \"scene\", \"outputs\": { \"color\": { \"format\": \"r32_uint\" } },"),
+            "/graph/passes/1/outputs/color", "r32_uint does not; expected a format like rgba16_float");
+}
+
+TEST_F(Loader, RenderTargetsOfOnePassMustHaveOneSize) {
+  const std::string text = replace(kValid, "\"name\": \"lit\", \"type\": \"scene\",",
+                                   "\"name\": \"lit\", \"type\": \"scene\", \"outputs\": { \"color\": { \"size\": [32, 16] } },");
+  one_error(text, "/graph/passes/1/outputs/color", "\"color\" is 32x16, \"depth\" 64x32");
+}
+
+TEST_F(Loader, AVariantNeedsAName) {
+  Overrides o;
+  o.variants = {"final="};
+  one_error(kValid, "--variant final=", "expected --variant PASS=VARIANT with a variant's name", o);
+}
+
 TEST_F(Loader, UnknownKeySuggestsTheKnownOne) {
   const Diagnostic d = one_error(replace(kValid, "\"graph\"", "\"grpah\""), "/grpah", "did you mean \"graph\"");
   EXPECT_EQ(d.where.line, 9);

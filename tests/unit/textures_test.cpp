@@ -5,6 +5,7 @@
 #include <stb/stb_image_write.h>
 
 #include "physics/srgb.h"
+#include "graph/diagnostics.h"
 #include "passes/plumbing/textures.h"
 
 namespace volgraph::plumbing {
@@ -56,8 +57,18 @@ TEST(Textures, RefusesWhatIsNotAnImageAndSaysWhy) {
   const std::string text = "not an image at all";
   const auto* bytes = reinterpret_cast<const uint8_t*>(text.data());
   EXPECT_NE(image_problem(bytes, text.size()).find("not an image volgraph reads"), std::string::npos);
-  EXPECT_THROW(decode_image(bytes, text.size(), "x.png"), std::runtime_error);
+  EXPECT_THROW(decode_image(bytes, text.size(), "x.png"), ConfigError);  // the user's file: bad input, exit 2
   EXPECT_NE(image_file_problem("/no/such/file.png").find("cannot open"), std::string::npos);
+}
+
+// PNGs whose header is fine but whose texels cannot be decoded: found without decoding.
+TEST(Textures, RefusesATruncatedOrDamagedPngFromItsChunks) {
+  const std::string dir = std::string(VOLGRAPH_SOURCE_DIR) + "/tests/cli/bad/textures/";
+  EXPECT_NE(image_file_problem(dir + "truncated.png").find("a truncated PNG"), std::string::npos) << image_file_problem(dir + "truncated.png");
+  EXPECT_NE(image_file_problem(dir + "bad_crc.png").find("chunk IDAT at byte 33 fails its CRC"), std::string::npos)
+      << image_file_problem(dir + "bad_crc.png");
+  // The damage is real: stb_image cannot decode either.
+  for (const char* name : {"truncated.png", "bad_crc.png"}) EXPECT_THROW(read_image_file(dir + name), ConfigError) << name;
 }
 
 }  // namespace

@@ -1,0 +1,67 @@
+#include "tools/output_files.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "graph/diagnostics.h"
+
+namespace volgraph {
+namespace {
+
+std::string system_reason() { return std::strerror(errno); }
+
+}  // namespace
+
+void write_file_checked(const std::string& path, std::span<const std::byte> bytes, const std::string& name) {
+  const std::string named = name.empty() ? path : name;
+  FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) throw IoError(named + ": " + system_reason());
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  const bool flushed = written && std::fflush(f) == 0;
+  const std::string reason = flushed ? "" : system_reason();
+  const bool closed = std::fclose(f) == 0;
+  if (!flushed) throw IoError(named + ": " + reason);
+  if (!closed) throw IoError(named + ": " + system_reason());
+}
+
+void check_output_target(const std::string& path, const std::string& flag) {
+  auto fail = [&](const std::string& message) { throw ConfigError({{{"<command line>", flag + " " + path, 0}, message}}); };
+  const std::filesystem::path target(path);
+  std::error_code ec;
+  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+  if (!std::filesystem::is_directory(folder, ec)) fail("folder " + folder.string() + " does not exist");
+  if (std::filesystem::is_directory(target, ec)) fail("is a directory; expected a file name");
+  if (std::filesystem::exists(target, ec) && !std::filesystem::is_regular_file(target, ec)) {
+    fail("is not a regular file (a FIFO or device); expected a file name");
+  }
+}
+
+OutputFiles::~OutputFiles() {
+  std::error_code ec;
+  for (const Staged& s : staged_) std::filesystem::remove(s.temporary, ec);
+}
+
+void OutputFiles::stage(const std::string& path, const std::string& flag, std::span<const std::byte> bytes) {
+  check_output_target(path, flag);
+  const std::filesystem::path target(path);
+  const std::string temporary =
+      path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(staged_.size()) + target.extension().string();
+  staged_.push_back({temporary, path});
+  write_file_checked(temporary, bytes, path);
+}
+
+void OutputFiles::commit() {
+  for (size_t i = 0; i < staged_.size(); ++i) {
+    if (std::rename(staged_[i].temporary.c_str(), staged_[i].target.c_str()) != 0) {
+      throw IoError(staged_[i].target + ": " + system_reason());
+    }
+    staged_[i].temporary.clear();
+  }
+  staged_.clear();
+}
+
+}  // namespace volgraph

@@ -1,0 +1,49 @@
+// The files a command writes, all or none (DESIGN.md: no partial output): each is
+// written to a temporary name in its target's folder, with every write, flush and close
+// checked, and renamed into place only when every one of them was written.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace volgraph {
+
+// An output could not be written (disk full, I/O error): not the input's fault, so
+// exit 1, not 2.
+struct IoError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Writes `bytes` to `path` (created or truncated), checking every fwrite, the fflush and
+// the fclose; throws IoError "NAME: <the system's reason>" when one fails, NAME `path`
+// unless given (the target a temporary stands for).
+void write_file_checked(const std::string& path, std::span<const std::byte> bytes, const std::string& name = "");
+
+// Whether `path` can take a file: its folder exists and it is not itself a folder.
+// Throws ConfigError at `flag` (e.g. "-o") with what is wrong.
+void check_output_target(const std::string& path, const std::string& flag);
+
+class OutputFiles {
+ public:
+  OutputFiles() = default;
+  OutputFiles(const OutputFiles&) = delete;
+  OutputFiles& operator=(const OutputFiles&) = delete;
+  ~OutputFiles();  // removes the temporaries of files never committed
+
+  // Checks the target (check_output_target) and writes `bytes` to a temporary name
+  // beside it; throws IoError when the write fails.
+  void stage(const std::string& path, const std::string& flag, std::span<const std::byte> bytes);
+  // Renames every staged file into place; throws IoError when one cannot be.
+  void commit();
+
+ private:
+  struct Staged {
+    std::string temporary, target;
+  };
+  std::vector<Staged> staged_;
+};
+
+}  // namespace volgraph
