@@ -24,7 +24,7 @@ std::optional<RayInterval> volume_interval(const MediaField& field, size_t i, co
 }
 
 double height_fog_mean_density(const HeightFog& fog, const RaySegment& s) {
-  const double length = s.t1 - s.t0;
+  const double length = std::max(s.t1 - s.t0, 1e-30);  // media_average.glsl's guard: the density at t0
   const double start_y = s.origin[1] + s.t0 * s.ray[1];
   const double depth = height_fog_optical_depth(1.0, fog.falloff, fog.base_height, start_y, s.ray[1], length);
   return std::min(depth / length, std::exp(kMaxExponent<double>));  // MediaField's largest density

@@ -28,9 +28,10 @@ vec2 volume_interval(MediumVolume v, vec3 origin, vec3 ray) {
   return int(v.size_shape.w) == SHAPE_BOX ? unit_box_interval(o, d) : unit_ball_interval(o, d);
 }
 
-// At most sample_media's largest density, e^MAX_EXPONENT (the closed form overflows past it).
+// At most sample_media's largest density, e^MAX_EXPONENT (the closed form overflows past
+// it); a froxel whose depth range rounds to nothing gets the density at t0.
 float height_fog_mean_density(MediaField field, vec3 origin, vec3 ray, float t0, float t1) {
-  const float len = t1 - t0;
+  const float len = max(t1 - t0, 1e-30);
   const float depth = height_fog_optical_depth(vec3(1.0), field.height.y, field.height.x, origin.y + t0 * ray.y, ray.y, len).x;
   return min(depth / len, exp(MAX_EXPONENT));
 }

@@ -8,14 +8,19 @@
 //   of its depth range inside the slab, so the chain's optical depth is the exact one at
 //   every slice count; what is left is rgba16f storage (transmittance and colour, 2^−11
 //   relative each): largest relative error over the image ≤ 2e-3 at 64, 128 and 256
-//   slices. Point-sampled froxels (full or empty by their centre) put each face on a
-//   slice boundary: 3–5 % off, changing sign between slice counts.
-// - a noise volume (3 octaves, features finer than a froxel): froxel_temporal's
-//   in-scattering, accumulated over 1, 4 and 16 jittered frames (the jitter moves each
-//   froxel's ray across it and its depth sub-samples along it), against the froxel's
-//   exact average — the density integrated over its footprint and depth range on the CPU
-//   (physics/media_field.h). Metric: relative mean absolute error Σ|a − ref| / Σ|ref|
-//   over the volume (tests/support/image_compare.h); it falls with frames.
+//   slices (measured 8.1e-4, 9.0e-4, 9.0e-4). Exact at each count, the error has no
+//   discretisation left to fall: the bound holds at every count instead. Point-sampled
+//   froxels (full or empty by their centre) moved each face to a slice boundary: 6.5 %
+//   and 6.2 % off at 64 and 128 slices, 9.0e-4 at 256 where the two faces' errors cancel.
+// - a noise volume (3 octaves, features of 0.5 to 2 m in froxels 1 m deep): the mean of
+//   froxel_voxelize's σs over 1, 4, 16 and 64 jittered frames (the jitter moves each
+//   froxel's ray across it and its depth sub-samples along it; froxel_temporal blends the
+//   frames so) against each froxel's exact average — the density integrated over its
+//   footprint and depth range on the CPU (physics/media_field.h; 3 × 3 rays × 64 steps,
+//   1.5e-3 from 6 × 6 × 128). Metric: relative mean absolute error Σ|a − ref| / Σ|ref| over
+//   the volume's rgb: measured 1.5 %, 2.4 %, 1.2 %, 0.52 % (frame 0's centred strata are a
+//   midpoint rule, better than the first few jittered frames; from 4 frames on it falls);
+//   centre samples gave 21.6 %, 12.9 %, 4.8 %, 2.2 %.
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -188,6 +193,7 @@ TEST_P(FroxelVoxelize, JitteredFramesConvergeToTheFroxelAverageOfANoiseVolume) {
     errors.push_back(rgb_error(mean, exact));
     std::printf("noise volume, %d frames: relative mean error %.4f\n", frame, errors.back());
   }
+  // Bounds about twice the measured errors; centre samples miss every one of them.
   EXPECT_LT(errors[0], 0.03);  // frame 0: the centre ray, each stratum's centre
   EXPECT_LT(errors[1], 0.04);
   EXPECT_LT(errors[2], errors[1]);

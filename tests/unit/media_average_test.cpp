@@ -6,7 +6,8 @@
 // - a uniform volume's mean density is the fraction of the segment inside: against a
 //   midpoint rule of MediaField's point density (1e4 points: ±1e-4 of a fraction, a
 //   point's half-width at each surface);
-// - the height fog's mean density against adaptive Simpson quadrature (1e-9 relative);
+// - the height fog's mean density against adaptive Simpson quadrature (1e-9 relative),
+//   and on a segment of no length the density there;
 // - a faded or noisy volume's sub-samples: at the strata's centres (jitter 0) near the
 //   mean, and averaged over a sweep of jitters (equally spaced in (−½, ½)) the mean itself
 //   to the sweep's resolution;
@@ -137,6 +138,10 @@ TEST(MediaAverage, TheHeightFogsMeanMatchesQuadrature) {
       EXPECT_NEAR(height_fog_mean_density(fog, s), want, 1e-9 * want) << "t0 " << t0;
     }
   }
+  // A segment of no length (a froxel whose depth range rounds to nothing): the density there.
+  const RaySegment point{kOrigin, {0.2, -0.1, -1}, 3.0, 3.0};
+  const double there = field.height_fog_density(at(point.origin, point.ray, 3.0));
+  EXPECT_NEAR(height_fog_mean_density(fog, point), there, 1e-12 * there);
 }
 
 TEST(MediaAverage, SubSamplesOfFadedOrNoisyVolumesConvergeOverJitters) {
