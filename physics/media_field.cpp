@@ -21,16 +21,6 @@ int shape_code(Shape shape) {
   }
 }
 
-void add_medium(MediaSample& s, double& g_weight, const Medium& m, double density) {
-  const glm::dvec3 sigma_s = vec(m.sigma_s) * density;
-  s.sigma_s = to_vec3(vec(s.sigma_s) + sigma_s);
-  s.sigma_a = to_vec3(vec(s.sigma_a) + vec(m.sigma_a) * density);
-  s.emission = to_vec3(vec(s.emission) + vec(m.emission) * density);
-  const double weight = sigma_s.x + sigma_s.y + sigma_s.z;
-  s.g += m.g * weight;
-  g_weight += weight;
-}
-
 GpuMediumCoefficients gpu_coefficients(const Medium& m) {
   GpuMediumCoefficients c{};
   for (size_t i = 0; i < 3; ++i) {
@@ -43,6 +33,22 @@ GpuMediumCoefficients gpu_coefficients(const Medium& m) {
 }
 
 }  // namespace
+
+void MediaSum::add(const Medium& m, double density) {
+  const glm::dvec3 sigma_s = vec(m.sigma_s) * density;
+  sum_.sigma_s = to_vec3(vec(sum_.sigma_s) + sigma_s);
+  sum_.sigma_a = to_vec3(vec(sum_.sigma_a) + vec(m.sigma_a) * density);
+  sum_.emission = to_vec3(vec(sum_.emission) + vec(m.emission) * density);
+  const double weight = sigma_s.x + sigma_s.y + sigma_s.z;
+  sum_.g += m.g * weight;
+  g_weight_ += weight;
+}
+
+MediaSample MediaSum::result() const {
+  MediaSample s = sum_;
+  s.g = g_weight_ > 0 ? s.g / g_weight_ : 0;
+  return s;
+}
 
 MediaField::MediaField(Media media) : media_(std::move(media)) {
   for (const MediumVolume& v : media_.volumes) world_to_local_.push_back(inverse_affine(model_matrix(v.transform)));
@@ -85,11 +91,9 @@ double MediaField::volume_density(size_t i, const Vec3& p) const {
 }
 
 MediaSample MediaField::sample(const Vec3& p) const {
-  MediaSample s;
-  double g_weight = 0;
-  visit(p, [&](const Medium& m, double density) { add_medium(s, g_weight, m, density); });
-  s.g = g_weight > 0 ? s.g / g_weight : 0;
-  return s;
+  MediaSum sum;
+  visit(p, [&](const Medium& m, double density) { sum.add(m, density); });
+  return sum.result();
 }
 
 GpuMediaField pack_media(const Media& media) {

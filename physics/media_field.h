@@ -22,6 +22,18 @@ struct MediaSample {
   Vec3 sigma_t() const { return to_vec3(vec(sigma_s) + vec(sigma_a)); }
 };
 
+// Media summed with their densities as MediaField::sample sums them: each medium's σs,
+// σa and emission times its density, g the σs-weighted mean of the media's.
+class MediaSum {
+ public:
+  void add(const Medium& m, double density);
+  MediaSample result() const;
+
+ private:
+  MediaSample sum_;
+  double g_weight_ = 0;
+};
+
 // The media with each volume's world-to-local transform computed once.
 class MediaField {
  public:
@@ -48,6 +60,7 @@ class MediaField {
   double inside_distance(size_t i, const Vec3& p) const;
 
   const Media& media() const { return media_; }
+  const Mat4& world_to_local(size_t i) const { return world_to_local_[i]; }
 
  private:
   double inside_distance_local(size_t i, const Vec3& local) const;

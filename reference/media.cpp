@@ -38,48 +38,14 @@ Vec3 over(const Vec3& a, const Vec3& b) { return {a[0] / b[0], a[1] / b[1], a[2]
 
 Vec3 sigma_t(const Medium& m) { return add(m.sigma_s, m.sigma_a); }
 
-std::optional<Interval> box_interval(const Vec3& o, const Vec3& d) {
-  double enter = -std::numeric_limits<double>::infinity(), exit = std::numeric_limits<double>::infinity();
-  for (size_t k = 0; k < 3; ++k) {
-    if (d[k] == 0) {
-      if (std::abs(o[k]) > 0.5) return std::nullopt;
-      continue;
-    }
-    double a = (-0.5 - o[k]) / d[k], b = (0.5 - o[k]) / d[k];
-    if (a > b) std::swap(a, b);
-    enter = std::max(enter, a);
-    exit = std::min(exit, b);
-  }
-  if (enter > exit) return std::nullopt;
-  return Interval{enter, exit};
-}
-
-// |o + t·d|² = 1, roots by the cancellation-free quadratic formula (Press et al.,
-// Numerical Recipes, 3rd ed., eq. 5.6.4–5.6.5).
-std::optional<Interval> ball_interval(const Vec3& o, const Vec3& d) {
-  const double a = physics::dot(d, d), b = 2 * physics::dot(o, d), c = physics::dot(o, o) - 1;
-  const double discriminant = b * b - 4 * a * c;
-  if (a == 0 || discriminant < 0) return std::nullopt;
-  const double q = -(b + std::copysign(std::sqrt(discriminant), b)) / 2;
-  if (q == 0) return Interval{0, 0};
-  const double r1 = q / a, r2 = c / q;
-  return Interval{std::min(r1, r2), std::max(r1, r2)};
-}
-
-// The volume's size as a scale of the unit shape: box edges, a sphere's radius, an
-// ellipsoid's radii (local units per unit-shape unit).
-Vec3 unit_shape_size(const MediumVolume& v) {
-  return v.shape == Shape::sphere ? Vec3{v.size[0], v.size[0], v.size[0]} : v.size;
-}
-
-Mat4 unit_shape_to_volume(const MediumVolume& v) { return glm::scale(Mat4(1), physics::vec(unit_shape_size(v))); }
+Mat4 unit_shape_to_volume(const MediumVolume& v) { return glm::scale(Mat4(1), physics::vec(physics::unit_shape_scale(v))); }
 
 // Where the density reaches 1 inside the edge fade (MediaField's inside distance ≥ fade),
 // as a scale of the unit shape: the box's edges less the fade on each side, the sphere's
 // radius less the fade, the ellipsoid's radii by 1 − fade / smallest radius. 0: no core.
 Vec3 core_scale(const MediumVolume& v) {
   const double fade = v.noise.edge_fade;
-  const Vec3 size = unit_shape_size(v);
+  const Vec3 size = physics::unit_shape_scale(v);
   if (fade == 0 || std::min({size[0], size[1], size[2]}) <= 0) return {1, 1, 1};
   if (v.shape == Shape::box) {
     const Vec3 s{1 - 2 * fade / size[0], 1 - 2 * fade / size[1], 1 - 2 * fade / size[2]};
@@ -107,15 +73,11 @@ Vec3 transmittance_of(const Vec3& optical_depth) {
           physics::transmittance(optical_depth[2], 1.0)};
 }
 
-std::optional<Interval> unit_shape_interval(Shape shape, const Vec3& origin, const Vec3& direction) {
-  return shape == Shape::box ? box_interval(origin, direction) : ball_interval(origin, direction);
-}
-
 SceneMedia::SceneMedia(const Media& media, const MediaQuadrature& quadrature) : field_(media), quadrature_(quadrature) {
   for (const MediumVolume& v : media.volumes) {
     const Mat4 model = physics::model_matrix(v.transform) * unit_shape_to_volume(v);
     const bool uniform = v.noise.edge_fade == 0 && v.noise.octaves == 0;
-    const Vec3 size = unit_shape_size(v);
+    const Vec3 size = physics::unit_shape_scale(v);
     const bool flat = std::min({size[0], size[1], size[2]}) <= 0;  // no inside: nothing along any ray
     volumes_.push_back({v.shape, flat ? Mat4(1) : physics::inverse_affine(model), core_scale(v), uniform, flat});
   }
@@ -127,7 +89,7 @@ std::string SceneMedia::under_resolved() const {
     const MediumVolume& v = media.volumes[i];
     if (v.noise.octaves == 0 || volumes_[i].flat) continue;
     // The longest chord, in local units: the box's diagonal, twice the largest radius.
-    const Vec3 size = unit_shape_size(v);
+    const Vec3 size = physics::unit_shape_scale(v);
     const double longest = v.shape == Shape::box ? std::sqrt(physics::dot(size, size)) : 2 * std::max({size[0], size[1], size[2]});
     const double cells = longest / (v.noise.scale / std::ldexp(1.0, v.noise.octaves - 1));
     if (cells * quadrature_.panels_per_noise_cell > kMaxPanelsPerChord) {
@@ -158,15 +120,15 @@ std::optional<SceneMedia::VolumeChord> SceneMedia::chord(size_t i, const Vec3& o
   const Volume& v = volumes_[i];
   if (v.flat) return std::nullopt;
   const Vec3 o = physics::transform_point(v.inverse, origin), d = transform_vector(v.inverse, direction);
-  const std::optional<Interval> shape = unit_shape_interval(v.shape, o, d);
+  const std::optional<Interval> shape = physics::unit_shape_interval(v.shape, o, d);
   if (!shape) return std::nullopt;
   VolumeChord c{*shape, std::nullopt, 0, 0};
   if (v.uniform) return c;
-  if (v.core_scale[0] > 0) c.core = unit_shape_interval(v.shape, over(o, v.core_scale), over(d, v.core_scale));
+  if (v.core_scale[0] > 0) c.core = physics::unit_shape_interval(v.shape, over(o, v.core_scale), over(d, v.core_scale));
   // Lengths in the volume's local units become metres along the ray: a local unit is
   // 1 / |d_local| m, d_local the direction in local units.
   const MediumVolume& volume = field_.media().volumes[i];
-  const Vec3 d_local = times(d, unit_shape_size(volume));
+  const Vec3 d_local = times(d, physics::unit_shape_scale(volume));
   const double metres_per_local = 1 / std::sqrt(physics::dot(d_local, d_local));
   c.panel = std::numeric_limits<double>::infinity();
   if (volume.noise.edge_fade > 0) c.panel = volume.noise.edge_fade * metres_per_local / quadrature_.panels_per_edge_fade;

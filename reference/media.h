@@ -18,18 +18,13 @@
 #include "graph/scene/scene.h"
 #include "physics/camera.h"
 #include "physics/media_field.h"
+#include "physics/shape_interval.h"
 
 namespace volgraph::reference {
 
-// A parameter interval [enter, exit] of a ray, enter ≤ exit.
-struct Interval {
-  double enter = 0, exit = 0;
-};
-
-// Where the ray origin + t·direction is inside the unit shape of `shape` (box: edges 1;
-// sphere, ellipsoid: radius 1), in that shape's space: analytic slabs or quadric (a
-// volume's size scales the unit shape before its transform).
-std::optional<Interval> unit_shape_interval(Shape shape, const Vec3& origin, const Vec3& direction);
+// A parameter interval [enter, exit] of a ray, enter ≤ exit; where a ray runs inside a
+// volume's unit shape: physics/shape_interval.h.
+using Interval = physics::RayInterval;
 
 // Beer–Lambert per channel: e^(−τ) of an optical depth τ.
 Vec3 transmittance_of(const Vec3& optical_depth);

@@ -134,3 +134,16 @@ config_tests("^FogAccuracy\\.ASunFivePercentDimmer" tests/oracle_global_fog.json
 config_tests("^FogAccuracy\\.NoisyVolume" tests/oracle_noise_volume.json graphs/raymarch_fog.json)
 # tests/reference: the CPU reference against the GPU's golden image of demo_primitives.
 config_tests("^ReferenceVersusGpu\\.DemoPrimitivesMatchesTheGoldenImage" demo_primitives.json)
+
+# ---- froxel_voxelize's average (tests/gpu/froxel_voxelize_test.cpp, tests/unit/media_average_test.cpp)
+# The slab: scene → froxel_voxelize → froxel_scatter → scatter_integrate → froxel_apply →
+# composite; the noise volume: froxel_voxelize alone; the average's CPU twin, and
+# media_average.glsl against it.
+set(voxelize_slab "(^|/)FroxelVoxelize\\.AnAbsorbingSlab")
+set(voxelize_noise "(^|/)FroxelVoxelize\\.JitteredFrames")
+pass_tests(froxel_voxelize "${voxelize_slab}" "${voxelize_noise}" "^(MediaAverage|ShapeInterval)\\." "(^|/)PhysicsTwins\\.MediaAverage")
+pass_tests(froxel_scatter "${voxelize_slab}")
+pass_tests(scatter_integrate "${voxelize_slab}")
+pass_tests(froxel_apply "${voxelize_slab}")
+pass_tests(scene "${voxelize_slab}")
+pass_tests(composite "${voxelize_slab}")

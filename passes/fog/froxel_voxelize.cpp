@@ -1,7 +1,10 @@
 // froxel_voxelize (Wronski 2014, Hillaire 2015): the scene's media (σs, σa, g, emission)
-// sampled at every froxel of a camera-frustum grid — `tile` × `tile` pixels (8) a froxel,
-// `slices` in view depth from `near` to `far`, spaced linearly or exponentially — at the
-// froxel's centre plus a per-frame jitter. Also packs the fog passes' frame block.
+// at every froxel of a camera-frustum grid — `tile` × `tile` pixels (8) a froxel,
+// `slices` in view depth from `near` to `far`, spaced linearly or exponentially — averaged
+// over the froxel's depth range along its ray: exactly for the global fog, the height fog
+// and volumes without edge fade or noise, by stratified sub-samples inside faded or noisy
+// volumes (shaders/include/media_average.glsl ↔ physics/media_average.h). The ray and the
+// sub-samples move by a per-frame jitter. Also packs the fog passes' frame block.
 // Shader: shaders/froxel_voxelize.comp.
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
@@ -16,7 +19,9 @@ struct FroxelVoxelizeTable : PassTable {
   FroxelVoxelizeTable();
   // Variants.
   VariantHandle jittered =
-      variant("jittered", "one sample per froxel, at its centre plus a per-frame jitter (Halton 2, 3, 5) when `jitter` is on");
+      variant("jittered",
+              "the media averaged over each froxel's depth along its ray (exact for fog, height fog and uniform volumes; 4 stratified "
+              "sub-samples in faded or noisy volumes), the ray and the sub-samples moved by a per-frame jitter (Halton 2, 3, 5) when `jitter` is on");
   // Parameters.
   ParamHandle<int64_t> tile = integer("tile", 8, 1, 64, "pixels", "froxels are tile × tile pixels of the output");
   ParamHandle<int64_t> slices = integer("slices", 64, 1, 512, "", "froxels in view depth");
@@ -24,7 +29,8 @@ struct FroxelVoxelizeTable : PassTable {
   ParamHandle<double> far = number("far", 100, 1e-2, 1e6, "m", "view depth where the grid ends");
   ParamHandle<std::string> distribution =
       choice("distribution", "exponential", {"exponential", "linear"}, "how slices are spaced in view depth");
-  ParamHandle<bool> jitter = flag("jitter", true, "move the sample inside its froxel every frame (frame 0 samples the centre)");
+  ParamHandle<bool> jitter = flag("jitter", true,
+                                 "move each froxel's ray across it and its sub-samples along it every frame (frame 0: the centre ray, the strata's centres)");
   ParamHandle<std::array<double, 3>> ambient =
       vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the media scatter (froxel_scatter adds it)");
   // Slots.

@@ -233,10 +233,11 @@ FogCase layer_under_box(bool box, int shadow_steps) {
   return c;
 }
 
-// shadowed/open is e^(−1) under the box and 1 beside it (2 %) over the layer's lit
-// pixels, leaving out the columns whose blend crosses x = 0; `also(k)` checks more at
-// each pixel it compares.
-void expect_box_shadow(const Texels& open, const Texels& shadowed, const std::function<void(size_t k)>& also = {}) {
+// shadowed/open is e^(−1) under the box and 1 beside it (to `tolerance`, relative) over
+// the layer's lit pixels, leaving out the columns whose blend crosses x = 0; `also(k)`
+// checks more at each pixel it compares.
+void expect_box_shadow(const Texels& open, const Texels& shadowed, const std::function<void(size_t k)>& also = {},
+                       double tolerance = 2e-2) {
   double brightest = 0;
   for (size_t k = 0; k < open.rgba.size(); k += 4) brightest = std::max(brightest, double(open.rgba[k]));
   ASSERT_GT(brightest, 0.0);
@@ -247,7 +248,7 @@ void expect_box_shadow(const Texels& open, const Texels& shadowed, const std::fu
       if (open.rgba[k] < 1e-2 * brightest || (i + 8 > kWidth / 2 && i < kWidth / 2 + 8)) continue;
       const double want = i < kWidth / 2 ? std::exp(-1.0) : 1.0;
       (i < kWidth / 2 ? under : beside)++;
-      EXPECT_NEAR(shadowed.rgba[k] / open.rgba[k], want, 2e-2 * want) << i << ", " << j;
+      EXPECT_NEAR(shadowed.rgba[k] / open.rgba[k], want, tolerance * want) << i << ", " << j;
       if (also) also(k);
     }
   }
@@ -277,8 +278,12 @@ TEST_P(FroxelFog, SkippingEmptyFroxelsChangesNothing) {
 // shadow map's view holds the media volumes, and an opacity shadow map of 64 layers over
 // it replaces the march (shadow_steps 0). The layer's own optical depth toward the light
 // is linear in height (trilinear lookups reproduce it) and the box's is whole below it:
-// the ratio is e^(−1) as before (2 % for the march of 2 steps a layer and fp16 τ), and
-// the image agrees with the 256-step march's to 3 % wherever the layer is lit.
+// the ratio is e^(−1) as before, to 3 %: the march of 2 steps a layer and fp16 τ, and the
+// froxels that the layer's bottom face cuts — they hold its medium in part (froxel_voxelize
+// averages it over the froxel) and are lit at their centre, which may lie below the layer,
+// outside the media the map was fitted to (where those centres fall moves the ratio:
+// measured −2.2 % at 64 slices, +2.4 % at 256). The image agrees with the 256-step
+// march's to 3 % wherever the layer is lit.
 FogCase layer_under_box_by_opacity_map(bool box) {
   FogCase c = layer_under_box(box, 0);
   c.lights = R"([ { "type": "directional", "direction": [0, -1, 0], "irradiance": [3, 3, 3] } ])";
@@ -290,7 +295,7 @@ TEST_P(FroxelFog, ADenseBoxShadowsTheFogUnderItThroughAnOpacityShadowMap) {
   const Texels shadowed = render(load(layer_under_box_by_opacity_map(true)));
   const Texels marched = render(load(layer_under_box(true, 256)));
   expect_box_shadow(render(load(layer_under_box_by_opacity_map(false))), shadowed,
-                    [&](size_t k) { EXPECT_NEAR(shadowed.rgba[k], marched.rgba[k], 3e-2 * marched.rgba[k]) << k / 4; });
+                    [&](size_t k) { EXPECT_NEAR(shadowed.rgba[k], marched.rgba[k], 3e-2 * marched.rgba[k]) << k / 4; }, 3e-2);
 }
 
 // Surfaces too: a floor (ρ 0.5, y = −0.5) under the fog layer (τ 1 straight up, over

