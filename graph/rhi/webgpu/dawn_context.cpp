@@ -89,13 +89,19 @@ void DawnContext::request_device() {
   descriptor.requiredFeatureCount = features.size();
   descriptor.requiredFeatures = features.data();
   descriptor.requiredLimits = &limits;
-  descriptor.SetUncapturedErrorCallback([this](const wgpu::Device&, wgpu::ErrorType type, wgpu::StringView message) {
-    on_error(type, text_of(message));
-  });
-  descriptor.SetDeviceLostCallback(wgpu::CallbackMode::AllowSpontaneous,
-                                   [this](const wgpu::Device&, wgpu::DeviceLostReason reason, wgpu::StringView message) {
-                                     on_lost(reason, text_of(message));
-                                   });
+  // Dawn takes the uncaptured-error callback as a function and a userdata pointer (it
+  // may be called any number of times, so it owns no callable); the loss alike.
+  descriptor.SetUncapturedErrorCallback(
+      [](const wgpu::Device&, wgpu::ErrorType type, wgpu::StringView message, DawnContext* self) {
+        self->on_error(type, text_of(message));
+      },
+      this);
+  descriptor.SetDeviceLostCallback(
+      wgpu::CallbackMode::AllowSpontaneous,
+      [](const wgpu::Device&, wgpu::DeviceLostReason reason, wgpu::StringView message, DawnContext* self) {
+        self->on_lost(reason, text_of(message));
+      },
+      this);
   std::string message;
   wait(adapter_.RequestDevice(&descriptor, wgpu::CallbackMode::WaitAnyOnly,
                               [this, &message](wgpu::RequestDeviceStatus status, wgpu::Device device, wgpu::StringView text) {

@@ -2698,27 +2698,18 @@ template <typename L, typename Cb, typename>
 void DeviceDescriptor::SetUncapturedErrorCallback(L callback) {
     assert(uncapturedErrorCallbackInfo.callback == nullptr);
     using F = UncapturedErrorCallback<void>;
-    if constexpr (std::is_convertible_v<L, F*>) {
-        uncapturedErrorCallbackInfo.callback = [](WGPUDevice const* device, WGPUErrorType type,
-                                                  WGPUStringView message, void* callbackParam, void*) {
-            auto cb = reinterpret_cast<F*>(callbackParam);
-            detail::WithBorrowedDevice(device, [&](const Device& d) {
-                (*cb)(d, static_cast<ErrorType>(type), StringView(message));
-            });
-        };
-        uncapturedErrorCallbackInfo.userdata1 = reinterpret_cast<void*>(+callback);
-    } else {
-        // Called any number of times, with no last call to free it after: the callable
-        // lives as long as the process (as in Dawn's header).
-        uncapturedErrorCallbackInfo.callback = [](WGPUDevice const* device, WGPUErrorType type,
-                                                  WGPUStringView message, void* callbackParam, void*) {
-            auto lambda = reinterpret_cast<L*>(callbackParam);
-            detail::WithBorrowedDevice(device, [&](const Device& d) {
-                (*lambda)(d, static_cast<ErrorType>(type), StringView(message));
-            });
-        };
-        uncapturedErrorCallbackInfo.userdata1 = reinterpret_cast<void*>(new L(std::move(callback)));
-    }
+    // Called any number of times with no last call to free a callable after, so, as in
+    // Dawn's header, only a function (or captureless lambda) is taken; bind state
+    // through the userdata overload.
+    static_assert(std::is_convertible_v<L, F*>, "Uncaptured error callback cannot be a binding lambda");
+    uncapturedErrorCallbackInfo.callback = [](WGPUDevice const* device, WGPUErrorType type,
+                                              WGPUStringView message, void* callbackParam, void*) {
+        auto cb = reinterpret_cast<F*>(callbackParam);
+        detail::WithBorrowedDevice(device, [&](const Device& d) {
+            (*cb)(d, static_cast<ErrorType>(type), StringView(message));
+        });
+    };
+    uncapturedErrorCallbackInfo.userdata1 = reinterpret_cast<void*>(+callback);
     uncapturedErrorCallbackInfo.userdata2 = nullptr;
 }
 
