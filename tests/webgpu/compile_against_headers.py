@@ -12,6 +12,7 @@
 import concurrent.futures
 import json
 import os
+import re
 import shlex
 import subprocess
 import sys
@@ -30,6 +31,35 @@ def arguments(entry):
 def uses_headers(args, include_dir):
     return any(a in ("-I", "-isystem") and args[i + 1] == include_dir for i, a in enumerate(args[:-1])) or \
         ("-I" + include_dir) in args
+
+
+INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
+
+
+def include_dirs(args):
+    return [args[i + 1] for i, a in enumerate(args[:-1]) if a == "-I"] + [a[2:] for a in args if a.startswith("-I") and len(a) > 2]
+
+
+def reaches_webgpu(path, dirs, seen):
+    """Whether a file includes <webgpu/...>, directly or through the project's headers."""
+    if path in seen:
+        return False
+    seen.add(path)
+    try:
+        with open(path) as f:
+            text = f.read()
+    except OSError:
+        return False
+    for name in INCLUDE.findall(text):
+        if name.startswith("webgpu/"):
+            return True
+        for d in [os.path.dirname(path)] + dirs:
+            candidate = os.path.normpath(os.path.join(d, name))
+            if os.path.isfile(candidate):
+                if reaches_webgpu(candidate, dirs, seen):
+                    return True
+                break
+    return False
 
 
 def syntax_only(args, build_headers, other_headers):
@@ -61,7 +91,12 @@ def jobs():
 
 
 def check_tus(entries, build_headers, other_headers):
-    chosen = [e for e in entries if uses_headers(arguments(e), build_headers)]
+    # Every unit on whose include path the headers are, that includes them (directly or
+    # through the project's headers): the others cannot tell the two headers apart.
+    chosen = [e for e in entries if uses_headers(arguments(e), build_headers) and
+              reaches_webgpu(os.path.join(e["directory"], e["file"]), include_dirs(arguments(e)), set())]
+    files = sorted({e["file"] for e in chosen})
+    chosen = [next(e for e in chosen if e["file"] == f) for f in files]  # a unit built twice once
     if not chosen:
         print(f"no translation unit includes {build_headers}: nothing checked", file=sys.stderr)
         return 1
