@@ -3,6 +3,9 @@
 #include "graph/rhi/webgpu/dawn_context.h"
 
 #include <cstdint>
+#include <optional>
+
+#include "graph/rhi/webgpu/adapter_choice.h"
 
 namespace volgraph::webgpu {
 namespace {
@@ -70,6 +73,13 @@ void DawnContext::request_adapter() {
   if (!adapter_) throw DeviceError(DeviceError::Kind::no_device, "Dawn offers no adapter: " + message);
   wgpu::AdapterInfo info;
   adapter_.GetInfo(&info);
+  const std::optional<std::string> fallback = fallback_adapter_reason(info.backendType, info.adapterType, info.device);
+  if (fallback && !options_.allow_fallback_adapter) {
+    throw DeviceError(DeviceError::Kind::no_device,
+                      "Dawn offers only " + *fallback +
+                          "; install a Vulkan driver (lavapipe: mesa-vulkan-drivers) or check VK_ICD_FILENAMES, or "
+                          "set VOLGRAPH_WEBGPU_ALLOW_FALLBACK=1 to render on it anyway");
+  }
   info_ = {"webgpu", text_of(info.device), "Dawn on " + text_of(info.description)};
   timestamps_ = adapter_.HasFeature(wgpu::FeatureName::TimestampQuery);
 }

@@ -23,11 +23,15 @@ struct DawnOptions {
   // command line). Off: they are only collected, for take_messages() (tests).
   bool errors_throw = true;
   SimulatedFault simulate = SimulatedFault::none;
+  // Off: Dawn's Null backend and CPU fallback adapters other than lavapipe are refused
+  // (adapter_choice.h) with DeviceError no_device. On: any adapter Dawn offers.
+  bool allow_fallback_adapter = false;
 };
 
 class DawnContext {
  public:
-  // Throws DeviceError (no_device) when Dawn offers no adapter or device.
+  // Throws DeviceError (no_device) when Dawn offers no adapter or device, or only a
+  // fallback adapter that options do not allow.
   static std::unique_ptr<DawnContext> create(const DawnOptions& options = {});
   ~DawnContext();
   DawnContext(const DawnContext&) = delete;
