@@ -16,7 +16,7 @@ render() { "$volgraph" render "$config" --backend webgpu --size 64x36 -o "$tmp/o
 render
 code=$?
 [ "$code" -eq 1 ] || fail "no Vulkan driver: exit $code (expected 1); stderr: $(cat "$tmp/err")"
-expected="volgraph: no usable GPU: Dawn offers only Dawn's Null backend (no Vulkan driver was found), which renders nothing"
+expected="volgraph: no usable GPU: Dawn offers only the Null backend (no Vulkan driver was found), which renders nothing"
 grep -qF -- "$expected" "$tmp/err" || fail "no Vulkan driver: expected '$expected', got: $(cat "$tmp/err")"
 [ "$(grep -c '^volgraph:' "$tmp/err")" -eq 1 ] || fail "more than one volgraph line: $(cat "$tmp/err")"
 [ ! -e "$tmp/out.pfm" ] || fail "no Vulkan driver: an image was written"

@@ -6,7 +6,7 @@ namespace volgraph::webgpu {
 std::optional<std::string> fallback_adapter_reason(wgpu::BackendType backend, wgpu::AdapterType type,
                                                    std::string_view device) {
   if (backend == wgpu::BackendType::Null) {
-    return "Dawn's Null backend (no Vulkan driver was found), which renders nothing";
+    return "the Null backend (no Vulkan driver was found), which renders nothing";
   }
   if (type != wgpu::AdapterType::CPU) return std::nullopt;
   if (device.find("llvmpipe") != std::string_view::npos) return std::nullopt;  // lavapipe

@@ -24,6 +24,16 @@ std::string_view error_type_name(wgpu::ErrorType type) {
   }
 }
 
+// Dawn's message up to its first line break: the rest is Dawn's call context.
+std::string first_line(const std::string& message) { return message.substr(0, message.find('\n')); }
+
+// Whether a loss message names one of Vulkan's out-of-memory results (Vulkan 1.3 spec,
+// VkResult): Dawn reports a failed memory bind by losing the device, with that name.
+bool names_out_of_memory(std::string_view message) {
+  return message.find("VK_ERROR_OUT_OF_DEVICE_MEMORY") != std::string_view::npos ||
+         message.find("VK_ERROR_OUT_OF_HOST_MEMORY") != std::string_view::npos;
+}
+
 // Dawn rounds time stamps to 100 µs by default (a fingerprinting guard for browsers);
 // volgraph measures passes, so it asks for them unrounded.
 constexpr const char* kDisabledToggles[] = {"timestamp_quantization"};
@@ -50,6 +60,23 @@ void DawnContext::wait(const wgpu::Future& future, std::string_view what) const 
   if (instance_.WaitAny(future, UINT64_MAX) != wgpu::WaitStatus::Success) {
     throw DeviceError(DeviceError::Kind::other, "Dawn: waiting for " + std::string(what) + " failed");
   }
+}
+
+void DawnContext::begin_allocation() const { device_.PushErrorScope(wgpu::ErrorFilter::OutOfMemory); }
+
+void DawnContext::end_allocation(std::string_view what) {
+  std::optional<std::string> out_of_memory;
+  wait(device_.PopErrorScope(wgpu::CallbackMode::WaitAnyOnly,
+                             [&out_of_memory](wgpu::PopErrorScopeStatus status, wgpu::ErrorType type, wgpu::StringView message) {
+                               if (status == wgpu::PopErrorScopeStatus::Success && type == wgpu::ErrorType::OutOfMemory) {
+                                 out_of_memory = text_of(message);
+                               }
+                             }),
+       "an error scope");
+  const std::string creating = "Dawn: creating " + std::string(what) + ": ";
+  if (out_of_memory) throw DeviceError(DeviceError::Kind::out_of_memory, creating + first_line(*out_of_memory));
+  const std::lock_guard lock(mutex_);
+  if (lost_for_memory_) throw DeviceError(DeviceError::Kind::out_of_memory, creating + first_line(lost_));
 }
 
 void DawnContext::wait_for_queue() const {
@@ -133,10 +160,12 @@ void DawnContext::on_lost(wgpu::DeviceLostReason reason, std::string_view messag
   if (reason == wgpu::DeviceLostReason::Destroyed || reason == wgpu::DeviceLostReason::CallbackCancelled) return;
   const std::lock_guard lock(mutex_);
   lost_ = std::string(message);
+  lost_for_memory_ = names_out_of_memory(message);
 }
 
 void DawnContext::check() {
   const std::lock_guard lock(mutex_);
+  if (lost_for_memory_) throw DeviceError(DeviceError::Kind::out_of_memory, "Dawn: " + first_line(lost_));
   if (!lost_.empty()) throw DeviceError(DeviceError::Kind::device_lost, "Dawn: " + lost_);
   if (!options_.errors_throw || reported_ == messages_.size()) return;
   const std::string first = messages_[reported_];
