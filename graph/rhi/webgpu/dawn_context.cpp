@@ -126,8 +126,9 @@ void DawnContext::request_device() {
   descriptor.requiredFeatureCount = features.size();
   descriptor.requiredFeatures = features.data();
   descriptor.requiredLimits = &limits;
-  // Dawn takes the uncaptured-error callback as a function and a userdata pointer (it
-  // may be called any number of times, so it owns no callable); the loss alike.
+  // Dawn takes the uncaptured-error callback only as a function with a userdata pointer
+  // (it may be called any number of times, so it owns no callable); the loss callback
+  // takes the same form, so both reach this context alike.
   descriptor.SetUncapturedErrorCallback(
       [](const wgpu::Device&, wgpu::ErrorType type, wgpu::StringView message, DawnContext* self) {
         self->on_error(type, text_of(message));
