@@ -38,10 +38,11 @@ void open(Gpu& gpu) {
   ASSERT_TRUE(gpu.adapter);
 
   wgpu::DeviceDescriptor descriptor;
-  std::vector<std::string>* errors = &gpu.errors;
-  descriptor.SetUncapturedErrorCallback([errors](const wgpu::Device&, wgpu::ErrorType, wgpu::StringView message) {
-    errors->emplace_back(std::string_view(message));
-  });
+  descriptor.SetUncapturedErrorCallback(
+      [](const wgpu::Device&, wgpu::ErrorType, wgpu::StringView message, std::vector<std::string>* errors) {
+        errors->emplace_back(std::string_view(message));
+      },
+      &gpu.errors);
   descriptor.SetDeviceLostCallback(wgpu::CallbackMode::AllowSpontaneous,
                                    [](const wgpu::Device&, wgpu::DeviceLostReason, wgpu::StringView) {});
   wgpu::Future device_future = gpu.adapter.RequestDevice(

@@ -68,8 +68,10 @@ def member_default(api, struct, member, force):
 def struct_members(api, name, force):
     lines = []
     chained = api.json[name].get("chained")
+    # The implementation fills and frees these: callers read them only (as in Dawn's header).
+    const = " const" if api.has_free_members(name) else ""
     for i, m in enumerate(api.members(name)):
-        decl = f"{cpp_annotated(api, m)} {camelCase(m['name'])}{member_default(api, name, m, force)};"
+        decl = f"{cpp_annotated(api, m)}{const} {camelCase(m['name'])}{member_default(api, name, m, force)};"
         if chained and i == 0:
             base = "ChainedStructOut" if chained == "out" else "ChainedStruct"
             align = f"detail::ConstexprMax(alignof({base}), alignof({cpp_annotated(api, m)}))"
@@ -125,11 +127,14 @@ def free_members_impl(api, name, cpp):
             checks.append(f"this->{camelCase(m['name'])} != nullptr")
         elif m["type"] == "string view":
             checks.append(f"this->{camelCase(m['name'])}.data != nullptr")
-    moves = "".join(f"    {n} = rhs.{n};\n" for n in names)
-    resets = "".join(f"    value.{n} = defaults.{n};\n" for n in names)
+    writable = {"nextInChain"}  # the chain pointer is the caller's; the rest is const
+    moves = "".join(f"    {n} = rhs.{n};\n" if n in writable else f"    detail::AsNonConstReference({n}) = rhs.{n};\n"
+                    for n in names)
+    resets = "".join(f"    value.{n} = defaults.{n};\n" if n in writable else
+                     f"    detail::AsNonConstReference(value.{n}) = defaults.{n};\n" for n in names)
     return (f"{cpp}::{cpp}() = default;\n"
             f"{cpp}::~{cpp}() {{ FreeMembers(); }}\n"
-            f"{cpp}::{cpp}({cpp}&& rhs) {{\n{moves}    Reset(rhs);\n}}\n"
+            f"{cpp}::{cpp}({cpp}&& rhs)\n    : {', '.join(f'{n}(rhs.{n})' for n in names)} {{\n    Reset(rhs);\n}}\n"
             f"{cpp}& {cpp}::operator=({cpp}&& rhs) {{\n    if (&rhs == this) return *this;\n    FreeMembers();\n"
             f"{moves}    Reset(rhs);\n    return *this;\n}}\n"
             f"void {cpp}::FreeMembers() {{\n    if ({' || '.join(checks)}) {{\n"

@@ -38,6 +38,13 @@ constexpr size_t ConstexprMax(size_t a, size_t b) {
     return a > b ? a : b;
 }
 
+// Members of structs the implementation fills and frees are const to callers; only the
+// struct's own moves write them.
+template <typename T>
+static T& AsNonConstReference(const T& value) {
+    return const_cast<T&>(value);
+}
+
 // Callbacks come in two forms: a callable without userdata (may capture), or a plain
 // function with a typed userdata pointer as its last argument.
 template <typename... Args>
@@ -111,6 +118,8 @@ struct ConvertibleStatus {
 };
 
 // A string of the API: {data, length}, length WGPU_STRLEN for a null-terminated one.
+// As in Dawn's header it converts implicitly to std::string_view and explicitly to any
+// type constructible from (const char*, size_t), never back to WGPUStringView.
 struct StringView {
     char const* data = nullptr;
     size_t length = WGPU_STRLEN;
@@ -119,20 +128,25 @@ struct StringView {
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
     constexpr StringView(const std::string_view& s) noexcept : data(s.data()), length(s.length()) {}
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
-    constexpr StringView(const char* s) noexcept : data(s), length(WGPU_STRLEN) {}
-    constexpr StringView(const char* s, size_t n) noexcept : data(s), length(n) {}
+    constexpr StringView(const char* s) : data(s), length(WGPU_STRLEN) {}
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
-    constexpr StringView(WGPUStringView s) noexcept : data(s.data), length(s.length) {}
+    constexpr StringView(WGPUStringView s) : data(s.data), length(s.length) {}
+    constexpr StringView(const char* s, size_t n) : data(s), length(n) {}
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
-    constexpr StringView(std::nullptr_t) noexcept {}
+    constexpr StringView(std::nullptr_t) {}
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
-    constexpr StringView(std::nullopt_t) noexcept {}
+    constexpr StringView(std::nullopt_t) {}
 
     bool IsUndefined() const { return data == nullptr && length == WGPU_STRLEN; }
-    operator WGPUStringView() const noexcept { return {data, length}; }
+    // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
     operator std::string_view() const {
-        if (length == WGPU_STRLEN) return data ? std::string_view(data) : std::string_view();
+        if (length == WGPU_STRLEN) return IsUndefined() ? std::string_view() : std::string_view(data);
         return {data, length};
+    }
+    template <typename View, typename = std::enable_if_t<std::is_constructible_v<View, const char*, size_t>>>
+    explicit operator View() const {
+        if (length == WGPU_STRLEN) return IsUndefined() ? View() : View(data);
+        return View(data, length);
     }
 };
 static_assert(sizeof(StringView) == sizeof(WGPUStringView), "sizeof mismatch for StringView");
@@ -160,8 +174,8 @@ class ObjectBase {
         }
         return static_cast<Derived&>(*this);
     }
-    ObjectBase(ObjectBase&& other) noexcept : mHandle(other.mHandle) { other.mHandle = nullptr; }
-    Derived& operator=(ObjectBase&& other) noexcept {
+    ObjectBase(ObjectBase&& other) : mHandle(other.mHandle) { other.mHandle = nullptr; }
+    Derived& operator=(ObjectBase&& other) {
         if (&other != this) {
             if (mHandle) Derived::WGPURelease(mHandle);
             mHandle = other.mHandle;
@@ -333,27 +347,18 @@ template <typename L, typename Cb, typename>
 void DeviceDescriptor::SetUncapturedErrorCallback(L callback) {
     assert(uncapturedErrorCallbackInfo.callback == nullptr);
     using F = UncapturedErrorCallback<void>;
-    if constexpr (std::is_convertible_v<L, F*>) {
-        uncapturedErrorCallbackInfo.callback = [](WGPUDevice const* device, WGPUErrorType type,
-                                                  WGPUStringView message, void* callbackParam, void*) {
-            auto cb = reinterpret_cast<F*>(callbackParam);
-            detail::WithBorrowedDevice(device, [&](const Device& d) {
-                (*cb)(d, static_cast<ErrorType>(type), StringView(message));
-            });
-        };
-        uncapturedErrorCallbackInfo.userdata1 = reinterpret_cast<void*>(+callback);
-    } else {
-        // Called any number of times, with no last call to free it after: the callable
-        // lives as long as the process (as in Dawn's header).
-        uncapturedErrorCallbackInfo.callback = [](WGPUDevice const* device, WGPUErrorType type,
-                                                  WGPUStringView message, void* callbackParam, void*) {
-            auto lambda = reinterpret_cast<L*>(callbackParam);
-            detail::WithBorrowedDevice(device, [&](const Device& d) {
-                (*lambda)(d, static_cast<ErrorType>(type), StringView(message));
-            });
-        };
-        uncapturedErrorCallbackInfo.userdata1 = reinterpret_cast<void*>(new L(std::move(callback)));
-    }
+    // Called any number of times with no last call to free a callable after, so, as in
+    // Dawn's header, only a function (or captureless lambda) is taken; bind state
+    // through the userdata overload.
+    static_assert(std::is_convertible_v<L, F*>, "Uncaptured error callback cannot be a binding lambda");
+    uncapturedErrorCallbackInfo.callback = [](WGPUDevice const* device, WGPUErrorType type,
+                                              WGPUStringView message, void* callbackParam, void*) {
+        auto cb = reinterpret_cast<F*>(callbackParam);
+        detail::WithBorrowedDevice(device, [&](const Device& d) {
+            (*cb)(d, static_cast<ErrorType>(type), StringView(message));
+        });
+    };
+    uncapturedErrorCallbackInfo.userdata1 = reinterpret_cast<void*>(+callback);
     uncapturedErrorCallbackInfo.userdata2 = nullptr;
 }
 """

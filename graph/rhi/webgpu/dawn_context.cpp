@@ -3,6 +3,9 @@
 #include "graph/rhi/webgpu/dawn_context.h"
 
 #include <cstdint>
+#include <optional>
+
+#include "graph/rhi/webgpu/adapter_choice.h"
 
 namespace volgraph::webgpu {
 namespace {
@@ -19,6 +22,16 @@ std::string_view error_type_name(wgpu::ErrorType type) {
     case wgpu::ErrorType::Internal: return "internal error";
     default: return "error";
   }
+}
+
+// Dawn's message up to its first line break: the rest is Dawn's call context.
+std::string first_line(const std::string& message) { return message.substr(0, message.find('\n')); }
+
+// Whether a loss message names one of Vulkan's out-of-memory results (Vulkan 1.3 spec,
+// VkResult): Dawn reports a failed memory bind by losing the device, with that name.
+bool names_out_of_memory(std::string_view message) {
+  return message.find("VK_ERROR_OUT_OF_DEVICE_MEMORY") != std::string_view::npos ||
+         message.find("VK_ERROR_OUT_OF_HOST_MEMORY") != std::string_view::npos;
 }
 
 // Dawn rounds time stamps to 100 µs by default (a fingerprinting guard for browsers);
@@ -49,6 +62,23 @@ void DawnContext::wait(const wgpu::Future& future, std::string_view what) const 
   }
 }
 
+void DawnContext::begin_allocation() const { device_.PushErrorScope(wgpu::ErrorFilter::OutOfMemory); }
+
+void DawnContext::end_allocation(std::string_view what) {
+  std::optional<std::string> out_of_memory;
+  wait(device_.PopErrorScope(wgpu::CallbackMode::WaitAnyOnly,
+                             [&out_of_memory](wgpu::PopErrorScopeStatus status, wgpu::ErrorType type, wgpu::StringView message) {
+                               if (status == wgpu::PopErrorScopeStatus::Success && type == wgpu::ErrorType::OutOfMemory) {
+                                 out_of_memory = text_of(message);
+                               }
+                             }),
+       "an error scope");
+  const std::string creating = "Dawn: creating " + std::string(what) + ": ";
+  if (out_of_memory) throw DeviceError(DeviceError::Kind::out_of_memory, creating + first_line(*out_of_memory));
+  const std::lock_guard lock(mutex_);
+  if (lost_for_memory_) throw DeviceError(DeviceError::Kind::out_of_memory, creating + first_line(lost_));
+}
+
 void DawnContext::wait_for_queue() const {
   bool done = false;
   wait(queue_.OnSubmittedWorkDone(wgpu::CallbackMode::WaitAnyOnly,
@@ -70,6 +100,13 @@ void DawnContext::request_adapter() {
   if (!adapter_) throw DeviceError(DeviceError::Kind::no_device, "Dawn offers no adapter: " + message);
   wgpu::AdapterInfo info;
   adapter_.GetInfo(&info);
+  const std::optional<std::string> fallback = fallback_adapter_reason(info.backendType, info.adapterType, info.device);
+  if (fallback && !options_.allow_fallback_adapter) {
+    throw DeviceError(DeviceError::Kind::no_device,
+                      "Dawn offers only " + *fallback +
+                          "; install a Vulkan driver (lavapipe: mesa-vulkan-drivers) or check VK_ICD_FILENAMES, or "
+                          "set VOLGRAPH_WEBGPU_ALLOW_FALLBACK=1 to render on it anyway");
+  }
   info_ = {"webgpu", text_of(info.device), "Dawn on " + text_of(info.description)};
   timestamps_ = adapter_.HasFeature(wgpu::FeatureName::TimestampQuery);
 }
@@ -89,13 +126,20 @@ void DawnContext::request_device() {
   descriptor.requiredFeatureCount = features.size();
   descriptor.requiredFeatures = features.data();
   descriptor.requiredLimits = &limits;
-  descriptor.SetUncapturedErrorCallback([this](const wgpu::Device&, wgpu::ErrorType type, wgpu::StringView message) {
-    on_error(type, text_of(message));
-  });
-  descriptor.SetDeviceLostCallback(wgpu::CallbackMode::AllowSpontaneous,
-                                   [this](const wgpu::Device&, wgpu::DeviceLostReason reason, wgpu::StringView message) {
-                                     on_lost(reason, text_of(message));
-                                   });
+  // Dawn takes the uncaptured-error callback only as a function with a userdata pointer
+  // (it may be called any number of times, so it owns no callable); the loss callback
+  // takes the same form, so both reach this context alike.
+  descriptor.SetUncapturedErrorCallback(
+      [](const wgpu::Device&, wgpu::ErrorType type, wgpu::StringView message, DawnContext* self) {
+        self->on_error(type, text_of(message));
+      },
+      this);
+  descriptor.SetDeviceLostCallback(
+      wgpu::CallbackMode::AllowSpontaneous,
+      [](const wgpu::Device&, wgpu::DeviceLostReason reason, wgpu::StringView message, DawnContext* self) {
+        self->on_lost(reason, text_of(message));
+      },
+      this);
   std::string message;
   wait(adapter_.RequestDevice(&descriptor, wgpu::CallbackMode::WaitAnyOnly,
                               [this, &message](wgpu::RequestDeviceStatus status, wgpu::Device device, wgpu::StringView text) {
@@ -117,10 +161,12 @@ void DawnContext::on_lost(wgpu::DeviceLostReason reason, std::string_view messag
   if (reason == wgpu::DeviceLostReason::Destroyed || reason == wgpu::DeviceLostReason::CallbackCancelled) return;
   const std::lock_guard lock(mutex_);
   lost_ = std::string(message);
+  lost_for_memory_ = names_out_of_memory(message);
 }
 
 void DawnContext::check() {
   const std::lock_guard lock(mutex_);
+  if (lost_for_memory_) throw DeviceError(DeviceError::Kind::out_of_memory, "Dawn: " + first_line(lost_));
   if (!lost_.empty()) throw DeviceError(DeviceError::Kind::device_lost, "Dawn: " + lost_);
   if (!options_.errors_throw || reported_ == messages_.size()) return;
   const std::string first = messages_[reported_];

@@ -2,7 +2,7 @@
 // Vulkan backend on lavapipe here), and what the device reports back: every uncaptured
 // error (validation, out of memory, internal) is collected as a message — tests fail on
 // any, the command line stops at the first — and a loss of the device is remembered so
-// the next submission reports it. Written against <webgpu/webgpu_cpp.h> only.
+// the next submission reports it (as out of memory when memory was what ran out). Written against <webgpu/webgpu_cpp.h> only.
 #pragma once
 
 #include <memory>
@@ -23,11 +23,15 @@ struct DawnOptions {
   // command line). Off: they are only collected, for take_messages() (tests).
   bool errors_throw = true;
   SimulatedFault simulate = SimulatedFault::none;
+  // Off: Dawn's Null backend and CPU fallback adapters other than lavapipe are refused
+  // (adapter_choice.h) with DeviceError no_device. On: any adapter Dawn offers.
+  bool allow_fallback_adapter = false;
 };
 
 class DawnContext {
  public:
-  // Throws DeviceError (no_device) when Dawn offers no adapter or device.
+  // Throws DeviceError (no_device) when Dawn offers no adapter or device, or only a
+  // fallback adapter that options do not allow.
   static std::unique_ptr<DawnContext> create(const DawnOptions& options = {});
   ~DawnContext();
   DawnContext(const DawnContext&) = delete;
@@ -39,6 +43,12 @@ class DawnContext {
   bool has_timestamps() const { return timestamps_; }
   SimulatedFault simulated_fault() const { return options_.simulate; }
 
+  // Around the creation of a buffer or texture (`what` names it): an out-of-memory error
+  // of Dawn's inside the scope, or a loss of the device for lack of memory (Dawn's Vulkan
+  // backend loses the device when vkBindImageMemory returns VK_ERROR_OUT_OF_DEVICE_MEMORY),
+  // throws DeviceError out_of_memory naming `what`.
+  void begin_allocation() const;
+  void end_allocation(std::string_view what);
   // Blocks until the future completes; `what` names the wait in the error.
   void wait(const wgpu::Future& future, std::string_view what) const;
   // Blocks until everything submitted so far has run.
@@ -68,6 +78,7 @@ class DawnContext {
   size_t reported_ = 0;  // messages_ already thrown as DeviceErrors
   bool out_of_memory_ = false;
   std::string lost_;
+  bool lost_for_memory_ = false;  // the loss's message names a Vulkan out-of-memory result
 };
 
 }  // namespace volgraph::webgpu

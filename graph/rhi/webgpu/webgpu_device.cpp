@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 #include "graph/rhi/webgpu/encoder.h"
 #include "graph/rhi/webgpu/formats.h"
@@ -70,12 +71,22 @@ wgpu::Buffer WebGpuDevice::make_buffer(std::string_view label, uint64_t size, wg
   descriptor.label = label;
   descriptor.usage = usage;
   descriptor.size = std::max<uint64_t>(4, whole_words(size));
-  return context_->device().CreateBuffer(&descriptor);
+  context_->begin_allocation();
+  wgpu::Buffer buffer = context_->device().CreateBuffer(&descriptor);
+  context_->end_allocation("buffer \"" + std::string(label) + "\" (" + std::to_string(descriptor.size) + " bytes)");
+  return buffer;
 }
 
 wgpu::Texture WebGpuDevice::make_texture(const wgpu::TextureDescriptor& descriptor) const {
-  simulate_out_of_memory(std::string_view(descriptor.label.data, descriptor.label.length));
-  return context_->device().CreateTexture(&descriptor);
+  const std::string label(std::string_view(descriptor.label));
+  simulate_out_of_memory(label);
+  context_->begin_allocation();
+  wgpu::Texture texture = context_->device().CreateTexture(&descriptor);
+  const wgpu::Extent3D& s = descriptor.size;
+  context_->end_allocation("texture \"" + label + "\" (" + std::to_string(s.width) + "x" + std::to_string(s.height) + "x" +
+                           std::to_string(s.depthOrArrayLayers) + ", " + std::to_string(descriptor.mipLevelCount) +
+                           " mip levels)");
+  return texture;
 }
 
 // A buffer made only to be copied into (the interface's read-back buffers) is mappable;

@@ -774,6 +774,13 @@ constexpr size_t ConstexprMax(size_t a, size_t b) {
     return a > b ? a : b;
 }
 
+// Members of structs the implementation fills and frees are const to callers; only the
+// struct's own moves write them.
+template <typename T>
+static T& AsNonConstReference(const T& value) {
+    return const_cast<T&>(value);
+}
+
 // Callbacks come in two forms: a callable without userdata (may capture), or a plain
 // function with a typed userdata pointer as its last argument.
 template <typename... Args>
@@ -847,6 +854,8 @@ struct ConvertibleStatus {
 };
 
 // A string of the API: {data, length}, length WGPU_STRLEN for a null-terminated one.
+// As in Dawn's header it converts implicitly to std::string_view and explicitly to any
+// type constructible from (const char*, size_t), never back to WGPUStringView.
 struct StringView {
     char const* data = nullptr;
     size_t length = WGPU_STRLEN;
@@ -855,20 +864,25 @@ struct StringView {
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
     constexpr StringView(const std::string_view& s) noexcept : data(s.data()), length(s.length()) {}
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
-    constexpr StringView(const char* s) noexcept : data(s), length(WGPU_STRLEN) {}
-    constexpr StringView(const char* s, size_t n) noexcept : data(s), length(n) {}
+    constexpr StringView(const char* s) : data(s), length(WGPU_STRLEN) {}
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
-    constexpr StringView(WGPUStringView s) noexcept : data(s.data), length(s.length) {}
+    constexpr StringView(WGPUStringView s) : data(s.data), length(s.length) {}
+    constexpr StringView(const char* s, size_t n) : data(s), length(n) {}
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
-    constexpr StringView(std::nullptr_t) noexcept {}
+    constexpr StringView(std::nullptr_t) {}
     // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
-    constexpr StringView(std::nullopt_t) noexcept {}
+    constexpr StringView(std::nullopt_t) {}
 
     bool IsUndefined() const { return data == nullptr && length == WGPU_STRLEN; }
-    operator WGPUStringView() const noexcept { return {data, length}; }
+    // NOLINTNEXTLINE(runtime/explicit) implicit on purpose
     operator std::string_view() const {
-        if (length == WGPU_STRLEN) return data ? std::string_view(data) : std::string_view();
+        if (length == WGPU_STRLEN) return IsUndefined() ? std::string_view() : std::string_view(data);
         return {data, length};
+    }
+    template <typename View, typename = std::enable_if_t<std::is_constructible_v<View, const char*, size_t>>>
+    explicit operator View() const {
+        if (length == WGPU_STRLEN) return IsUndefined() ? View() : View(data);
+        return View(data, length);
     }
 };
 static_assert(sizeof(StringView) == sizeof(WGPUStringView), "sizeof mismatch for StringView");
@@ -896,8 +910,8 @@ class ObjectBase {
         }
         return static_cast<Derived&>(*this);
     }
-    ObjectBase(ObjectBase&& other) noexcept : mHandle(other.mHandle) { other.mHandle = nullptr; }
-    Derived& operator=(ObjectBase&& other) noexcept {
+    ObjectBase(ObjectBase&& other) : mHandle(other.mHandle) { other.mHandle = nullptr; }
+    Derived& operator=(ObjectBase&& other) {
         if (&other != this) {
             if (mHandle) Derived::WGPURelease(mHandle);
             mHandle = other.mHandle;
@@ -1400,16 +1414,16 @@ struct AdapterInfo {
     inline operator const WGPUAdapterInfo&() const noexcept;
 
     ChainedStructOut * nextInChain = nullptr;
-    StringView vendor = {};
-    StringView architecture = {};
-    StringView device = {};
-    StringView description = {};
-    BackendType backendType = BackendType::Undefined;
-    AdapterType adapterType = {};
-    uint32_t vendorID = {};
-    uint32_t deviceID = {};
-    uint32_t subgroupMinSize = {};
-    uint32_t subgroupMaxSize = {};
+    StringView const vendor = {};
+    StringView const architecture = {};
+    StringView const device = {};
+    StringView const description = {};
+    BackendType const backendType = BackendType::Undefined;
+    AdapterType const adapterType = {};
+    uint32_t const vendorID = {};
+    uint32_t const deviceID = {};
+    uint32_t const subgroupMinSize = {};
+    uint32_t const subgroupMaxSize = {};
 
   private:
     inline void FreeMembers();
@@ -1425,8 +1439,8 @@ struct SupportedFeatures {
     inline SupportedFeatures& operator=(SupportedFeatures&&);
     inline operator const WGPUSupportedFeatures&() const noexcept;
 
-    size_t featureCount = {};
-    FeatureName const * features = nullptr;
+    size_t const featureCount = {};
+    FeatureName const * const features = nullptr;
 
   private:
     inline void FreeMembers();
@@ -2021,34 +2035,24 @@ static_assert(offsetof(Limits, maxImmediateSize) == offsetof(WGPULimits, maxImme
 // AdapterInfo
 AdapterInfo::AdapterInfo() = default;
 AdapterInfo::~AdapterInfo() { FreeMembers(); }
-AdapterInfo::AdapterInfo(AdapterInfo&& rhs) {
-    nextInChain = rhs.nextInChain;
-    vendor = rhs.vendor;
-    architecture = rhs.architecture;
-    device = rhs.device;
-    description = rhs.description;
-    backendType = rhs.backendType;
-    adapterType = rhs.adapterType;
-    vendorID = rhs.vendorID;
-    deviceID = rhs.deviceID;
-    subgroupMinSize = rhs.subgroupMinSize;
-    subgroupMaxSize = rhs.subgroupMaxSize;
+AdapterInfo::AdapterInfo(AdapterInfo&& rhs)
+    : nextInChain(rhs.nextInChain), vendor(rhs.vendor), architecture(rhs.architecture), device(rhs.device), description(rhs.description), backendType(rhs.backendType), adapterType(rhs.adapterType), vendorID(rhs.vendorID), deviceID(rhs.deviceID), subgroupMinSize(rhs.subgroupMinSize), subgroupMaxSize(rhs.subgroupMaxSize) {
     Reset(rhs);
 }
 AdapterInfo& AdapterInfo::operator=(AdapterInfo&& rhs) {
     if (&rhs == this) return *this;
     FreeMembers();
     nextInChain = rhs.nextInChain;
-    vendor = rhs.vendor;
-    architecture = rhs.architecture;
-    device = rhs.device;
-    description = rhs.description;
-    backendType = rhs.backendType;
-    adapterType = rhs.adapterType;
-    vendorID = rhs.vendorID;
-    deviceID = rhs.deviceID;
-    subgroupMinSize = rhs.subgroupMinSize;
-    subgroupMaxSize = rhs.subgroupMaxSize;
+    detail::AsNonConstReference(vendor) = rhs.vendor;
+    detail::AsNonConstReference(architecture) = rhs.architecture;
+    detail::AsNonConstReference(device) = rhs.device;
+    detail::AsNonConstReference(description) = rhs.description;
+    detail::AsNonConstReference(backendType) = rhs.backendType;
+    detail::AsNonConstReference(adapterType) = rhs.adapterType;
+    detail::AsNonConstReference(vendorID) = rhs.vendorID;
+    detail::AsNonConstReference(deviceID) = rhs.deviceID;
+    detail::AsNonConstReference(subgroupMinSize) = rhs.subgroupMinSize;
+    detail::AsNonConstReference(subgroupMaxSize) = rhs.subgroupMaxSize;
     Reset(rhs);
     return *this;
 }
@@ -2060,16 +2064,16 @@ void AdapterInfo::FreeMembers() {
 void AdapterInfo::Reset(AdapterInfo& value) {
     AdapterInfo defaults;
     value.nextInChain = defaults.nextInChain;
-    value.vendor = defaults.vendor;
-    value.architecture = defaults.architecture;
-    value.device = defaults.device;
-    value.description = defaults.description;
-    value.backendType = defaults.backendType;
-    value.adapterType = defaults.adapterType;
-    value.vendorID = defaults.vendorID;
-    value.deviceID = defaults.deviceID;
-    value.subgroupMinSize = defaults.subgroupMinSize;
-    value.subgroupMaxSize = defaults.subgroupMaxSize;
+    detail::AsNonConstReference(value.vendor) = defaults.vendor;
+    detail::AsNonConstReference(value.architecture) = defaults.architecture;
+    detail::AsNonConstReference(value.device) = defaults.device;
+    detail::AsNonConstReference(value.description) = defaults.description;
+    detail::AsNonConstReference(value.backendType) = defaults.backendType;
+    detail::AsNonConstReference(value.adapterType) = defaults.adapterType;
+    detail::AsNonConstReference(value.vendorID) = defaults.vendorID;
+    detail::AsNonConstReference(value.deviceID) = defaults.deviceID;
+    detail::AsNonConstReference(value.subgroupMinSize) = defaults.subgroupMinSize;
+    detail::AsNonConstReference(value.subgroupMaxSize) = defaults.subgroupMaxSize;
 }
 
 AdapterInfo::operator const WGPUAdapterInfo&() const noexcept { return *reinterpret_cast<const WGPUAdapterInfo*>(this); }
@@ -2090,16 +2094,15 @@ static_assert(offsetof(AdapterInfo, subgroupMaxSize) == offsetof(WGPUAdapterInfo
 // SupportedFeatures
 SupportedFeatures::SupportedFeatures() = default;
 SupportedFeatures::~SupportedFeatures() { FreeMembers(); }
-SupportedFeatures::SupportedFeatures(SupportedFeatures&& rhs) {
-    featureCount = rhs.featureCount;
-    features = rhs.features;
+SupportedFeatures::SupportedFeatures(SupportedFeatures&& rhs)
+    : featureCount(rhs.featureCount), features(rhs.features) {
     Reset(rhs);
 }
 SupportedFeatures& SupportedFeatures::operator=(SupportedFeatures&& rhs) {
     if (&rhs == this) return *this;
     FreeMembers();
-    featureCount = rhs.featureCount;
-    features = rhs.features;
+    detail::AsNonConstReference(featureCount) = rhs.featureCount;
+    detail::AsNonConstReference(features) = rhs.features;
     Reset(rhs);
     return *this;
 }
@@ -2110,8 +2113,8 @@ void SupportedFeatures::FreeMembers() {
 }
 void SupportedFeatures::Reset(SupportedFeatures& value) {
     SupportedFeatures defaults;
-    value.featureCount = defaults.featureCount;
-    value.features = defaults.features;
+    detail::AsNonConstReference(value.featureCount) = defaults.featureCount;
+    detail::AsNonConstReference(value.features) = defaults.features;
 }
 
 SupportedFeatures::operator const WGPUSupportedFeatures&() const noexcept { return *reinterpret_cast<const WGPUSupportedFeatures*>(this); }
@@ -2698,27 +2701,18 @@ template <typename L, typename Cb, typename>
 void DeviceDescriptor::SetUncapturedErrorCallback(L callback) {
     assert(uncapturedErrorCallbackInfo.callback == nullptr);
     using F = UncapturedErrorCallback<void>;
-    if constexpr (std::is_convertible_v<L, F*>) {
-        uncapturedErrorCallbackInfo.callback = [](WGPUDevice const* device, WGPUErrorType type,
-                                                  WGPUStringView message, void* callbackParam, void*) {
-            auto cb = reinterpret_cast<F*>(callbackParam);
-            detail::WithBorrowedDevice(device, [&](const Device& d) {
-                (*cb)(d, static_cast<ErrorType>(type), StringView(message));
-            });
-        };
-        uncapturedErrorCallbackInfo.userdata1 = reinterpret_cast<void*>(+callback);
-    } else {
-        // Called any number of times, with no last call to free it after: the callable
-        // lives as long as the process (as in Dawn's header).
-        uncapturedErrorCallbackInfo.callback = [](WGPUDevice const* device, WGPUErrorType type,
-                                                  WGPUStringView message, void* callbackParam, void*) {
-            auto lambda = reinterpret_cast<L*>(callbackParam);
-            detail::WithBorrowedDevice(device, [&](const Device& d) {
-                (*lambda)(d, static_cast<ErrorType>(type), StringView(message));
-            });
-        };
-        uncapturedErrorCallbackInfo.userdata1 = reinterpret_cast<void*>(new L(std::move(callback)));
-    }
+    // Called any number of times with no last call to free a callable after, so, as in
+    // Dawn's header, only a function (or captureless lambda) is taken; bind state
+    // through the userdata overload.
+    static_assert(std::is_convertible_v<L, F*>, "Uncaptured error callback cannot be a binding lambda");
+    uncapturedErrorCallbackInfo.callback = [](WGPUDevice const* device, WGPUErrorType type,
+                                              WGPUStringView message, void* callbackParam, void*) {
+        auto cb = reinterpret_cast<F*>(callbackParam);
+        detail::WithBorrowedDevice(device, [&](const Device& d) {
+            (*cb)(d, static_cast<ErrorType>(type), StringView(message));
+        });
+    };
+    uncapturedErrorCallbackInfo.userdata1 = reinterpret_cast<void*>(+callback);
     uncapturedErrorCallbackInfo.userdata2 = nullptr;
 }
 

@@ -18,8 +18,8 @@ struct IsWGPUBitmask {
 template <typename T>
 struct BoolConvertible {
   using Integral = std::underlying_type_t<T>;
-  // NOLINTNEXTLINE(runtime/explicit) the result of an operator is meant to convert
-  constexpr BoolConvertible(Integral bits) : value(bits) {}
+  // Explicit, as in Dawn's header: only the operators make one.
+  explicit constexpr BoolConvertible(Integral bits) : value(bits) {}
   constexpr operator bool() const { return value != 0; }
   constexpr operator T() const { return static_cast<T>(value); }
   Integral value;
@@ -43,26 +43,28 @@ struct LowerBitmask<BoolConvertible<T>> {
   static constexpr T Lower(BoolConvertible<T> t) { return t; }
 };
 
+namespace detail {
 template <typename T>
 constexpr auto Bits(T value) {
   return static_cast<std::underlying_type_t<typename LowerBitmask<T>::type>>(LowerBitmask<T>::Lower(value));
 }
+}  // namespace detail
 
 template <typename T1, typename T2, typename = std::enable_if_t<LowerBitmask<T1>::enable && LowerBitmask<T2>::enable>>
 constexpr BoolConvertible<typename LowerBitmask<T1>::type> operator|(T1 left, T2 right) {
-  return {Bits(left) | Bits(right)};
+  return BoolConvertible<typename LowerBitmask<T1>::type>(detail::Bits(left) | detail::Bits(right));
 }
 template <typename T1, typename T2, typename = std::enable_if_t<LowerBitmask<T1>::enable && LowerBitmask<T2>::enable>>
 constexpr BoolConvertible<typename LowerBitmask<T1>::type> operator&(T1 left, T2 right) {
-  return {Bits(left) & Bits(right)};
+  return BoolConvertible<typename LowerBitmask<T1>::type>(detail::Bits(left) & detail::Bits(right));
 }
 template <typename T1, typename T2, typename = std::enable_if_t<LowerBitmask<T1>::enable && LowerBitmask<T2>::enable>>
 constexpr BoolConvertible<typename LowerBitmask<T1>::type> operator^(T1 left, T2 right) {
-  return {Bits(left) ^ Bits(right)};
+  return BoolConvertible<typename LowerBitmask<T1>::type>(detail::Bits(left) ^ detail::Bits(right));
 }
 template <typename T, typename = std::enable_if_t<LowerBitmask<T>::enable>>
 constexpr BoolConvertible<typename LowerBitmask<T>::type> operator~(T value) {
-  return {static_cast<decltype(Bits(value))>(~Bits(value))};
+  return BoolConvertible<typename LowerBitmask<T>::type>(static_cast<decltype(detail::Bits(value))>(~detail::Bits(value)));
 }
 template <typename T, typename T2, typename = std::enable_if_t<IsWGPUBitmask<T>::enable && LowerBitmask<T2>::enable>>
 constexpr T& operator|=(T& left, T2 right) {
@@ -77,11 +79,12 @@ constexpr T& operator^=(T& left, T2 right) {
   return left = left ^ right;
 }
 
-// True when at most one bit is set.
+// True when at most one bit of a bitmask enum is set (an enum, not an operator's result,
+// as in Dawn's header).
 template <typename T>
 constexpr bool HasZeroOrOneBits(T value) {
-  auto bits = Bits(value);
-  return (bits & (bits - 1)) == 0;
+  using Integral = std::underlying_type_t<T>;
+  return (static_cast<Integral>(value) & (static_cast<Integral>(value) - 1)) == 0;
 }
 
 }  // namespace wgpu
