@@ -8,6 +8,14 @@
 #include "physics/media_field.h"
 
 namespace volgraph::physics {
+namespace {
+
+// e^(−τ) per channel, τ clamped as the shaders clamp it.
+Vec3 transmittance_of_depth(const glm::dvec3& optical_depth) {
+  return to_vec3(glm::exp(-glm::min(optical_depth, glm::dvec3(kMaxExponent<double>))));
+}
+
+}  // namespace
 
 double light_march_length(const Light& light, const Vec3& p, double max_distance) {
   if (light.type == LightType::directional) return max_distance;
@@ -54,12 +62,6 @@ Vec3 volumes_optical_depth_to_light(const Media& media, const Light& light, cons
   const Vec3 to_light = to_vec3(-vec(light_arriving(light, p).travel));
   return optical_depth_along(field, p, to_light, light_march_length(light, p, max_distance), steps, jitter);
 }
-
-namespace {
-Vec3 transmittance_of_depth(const glm::dvec3& optical_depth) {
-  return to_vec3(glm::exp(-glm::min(optical_depth, glm::dvec3(kMaxExponent<double>))));
-}
-}  // namespace
 
 Vec3 fog_transmittance_to_light(const Media& media, const Light& light, const Vec3& p) {
   return transmittance_of_depth(vec(fog_optical_depth_to_light(media, light, p)));

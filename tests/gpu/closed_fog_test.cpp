@@ -25,6 +25,7 @@
 #include "graph/execute/executor.h"
 #include "passes/passes.h"
 #include "physics/camera.h"
+#include "physics/light_transmittance.h"
 #include "physics/media.h"
 #include "physics/phase.h"
 #include "reference/image_render.h"
@@ -167,6 +168,15 @@ TEST_P(ClosedFog, HeightFogTransmittanceAndDirectionalInScatteringAreExact) {
           return sigma_s[ch] * std::exp(-0.4 * y) * e[ch] * std::exp(-view - sun);
         };
         const double scattering = phase * test::adaptive_simpson(integrand, 0, length, 1e-9, 40);
+        // The shader's closed form, by its CPU twins, is that integral.
+        const Light& sun = config.config.scene.lights[0];
+        const Media& media = config.config.scene.media;
+        const Vec3 end = physics::add(camera.position, physics::scaled(d, length));
+        const double at_start = physics::fog_optical_depth_to_light(media, sun, camera.position)[ch];
+        const double at_end = physics::fog_optical_depth_to_light(media, sun, end)[ch];
+        const double closed = sigma_s[ch] * phase * e[ch] *
+                              physics::attenuated_length_from(at_start, sigma_t * unit_depth + at_end - at_start, unit_depth);
+        EXPECT_NEAR(closed, scattering, 1e-6 * scattering + 1e-9) << "pixel " << i << ", " << j << ": the closed form";
         const std::string where = "pixel " + std::to_string(i) + ", " + std::to_string(j);
         expect_near_relative(r.at(r.transmittance, i, j, ch), t, where + " T");
         expect_near_relative(r.at(r.scattering, i, j, ch), scattering, where + " L_scat");
