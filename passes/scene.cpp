@@ -1,5 +1,8 @@
 // Opaque scene: Lambertian surfaces lit by the scene's lights (DESIGN.md units:
-// ρ/π · E · cos θ · V), emissive surfaces and the background radiance.
+// ρ/π · E · cos θ · V, V the shadow map's visibility times the media's transmittance
+// toward the light — the global and height fog's in closed form always, the local volumes'
+// through an opacity shadow map when one is wired, as the CPU reference dims surfaces),
+// emissive surfaces and the background radiance.
 #include <cstring>
 
 #include "graph/execute/pass_execution.h"
@@ -17,6 +20,14 @@
 
 namespace volgraph {
 namespace {
+
+// The media the surfaces' lighting sees in closed form: the global and height fog (the
+// local volumes only through an opacity shadow map, media_shadow).
+Media fogs_of(const Media& media) {
+  Media fogs = media;
+  fogs.volumes.clear();
+  return fogs;
+}
 
 // glTF files must load and textures decode: a malformed one is bad input, reported at
 // the object's "file" or the material's "albedo_texture"; and the scene must fit the
@@ -142,6 +153,7 @@ class SceneExecution final : public PassExecution {
     const std::array<double, 3>& ambient = c.param(t_.ambient);
     for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i]);
     f.light_list = plumbing::pack_lights(scene.lights);
+    f.media = physics::pack_media(fogs_of(scene.media));
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&f, 1)));
   }
 

@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "passes/plumbing/light_list.h"
+#include "physics/media_field.h"
 
 namespace volgraph {
 
@@ -32,9 +33,10 @@ struct GpuSceneFrame {
   float view_projection[16];
   float ambient_irradiance[4];
   plumbing::GpuLightList light_list;
-  static constexpr std::array<uint64_t, 3> offsets() {
+  physics::GpuMediaField media;  // the global and height fog (no volumes): they dim the light toward each surface
+  static constexpr std::array<uint64_t, 4> offsets() {
     return {offsetof(GpuSceneFrame, view_projection), offsetof(GpuSceneFrame, ambient_irradiance),
-            offsetof(GpuSceneFrame, light_list)};
+            offsetof(GpuSceneFrame, light_list), offsetof(GpuSceneFrame, media)};
   }
 };
 

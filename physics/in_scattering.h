@@ -4,8 +4,9 @@
 //   S = σs·(Σ_lights p(θ)·E·V·T_media + L_ambient) + emission,
 // p(θ) the pass's phase variant (phase.h, chosen by its PHASE_* code), E each light's
 // unshadowed delivery (lighting.h), V its visibility (a shadow map's, which the caller
-// supplies; 1 without one) and T_media the media's transmittance toward it by a march
-// (light_transmittance.h; none for a light whose V already holds it). The same skips as
+// supplies; 1 without one) and T_media the media's transmittance toward it
+// (light_transmittance.h): the global and height fog's in closed form, times the local
+// volumes' by a march (none for a light whose V already holds them). The same skips as
 // the GLSL: the light loop where σs is zero in every channel (when asked), a light's march
 // where it delivers nothing — neither changes S.
 #pragma once
@@ -45,9 +46,9 @@ Real phase_of(const PhaseChoice& phase, Real g, Real cos_theta) {
   }
 }
 
-// The march toward each light for T_media (transmittance_to_light).
+// The march through the local volumes toward each light for T_media (transmittance_to_light).
 struct LightMarch {
-  int steps = 0;              // 0: no march (T_media = 1)
+  int steps = 0;              // 0: no march (T_media is the fogs' closed form alone)
   double max_distance = 50;   // m, toward directional lights
   double jitter = 0.5;        // in [0, 1): where inside each step σt is sampled
 };

@@ -8,6 +8,14 @@
 #include "physics/media_field.h"
 
 namespace volgraph::physics {
+namespace {
+
+// e^(−τ) per channel, τ clamped as the shaders clamp it.
+Vec3 transmittance_of_depth(const glm::dvec3& optical_depth) {
+  return to_vec3(glm::exp(-glm::min(optical_depth, glm::dvec3(kMaxExponent<double>))));
+}
+
+}  // namespace
 
 double light_march_length(const Light& light, const Vec3& p, double max_distance) {
   if (light.type == LightType::directional) return max_distance;
@@ -25,19 +33,43 @@ Vec3 optical_depth_along(const MediaField& field, const Vec3& p, const Vec3& dir
   return to_vec3(optical_depth);
 }
 
-Media media_toward_light(const Media& media, const Light& light) {
-  Media marched = media;
-  if (light.type == LightType::directional) marched.fog.reset();
-  return marched;
+Media local_volumes(const Media& media) {
+  Media volumes = media;
+  volumes.fog.reset();
+  volumes.height_fog.reset();
+  return volumes;
+}
+
+Vec3 fog_optical_depth_to_light(const Media& media, const Light& light, const Vec3& p) {
+  const bool directional = light.type == LightType::directional;
+  const glm::dvec3 to_light = directional ? -glm::normalize(vec(light.direction)) : vec(light.position) - vec(p);
+  const double distance = directional ? 0.0 : glm::length(to_light);
+  const double to_light_y = directional ? to_light.y : distance > 0 ? to_light.y / distance : 0.0;
+  glm::dvec3 depth(0);
+  if (media.fog && !directional) depth += (vec(media.fog->sigma_s) + vec(media.fog->sigma_a)) * distance;
+  if (const std::optional<HeightFog>& h = media.height_fog) {
+    const double unit_depth = directional ? height_fog_unit_depth_to_infinity(h->falloff, h->base_height, p[1], to_light_y)
+                                          : height_fog_optical_depth(1.0, h->falloff, h->base_height, p[1], to_light_y, distance);
+    depth += (vec(h->medium.sigma_s) + vec(h->medium.sigma_a)) * unit_depth;
+  }
+  return to_vec3(depth);
+}
+
+Vec3 volumes_optical_depth_to_light(const Media& media, const Light& light, const Vec3& p, int steps, double max_distance,
+                                    double jitter) {
+  if (steps <= 0 || media.volumes.empty()) return {0, 0, 0};
+  const MediaField field(local_volumes(media));
+  const Vec3 to_light = to_vec3(-vec(light_arriving(light, p).travel));
+  return optical_depth_along(field, p, to_light, light_march_length(light, p, max_distance), steps, jitter);
+}
+
+Vec3 fog_transmittance_to_light(const Media& media, const Light& light, const Vec3& p) {
+  return transmittance_of_depth(vec(fog_optical_depth_to_light(media, light, p)));
 }
 
 Vec3 transmittance_to_light(const Media& media, const Light& light, const Vec3& p, int steps, double max_distance, double jitter) {
-  if (steps <= 0) return {1, 1, 1};
-  const MediaField field(media_toward_light(media, light));
-  const Vec3 to_light = to_vec3(-vec(light_arriving(light, p).travel));
-  const glm::dvec3 optical_depth =
-      vec(optical_depth_along(field, p, to_light, light_march_length(light, p, max_distance), steps, jitter));
-  return to_vec3(glm::exp(-glm::min(optical_depth, kMaxExponent<double>)));
+  return transmittance_of_depth(vec(fog_optical_depth_to_light(media, light, p)) +
+                                vec(volumes_optical_depth_to_light(media, light, p, steps, max_distance, jitter)));
 }
 
 }  // namespace volgraph::physics

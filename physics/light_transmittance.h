@@ -1,8 +1,13 @@
-// Volumetric shadows: the transmittance of the media from a point toward a light by a
-// march of equal steps (CPU twin of shaders/include/light_transmittance.glsl — change
-// both together): e^(−Σ_k σt(p + (k + jitter)·Δ·ω)·Δ), Δ the march length / steps.
-// Directional lights march `max_distance` m with the global fog left out (their E is
-// what reaches a point through it, DESIGN.md); point and spot lights march to the light.
+// The media's transmittance from a point toward a light (CPU twin of
+// shaders/include/light_transmittance.glsl — change both together), e^(−τ) with τ:
+// - the global fog and the height fog in closed form, always: toward a point or spot
+//   light σt·d of the global fog plus the height fog's closed-form optical depth along the
+//   segment (physics/media.h); toward a directional light the height fog's to infinity
+//   (infinite when the light travels level or upward) and no global fog — a directional
+//   light's E is what reaches a point through the global fog (DESIGN.md; the reference's
+//   SceneMedia::optical_depth_to_infinity, which this follows);
+// - plus the local volumes by a march of equal steps, e^(−Σ_k σt(p + (k + jitter)·Δ·ω)·Δ),
+//   Δ the march length / steps: up to the light, `max_distance` m toward a directional one.
 #pragma once
 
 #include "graph/scene/scene.h"
@@ -18,11 +23,21 @@ double light_march_length(const Light& light, const Vec3& p, double max_distance
 // (k + jitter)·Δ.
 Vec3 optical_depth_along(const MediaField& field, const Vec3& p, const Vec3& direction, double length, int steps, double jitter);
 
-// The media a march toward `light` sees: a directional light's without the global fog.
-Media media_toward_light(const Media& media, const Light& light);
+// The media a march sees: the local volumes alone (the fogs are in closed form).
+Media local_volumes(const Media& media);
 
-// `steps` ≤ 0: no volumetric shadow (1). `jitter` in [0, 1): where inside each step σt
-// is sampled.
+// The closed-form part of τ: the global fog and the height fog from p toward `light`.
+Vec3 fog_optical_depth_to_light(const Media& media, const Light& light, const Vec3& p);
+
+// The local volumes' part of τ: a march of `steps` (≤ 0: none) through them toward `light`
+// from p; `jitter` in [0, 1): where inside each step σt is sampled.
+Vec3 volumes_optical_depth_to_light(const Media& media, const Light& light, const Vec3& p, int steps, double max_distance,
+                                    double jitter);
+
+// e^(−τ) of the closed-form part alone (what the scene pass dims surfaces by).
+Vec3 fog_transmittance_to_light(const Media& media, const Light& light, const Vec3& p);
+
+// e^(−τ) of the two parts together.
 Vec3 transmittance_to_light(const Media& media, const Light& light, const Vec3& p, int steps, double max_distance, double jitter);
 
 }  // namespace volgraph::physics

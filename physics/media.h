@@ -80,6 +80,39 @@ Real height_fog_optical_depth(Real sigma_base, Real falloff, Real base_height, R
   return sigma_base * at_origin * length * one_minus_exp_over_x(falloff * direction_y * length);
 }
 
+// An optical depth standing for "no light gets through" (a directional light below the
+// horizon seen through height fog): finite so that differences of two stay defined.
+template <typename Real>
+constexpr Real kInfiniteOpticalDepth = Real(1e30);
+
+// The same optical depth for unit base density from origin_y toward a directional light
+// along `direction_y`, to infinity: σ_base·e^(−falloff(y₀ − base))/(falloff·direction_y),
+// the segment's closed form over the length where e^(−falloff·direction_y·length) has
+// fallen by e^(−kMaxExponent); kInfiniteOpticalDepth for a level or downward direction
+// (ever denser fog), and never above it.
+template <typename Real>
+Real height_fog_unit_depth_to_infinity(Real falloff, Real base_height, Real origin_y, Real direction_y) {
+  if (!(direction_y > 0)) return kInfiniteOpticalDepth<Real>;
+  const Real length = kMaxExponent<Real> / (falloff * direction_y);
+  return std::min(height_fog_optical_depth(Real(1), falloff, base_height, origin_y, direction_y, length),
+                  kInfiniteOpticalDepth<Real>);
+}
+
+// ∫₀^length e^(−(a + x·s/length)) ds = length·e^(−a)·(1 − e^(−x))/x: a source constant per
+// unit length seen through an optical depth that grows linearly along the way, from a at
+// the start by x across it — height fog under a directional light dimmed by the fog above
+// each point, with length the unit-density optical depth along the view ray (the sun's
+// optical depth is linear in it, and a + x is the view's plus the sun's at the far end).
+// attenuated_length(σt, length) is a = 0, x = σt·length. Stable as x → 0 (series) and for
+// large a (no e^(+x) formed).
+template <typename Real>
+Real attenuated_length_from(Real depth_at_start, Real depth_across, Real length) {
+  const Real a = std::min(depth_at_start, kMaxExponent<Real>);
+  if (std::abs(depth_across) < kSeriesBelow<Real>) return length * std::exp(-a) * one_minus_exp_over_x(depth_across);
+  const Real end = std::clamp(depth_at_start + depth_across, -kMaxExponent<Real>, kMaxExponent<Real>);
+  return length * (std::exp(-a) - std::exp(-end)) / depth_across;
+}
+
 // Depth fog (RTR4 eq. 14.12–14.14): the fraction f of the surface's radiance
 // that remains at view distance z; the pixel is f·L_surface + (1 − f)·L_fog.
 template <typename Real>

@@ -1,23 +1,24 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // analytic_fog: single scattering in homogeneous global fog, unshadowed
-// (passes/fog/analytic_fog.cpp): point and spot lights by the airlight integral (Sun et
-// al. 2005), directional lights, ambient and emission in closed form.
+// (passes/fog/analytic_fog.cpp): point lights by the airlight integral (Sun et al. 2005),
+// spot lights by the same integrand cut where the ray crosses the cones (light_volume's
+// I(t), light_volume_integral.glsl), directional lights, ambient and emission in closed form.
 #include "include/airlight.glsl"
+#include "include/light_volume_integral.glsl"
 #include "include/media.glsl"
 #include "include/pixel_fog.glsl"
 
 // Per unit σs, the radiance one light scatters toward the camera along the ray.
 vec3 light_scattering(Light light, PixelRay ray, vec3 sigma_t, float g) {
-  if (int(light.position_type.w) == LIGHT_DIRECTIONAL) {
+  const int type = int(light.position_type.w);
+  if (type == LIGHT_DIRECTIONAL) {
     return phase_hg(g, dot(light.direction_cos_outer.xyz, -ray.direction)) * light.power_cos_inner.rgb *
            attenuated_length(sigma_t, ray.len);
   }
+  if (type == LIGHT_SPOT) return light.power_cos_inner.rgb * point_scattering_to(light, ray.origin, ray.direction, ray.len, sigma_t, g);
   const AirlightGeometry geometry = airlight_geometry(ray.origin, ray.direction, light.position_type.xyz);
-  const vec3 nearest_point = ray.origin + clamp(geometry.t_c, 0.0, ray.len) * ray.direction;
-  const vec3 from_light = nearest_point - light.position_type.xyz;
-  const float cone = dot(from_light, from_light) > 0.0 ? spot_cone(light, normalize(from_light)) : 1.0;
-  return cone * light.power_cos_inner.rgb * airlight(geometry, ray.len, sigma_t, g);
+  return light.power_cos_inner.rgb * airlight(geometry, ray.len, sigma_t, g);
 }
 
 void main() {

@@ -1,7 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// opacity_shadow_map: per texel column of the shadow map's light view, the media's
-// optical depth from the light to each layer's centre (include/opacity_shadow.glsl):
+// opacity_shadow_map: per texel column of the shadow map's light view, the local volumes'
+// optical depth from the light to each layer's centre (include/opacity_shadow.glsl; the
+// global and height fog are left to the closed form of light_transmittance.glsl):
 // first the stretch from the column's start back toward the light, then layer by layer
 // away from it, each by a march of equal steps (include/light_transmittance.glsl).
 #include "include/fog_frame.glsl"
@@ -32,7 +33,7 @@ void main() {
     return;
   }
   const Light light = frame.f.light_list.lights[light_index];
-  const MediaField media = media_toward_light(frame.f.media, light);
+  const MediaField media = local_volumes(frame.f.media);
   const vec2 ndc = vec2((float(texel.x) + 0.5) / float(size.x) * 2.0 - 1.0, 1.0 - (float(texel.y) + 0.5) / float(size.y) * 2.0);
   const LightColumn column = light_column(shadow.view, ndc);
   const float column_length = length(column.end - column.start);

@@ -132,6 +132,9 @@ config_tests("^FogAccuracy\\.FroxelChainConverges" tests/oracle_fog_sphere.json)
 config_tests("^FogAccuracy\\.HillaireErrsLess" tests/oracle_dense_fog.json)
 config_tests("^FogAccuracy\\.ASunFivePercentDimmer" tests/oracle_global_fog.json)
 config_tests("^FogAccuracy\\.NoisyVolume" tests/oracle_noise_volume.json graphs/raymarch_fog.json)
+# tests/accuracy/light_attenuation_test.cpp: the shipped graphs, and raymarch_fog at its defaults.
+config_tests("^LightAttenuation\\." graphs/froxel_fog.json graphs/analytic_fog.json graphs/light_volume_fog.json graphs/height_fog.json)
+pass_tests(raymarch_fog "^LightAttenuation\\.(Point|Sun)")
 # tests/reference: the CPU reference against the GPU's golden image of demo_primitives.
 config_tests("^ReferenceVersusGpu\\.DemoPrimitivesMatchesTheGoldenImage" demo_primitives.json)
 

@@ -4,9 +4,10 @@
 //   and HG phase, σs·I·A (shaders/include/airlight.glsl ↔ physics/airlight.h:
 //   composite Gauss–Legendre, relative error ≤ 3e-5 in float where measured; the ray's
 //   distance to the light is clamped to 1e-4 m, so a light on the ray stays finite);
-// - spot lights: treated as point lights, weighted by their cone's falloff toward the ray's
-//   point nearest the light (clamped to the segment) — exact only when the whole segment
-//   sees the same part of the cone;
+// - spot lights: the same integrand with the cone's falloff, the ray cut where it crosses
+//   the inner and outer cones and each lit piece by Gauss–Legendre in the airlight's
+//   variable (light_volume's unshadowed I(t): shaders/include/light_volume_integral.glsl ↔
+//   physics/light_volume_integral.h, its error measured there);
 // - directional lights: constant along the ray, σs·p_HG(θ)·E·(1 − e^(−σt·D))/σt;
 // - emission and ambient likewise: (emission + σs·L_ambient)·(1 − e^(−σt·D))/σt;
 // transmittance e^(−σt·D). D is the distance along the ray to the surface, or to the far
@@ -31,7 +32,7 @@ struct AnalyticFogTable : fog::PixelFogTable {
     decl.check_scene = check_global_fog;
   }
   VariantHandle airlight =
-      variant("airlight", "point and spot lights by the airlight integral with extinction; directional lights in closed form");
+      variant("airlight", "point and spot lights by the airlight integral with extinction (spots cut at their cones); directional lights in closed form");
   ParamHandle<std::array<double, 3>> ambient = vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the fog scatters");
 };
 

@@ -1,10 +1,12 @@
 // froxel_scatter (Wronski 2014, Hillaire 2015): per froxel, the light its medium scatters
 // toward the camera per metre — σs·(Σ_lights p(θ)·E·V·T + L_ambient) + emission — with the
 // phase function as the variant, V from the shadow map when one is wired, and T the media's
-// transmittance toward the light (volumetric self-shadowing), by either of two methods:
-// a march of `shadow_steps` through the media from every froxel toward every light, or,
-// for the shadow map's light when an opacity_shadow_map is wired to `media_shadow`, one
-// lookup in that map (the other lights keep the march).
+// transmittance toward the light (volumetric self-shadowing): the global and height fog's
+// in closed form, always (shaders/include/light_transmittance.glsl), times the local
+// volumes' by either of two methods: a march of `shadow_steps` through the volumes from
+// every froxel toward every light (0, the default: none), or, for the shadow map's light
+// when an opacity_shadow_map is wired to `media_shadow`, one lookup in that map (the other
+// lights keep the march).
 // Shaders: shaders/froxel_scatter.comp, froxel_scatter_shadowed.comp,
 // froxel_scatter_media_shadowed.comp (shaders/include/froxel_scatter_body.glsl).
 #include <cstddef>
@@ -28,7 +30,8 @@ struct FroxelScatterTable : fog::PhaseTable {
   // Parameters.
   ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
   ParamHandle<int64_t> shadow_steps = integer("shadow_steps", 0, 0, 256, "",
-      "volumetric self-shadowing: steps of the march through the media toward each light not covered by media_shadow (0: off)");
+      "steps of the march through the local volumes toward each light not covered by media_shadow (0: none; the global and height fog "
+      "dim every light in closed form regardless)");
   ParamHandle<double> shadow_distance = number("shadow_distance", 50, 0.01, 1e5, "m", "how far that march goes toward directional lights");
   ParamHandle<bool> skip_empty = flag("skip_empty", true, "froxels without scattering skip the light loop (off: to measure the saving)");
   // Slots.

@@ -1,9 +1,11 @@
 // opacity_shadow_map (Kim & Neumann 2001, "Opacity shadow maps", kept as optical depth):
-// volumetric shadows of the media for the light a shadow_map renders. Over that map's
-// light view, `resolution`² columns (one per light ray) × `layers` layers from its near
-// plane to its far plane; each texel holds the optical depth τ from the light to the
-// layer's centre, marched once per column. froxel_scatter and scene read e^(−τ) with one
-// trilinear lookup instead of marching toward the light from every point they light.
+// volumetric shadows of the local media volumes for the light a shadow_map renders. Over
+// that map's light view, `resolution`² columns (one per light ray) × `layers` layers from
+// its near plane to its far plane; each texel holds the volumes' optical depth τ from the
+// light to the layer's centre, marched once per column. froxel_scatter and scene read
+// e^(−τ) with one trilinear lookup instead of marching through the volumes toward the
+// light from every point they light; the global and height fog they take in closed form
+// (shaders/include/light_transmittance.glsl), so the map leaves them out.
 // The map depends on the scene's lights and media and on the light view alone (no
 // jitter, no frame number): the pass is cached, and a frame whose cache key has not
 // changed keeps last frame's map (PassDecl::cached).
@@ -26,7 +28,7 @@ std::vector<ParamProblem> check_media(const PassDecl&, const Scene& scene, const
 struct OpacityShadowMapTable : PassTable {
   OpacityShadowMapTable()
       : PassTable("opacity_shadow_map", PassKind::compute,
-                  "The media's optical depth from a shadow map's light, in layers over its light view (Kim & Neumann 2001).") {
+                  "The local media volumes' optical depth from a shadow map's light, in layers over its light view (Kim & Neumann 2001).") {
     decl.needs = feature_bit(SceneFeature::medium);
     decl.check_scene = check_media;
     // The shader reads the frame block's lights and media (not its camera or grid) and

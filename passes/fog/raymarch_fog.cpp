@@ -7,7 +7,8 @@
 // in-scattering (shaders/include/in_scattering.glsl, shared with froxel_scatter): every
 // light through the phase function — the variant, the same five as froxel_scatter's, codes
 // from shaders/include/phase_codes.h —, the shadow map's visibility when one is wired, and
-// volumetric shadows by a secondary march of `shadow_steps` toward each light. Writes
+// volumetric shadows: the global and height fog toward each light in closed form, always,
+// and the local volumes by a secondary march of `shadow_steps` toward it (0: none). Writes
 // fog_apply's two images: in-scattered radiance and transmittance.
 // Shaders: shaders/raymarch_fog.comp, raymarch_fog_shadowed.comp
 // (shaders/include/raymarch_fog_body.glsl, in_scattering.glsl, light_transmittance.glsl).
@@ -40,7 +41,9 @@ struct RaymarchFogTable : fog::PhaseTable {
   // Parameters.
   ParamHandle<int64_t> steps = integer("steps", 64, 1, 4096, "", "equal steps from the camera to the surface");
   ParamHandle<int64_t> shadow_steps =
-      integer("shadow_steps", 0, 0, 1024, "", "steps of the march toward each light for volumetric shadows (0: off)");
+      integer("shadow_steps", 0, 0, 1024, "",
+              "steps of the march through the local volumes toward each light (0: none; the global and height fog dim every light "
+              "in closed form regardless)");
   ParamHandle<double> max_distance = number("max_distance", 100, 1e-3, 1e7, "m",
                                             "view depth the march reaches where no surface is (at most the camera's far plane)");
   ParamHandle<double> shadow_distance =

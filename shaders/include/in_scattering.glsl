@@ -4,10 +4,11 @@
 // p(θ) the pass's phase function (its variant: a PHASE_* code of phase_codes.h, with the
 // dual-lobe HG's backward lobe), E what the light delivers unshadowed (lighting.glsl), V the
 // including shader's `light_visibility(int light, vec3 p)` (a float; or a vec3 that also holds
-// the media's transmittance toward that light, from an opacity shadow map) and T_media the
-// media's transmittance toward the light by a march (light_transmittance.glsl; 1 with 0 steps,
-// and no march for a light where the including shader's `bool media_shadow_mapped(int light)`
-// says light_visibility holds it). The including shader defines both hooks, and its frame
+// the local volumes' transmittance toward that light, from an opacity shadow map) and T_media
+// the media's transmittance toward the light (light_transmittance.glsl): the global and
+// height fog's in closed form always, times the local volumes' by a march of `steps` (none
+// with 0 steps, nor for a light where the including shader's `bool media_shadow_mapped(int
+// light)` says light_visibility holds it). The including shader defines both hooks, and its frame
 // block `frame` (`uniform Frame { FogFrame f; } frame`, fog_frame.glsl: the lights, L_ambient
 // and the media the march samples), before it includes this file: read there rather than
 // passed in, as lavapipe copies a LightList or MediaField argument at every call (the march
@@ -45,9 +46,9 @@ float phase_of(PhaseChoice phase, float g, float cos_theta) {
   }
 }
 
-// The march toward each light for T_media (transmittance_to_light).
+// The march through the local volumes toward each light for T_media (transmittance_to_light).
 struct LightMarch {
-  int steps;           // 0: no march (T_media = 1)
+  int steps;           // 0: no march (T_media is the fogs' closed form alone)
   float max_distance;  // m, toward directional lights
   float jitter;        // in [0, 1): where inside each step σt is sampled
 };
@@ -58,13 +59,14 @@ struct LightMarch {
 vec3 in_scattering(MediaSample m, vec3 p, vec3 to_camera, PhaseChoice phase, LightMarch march, bool skip_without_scattering) {
   if (skip_without_scattering && !any(greaterThan(m.sigma_s, vec3(0.0)))) return m.emission;
   vec3 light = frame.f.ambient.rgb;
+  const Fogs fogs = fogs_of(frame.f.media.counts, frame.f.media.fog, frame.f.media.height_fog, frame.f.media.height);
   for (int i = 0; i < frame.f.light_list.counts.x; ++i) {
     vec3 travel;
     const vec3 e = light_arriving(frame.f.light_list.lights[i], p, travel);
     const vec3 visible = vec3(light_visibility(i, p));
     if (all(lessThanEqual(visible, vec3(0.0))) || all(equal(e, vec3(0.0)))) continue;
     const int steps = media_shadow_mapped(i) ? 0 : march.steps;  // a map's light: T_media is in light_visibility
-    const vec3 through = transmittance_to_light(frame.f.media, frame.f.light_list.lights[i], p, -travel, steps,
+    const vec3 through = transmittance_to_light(fogs, frame.f.media, frame.f.light_list.lights[i], p, -travel, steps,
                                                 march.max_distance, march.jitter);
     light += phase_of(phase, m.g, dot(travel, to_camera)) * e * (visible * through);
   }

@@ -1,9 +1,15 @@
-// Volumetric shadows: the transmittance of the media from a point toward a light,
-// e^(−∫σt), the optical depth estimated by a march of equal steps through
-// media_field.glsl (σt at (k + jitter)·Δ, k = 0 … steps − 1, times Δ). Directional
-// lights: up to `max_distance` m, with the global fog left out (a directional light's E
-// is what reaches a point through it, DESIGN.md and the CPU reference); point and spot
-// lights: up to the light. CPU twin: physics/light_transmittance.h — change both.
+// The media's transmittance from a point toward a light, e^(−τ), τ in two parts:
+// - the global fog and the height fog in closed form, always: a point or spot light sees
+//   σt·d of the global fog and the height fog's closed-form optical depth along the
+//   segment to it (media.glsl, the one height_fog uses for view rays); a directional light
+//   the height fog's to infinity (infinite when the light travels level or upward) and no
+//   global fog — its E is what reaches a point through the global fog (DESIGN.md, the CPU
+//   reference's SceneMedia::optical_depth_to_infinity);
+// - the local volumes by a march of equal steps through media_field.glsl (σt at
+//   (k + jitter)·Δ, k = 0 … steps − 1, times Δ), or not at all with 0 steps (or where an
+//   opacity shadow map, which holds the volumes alone, stands in for it): up to the light,
+//   or `max_distance` m toward a directional light.
+// CPU twin: physics/light_transmittance.h — change both.
 #ifndef VOLGRAPH_LIGHT_TRANSMITTANCE_GLSL
 #define VOLGRAPH_LIGHT_TRANSMITTANCE_GLSL
 #include "lighting.glsl"
@@ -28,19 +34,58 @@ vec3 optical_depth_along(MediaField media, vec3 p, vec3 direction, float len, in
   return optical_depth;
 }
 
-// The media a march toward `light` sees: a directional light's without the global fog.
-MediaField media_toward_light(MediaField field, Light light) {
+// The media a march sees: the local volumes alone (the fogs are in closed form).
+MediaField local_volumes(MediaField field) {
   MediaField media = field;
-  if (int(light.position_type.w) == LIGHT_DIRECTIONAL) media.counts.y = 0;
+  media.counts.yz = ivec2(0);
   return media;
 }
 
-// `to_light`: the unit direction from p toward the light (−travel of light_arriving);
-// `jitter` in [0, 1): where inside each step σt is sampled.
-vec3 transmittance_to_light(MediaField field, Light light, vec3 p, vec3 to_light, int steps, float max_distance, float jitter) {
-  if (steps <= 0) return vec3(1.0);
-  const vec3 optical_depth = optical_depth_along(media_toward_light(field, light), p, to_light,
-                                                 light_march_length(light, p, max_distance), steps, jitter);
+// The global and height fog as the closed form sees them (σt 0 where a fog is absent): a
+// few members of a MediaField, so that callers need not pass the whole field per light.
+struct Fogs {
+  vec3 fog_sigma_t;     // the global fog's σt (1/m)
+  vec3 height_sigma_t;  // the height fog's σt at its base height (1/m)
+  vec2 height;          // x base height (m), y falloff (1/m)
+};
+
+Fogs fogs_of(ivec4 counts, MediumCoefficients fog, MediumCoefficients height_fog, vec4 height) {
+  return Fogs(counts.y != 0 ? fog.sigma_s_g.rgb + fog.sigma_a.rgb : vec3(0.0),
+              counts.z != 0 ? height_fog.sigma_s_g.rgb + height_fog.sigma_a.rgb : vec3(0.0), height.xy);
+}
+
+// The closed-form part of τ: the global fog and the height fog from p toward `light`,
+// `to_light` the unit direction from p toward it.
+vec3 fog_optical_depth_to_light(Fogs fogs, Light light, vec3 p, vec3 to_light) {
+  const bool directional = int(light.position_type.w) == LIGHT_DIRECTIONAL;
+  if (directional) {
+    if (all(equal(fogs.height_sigma_t, vec3(0.0)))) return vec3(0.0);
+    return fogs.height_sigma_t * height_fog_unit_depth_to_infinity(fogs.height.y, fogs.height.x, p.y, to_light.y);
+  }
+  const float distance = length(light.position_type.xyz - p);
+  const float unit_depth = height_fog_optical_depth(vec3(1.0), fogs.height.y, fogs.height.x, p.y, to_light.y, distance).r;
+  return fogs.fog_sigma_t * distance + fogs.height_sigma_t * unit_depth;
+}
+
+// The local volumes' part of τ: a march of `steps` (0: none) through them toward `light`
+// from p; `jitter` in [0, 1): where inside each step σt is sampled.
+vec3 volumes_optical_depth_to_light(MediaField field, Light light, vec3 p, vec3 to_light, int steps, float max_distance,
+                                    float jitter) {
+  if (steps <= 0 || field.counts.x == 0) return vec3(0.0);
+  return optical_depth_along(local_volumes(field), p, to_light, light_march_length(light, p, max_distance), steps, jitter);
+}
+
+// e^(−τ) of the closed-form part alone (what the scene pass dims surfaces by).
+vec3 fog_transmittance_to_light(Fogs fogs, Light light, vec3 p, vec3 to_light) {
+  return exp(-min(fog_optical_depth_to_light(fogs, light, p, to_light), vec3(MAX_EXPONENT)));
+}
+
+// e^(−τ) of the two parts together. `to_light`: the unit direction from p toward the light
+// (−travel of light_arriving).
+vec3 transmittance_to_light(Fogs fogs, MediaField field, Light light, vec3 p, vec3 to_light, int steps, float max_distance,
+                            float jitter) {
+  const vec3 optical_depth = fog_optical_depth_to_light(fogs, light, p, to_light) +
+                             volumes_optical_depth_to_light(field, light, p, to_light, steps, max_distance, jitter);
   return exp(-min(optical_depth, vec3(MAX_EXPONENT)));
 }
 

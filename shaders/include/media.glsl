@@ -43,6 +43,32 @@ vec3 height_fog_optical_depth(vec3 sigma_base, float falloff, float base_height,
   return sigma_base * (at_origin * len * one_minus_exp_over_x(falloff * direction_y * len));
 }
 
+const float INFINITE_OPTICAL_DEPTH = 1e30;
+
+// The unit-density optical depth from origin_y toward a directional light along
+// `direction_y`, to infinity; INFINITE_OPTICAL_DEPTH for a level or downward direction.
+float height_fog_unit_depth_to_infinity(float falloff, float base_height, float origin_y, float direction_y) {
+  if (!(direction_y > 0.0)) return INFINITE_OPTICAL_DEPTH;
+  const float len = MAX_EXPONENT / (falloff * direction_y);
+  return min(height_fog_optical_depth(vec3(1.0), falloff, base_height, origin_y, direction_y, len).r, INFINITE_OPTICAL_DEPTH);
+}
+
+// ∫₀^len e^(−(a + x·s/len)) ds = len·e^(−a)·(1 − e^(−x))/x per channel: an optical depth
+// growing linearly from a by x along the way.
+vec3 attenuated_length_from(vec3 depth_at_start, vec3 depth_across, float len) {
+  vec3 out_length;
+  for (int c = 0; c < 3; ++c) {
+    const float a = min(depth_at_start[c], MAX_EXPONENT), x = depth_across[c];
+    if (abs(x) < SERIES_BELOW) {
+      out_length[c] = len * exp(-a) * one_minus_exp_over_x(x);
+    } else {
+      const float end = clamp(depth_at_start[c] + x, -MAX_EXPONENT, MAX_EXPONENT);
+      out_length[c] = len * (exp(-a) - exp(-end)) / x;
+    }
+  }
+  return out_length;
+}
+
 // Depth fog (eq. 14.12–14.14): the fraction of the surface's radiance left at distance z.
 float depth_fog_linear(float z, float z_start, float z_end) {
   if (z_end <= z_start) return z < z_start ? 1.0 : 0.0;

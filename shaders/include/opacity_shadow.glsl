@@ -1,8 +1,10 @@
 // Opacity shadow maps (Kim & Neumann 2001), kept as optical depth: for every texel of a
-// shadow map's light view, the media's optical depth from the light to evenly spaced
-// layers along that texel's light ray (its column, from the view's near plane to its far
-// plane). Written by opacity_shadow_map (shaders/opacity_shadow_map.comp); any pass
-// that lights a point by that light reads e^(−τ) with one trilinear lookup.
+// shadow map's light view, the local volumes' optical depth from the light to evenly
+// spaced layers along that texel's light ray (its column, from the view's near plane to
+// its far plane). Written by opacity_shadow_map (shaders/opacity_shadow_map.comp); any
+// pass that lights a point by that light reads e^(−τ) with one trilinear lookup, and
+// multiplies in the global and height fog's transmittance in closed form
+// (light_transmittance.glsl), which the map leaves out.
 #ifndef VOLGRAPH_OPACITY_SHADOW_GLSL
 #define VOLGRAPH_OPACITY_SHADOW_GLSL
 #include "media.glsl"

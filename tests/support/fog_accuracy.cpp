@@ -26,6 +26,28 @@ bool near_surface(const std::vector<bool>& surface, uint32_t width, uint32_t hei
   return false;
 }
 
+// Per pixel (row-major): whether the pixel's centre sees a surface.
+std::vector<bool> surface_pixels(const Scene& scene, uint32_t width, uint32_t height) {
+  const reference::Renderer renderer(scene);
+  std::vector<bool> surface(size_t(width) * height);
+  for (uint32_t j = 0; j < height; ++j) {
+    for (uint32_t i = 0; i < width; ++i) surface[size_t(j) * width + i] = sees_surface(renderer, width, height, i, j);
+  }
+  return surface;
+}
+
+// Whether every pixel of the 3×3 neighbourhood of (i, j) sees a surface (the frame's edge
+// pixels, whose neighbourhood is cut, never).
+bool inside_surface(const std::vector<bool>& surface, uint32_t width, uint32_t height, uint32_t i, uint32_t j) {
+  if (i == 0 || j == 0 || i + 1 >= width || j + 1 >= height) return false;
+  for (uint32_t y = j - 1; y <= j + 1; ++y) {
+    for (uint32_t x = i - 1; x <= i + 1; ++x) {
+      if (!surface[size_t(y) * width + x]) return false;
+    }
+  }
+  return true;
+}
+
 // The reference's RGB as the RGBA floats compare_images takes.
 std::vector<float> rgba_of(const reference::ReferenceImage& image) {
   std::vector<float> out(size_t(image.width) * image.height * 4, 1.0f);
@@ -83,16 +105,21 @@ Texels render_gpu(rhi::Device& device, const LoadedConfig& loaded) {
 }
 
 std::vector<bool> fog_only_pixels(const Scene& scene, uint32_t width, uint32_t height) {
-  const reference::Renderer renderer(scene);
-  std::vector<bool> surface(size_t(width) * height);
-  for (uint32_t j = 0; j < height; ++j) {
-    for (uint32_t i = 0; i < width; ++i) surface[size_t(j) * width + i] = sees_surface(renderer, width, height, i, j);
-  }
+  const std::vector<bool> surface = surface_pixels(scene, width, height);
   std::vector<bool> fog_only(surface.size());
   for (uint32_t j = 0; j < height; ++j) {
     for (uint32_t i = 0; i < width; ++i) fog_only[size_t(j) * width + i] = !near_surface(surface, width, height, i, j);
   }
   return fog_only;
+}
+
+std::vector<bool> surface_only_pixels(const Scene& scene, uint32_t width, uint32_t height) {
+  const std::vector<bool> surface = surface_pixels(scene, width, height);
+  std::vector<bool> inside(surface.size());
+  for (uint32_t j = 0; j < height; ++j) {
+    for (uint32_t i = 0; i < width; ++i) inside[size_t(j) * width + i] = inside_surface(surface, width, height, i, j);
+  }
+  return inside;
 }
 
 FogComparison compare_fog(const Texels& gpu, const reference::ReferenceImage& ref, const std::vector<bool>& compared) {

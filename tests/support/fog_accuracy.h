@@ -4,8 +4,9 @@
 // technique alone decides the pixel.
 //
 // Exclusions (what differs between the two for reasons outside the fog technique):
-// - surfaces: the GPU's surface lighting is not attenuated by the media toward the
-//   lights (the reference's is: volumetric shadows on surfaces), it uses a shadow map
+// - surfaces: the GPU's surface lighting sees the local media volumes toward the lights
+//   only through an opacity shadow map (the reference always: volumetric shadows on
+//   surfaces; the global and height fog both dim in closed form), it uses a shadow map
 //   (PCF, bias, texel edges) where the reference casts exact shadow rays, and adds the
 //   scene pass's ambient term. So a pixel is compared only when its centre and its eight
 //   neighbours' centres see no surface (the background, through the media only): the
@@ -54,6 +55,9 @@ Texels render_gpu(rhi::Device& device, const LoadedConfig& loaded);
 
 // Per pixel (row-major): true where the pixel and its 3×3 neighbourhood see no surface.
 std::vector<bool> fog_only_pixels(const Scene& scene, uint32_t width, uint32_t height);
+// Per pixel (row-major): true where the pixel and its 3×3 neighbourhood all see a surface
+// (where surface lighting is compared, silhouettes left out).
+std::vector<bool> surface_only_pixels(const Scene& scene, uint32_t width, uint32_t height);
 
 // The GPU image against the reference over the pixels marked in `compared`.
 FogComparison compare_fog(const Texels& gpu, const reference::ReferenceImage& ref, const std::vector<bool>& compared);

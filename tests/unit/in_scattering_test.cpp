@@ -3,9 +3,10 @@
 // S = σs·(Σ_lights p(θ)·E·V·T_media + L_ambient) + emission, with the textbook phase
 // functions (HG's (1 − g²)/(4π(1 + g² − 2g cosθ)^1.5), Schlick's (1 − k²)/(4π(1 − k cosθ)²),
 // …), E = I/d² or the directional irradiance, T_media = e^(−σt·d) in homogeneous global
-// fog toward a point light and 1 toward a directional light (the fog is in its E): every
-// phase variant, a point light and a directional light, with and without ambient and
-// emission, shadowed or not; 1e-12 relative. And the skips change nothing: σs = 0 with
+// fog toward a point light and 1 toward a directional light (the fog is in its E), in
+// closed form whether or not a march or an opacity shadow map covers the light (those are
+// for the local volumes): every phase variant, a point light and a directional light, with
+// and without ambient and emission, shadowed or not; 1e-12 relative. And the skips change nothing: σs = 0 with
 // the light loop skipped or run, a light with V = 0.
 #include <cmath>
 #include <vector>
@@ -60,7 +61,7 @@ Media homogeneous_fog() {
 const int kCodes[] = {PHASE_HG, PHASE_ISOTROPIC, PHASE_RAYLEIGH, PHASE_SCHLICK, PHASE_DUAL_HG};
 
 // A shadow map over light 0 that lets `v` (per channel) through and, when `mapped`, holds
-// the media's transmittance toward it (no march).
+// the local volumes' transmittance toward it (no march).
 struct MapOnLightZero {
   Vec3 v{1, 1, 1};
   bool mapped = false;
@@ -68,11 +69,10 @@ struct MapOnLightZero {
   bool media_shadow_mapped(size_t light) const { return mapped && light == 0; }
 };
 
-// S by hand at p toward the camera, for the lights (each with V and T_media given).
+// S by hand at p toward the camera, for the lights (each with its V).
 struct HandLight {
   Light light;
   Vec3 visibility{1, 1, 1};
-  bool marched = true;
 };
 Vec3 by_hand(const MediaSample& m, const Vec3& p, const Vec3& to_camera, const PhaseChoice& phase, const std::vector<HandLight>& lights,
              const Vec3& ambient, const Media& media) {
@@ -93,7 +93,7 @@ Vec3 by_hand(const MediaSample& m, const Vec3& p, const Vec3& to_camera, const P
     const double p_theta = textbook_phase(phase.code, m.g, dot(travel, to_camera), phase.g_back, phase.w_forward);
     for (size_t c = 0; c < 3; ++c) {
       // Directional lights: the global fog is in E (T = 1); point lights: e^(−σt·d).
-      const double t = h.marched && h.light.type != LightType::directional ? std::exp(-sigma_t[c] * distance) : 1.0;
+      const double t = h.light.type != LightType::directional ? std::exp(-sigma_t[c] * distance) : 1.0;
       sum[c] += p_theta * e[c] * h.visibility[c] * t;
     }
   }
@@ -127,11 +127,12 @@ TEST(InScattering, MatchesTheFormulaForEveryPhaseVariantLightAmbientAndEmission)
             ++checked;
           }
           // Both lights at once, the point light behind a shadow map letting (0.5, 0.25, 0)
-          // through that also holds its media transmittance (so no march for it).
+          // through that also holds its volumes' transmittance (so no march for it; the fog
+          // still dims it in closed form).
           const std::vector<Light> both = {point_light(), directional_light()};
           const MapOnLightZero map{{0.5, 0.25, 0}, true};
           expect_near(in_scattering(m, p, to_camera, phase, both, ambient, media, march, true, map),
-                      by_hand(m, p, to_camera, phase, {{both[0], map.v, false}, {both[1]}}, ambient, media), "two lights, shadow-mapped");
+                      by_hand(m, p, to_camera, phase, {{both[0], map.v}, {both[1]}}, ambient, media), "two lights, shadow-mapped");
         }
       }
     }
@@ -139,13 +140,14 @@ TEST(InScattering, MatchesTheFormulaForEveryPhaseVariantLightAmbientAndEmission)
   EXPECT_EQ(checked, 5u * 4 * 2 * 2 * 2);
 }
 
-TEST(InScattering, WithoutAMarchTheMediaDoNotDimTheLight) {
+// The global fog dims the light in closed form without any march (steps 0, the default).
+TEST(InScattering, WithoutAMarchTheFogStillDimsTheLight) {
   const Media media = homogeneous_fog();
   const Vec3 p{0.5, 0.8, -3.0}, to_camera = normalize(sub(Vec3{0, 1, 0}, p));
   const MediaSample m{.sigma_s = media.fog->sigma_s, .emission = {0, 0, 0}, .g = 0.3};
   const PhaseChoice phase{PHASE_HG};
   expect_near(in_scattering(m, p, to_camera, phase, {point_light()}, {0, 0, 0}, media, LightMarch{.steps = 0}, true),
-              by_hand(m, p, to_camera, phase, {{point_light(), {1, 1, 1}, false}}, {0, 0, 0}, media), "steps 0");
+              by_hand(m, p, to_camera, phase, {{point_light()}}, {0, 0, 0}, media), "steps 0");
 }
 
 // g beyond ±0.998 is clamped there for every variant that reads it (HG's peak would
