@@ -29,6 +29,19 @@ uint64_t heap_size(const std::vector<Item>& items, const std::vector<uint64_t>& 
   return size;
 }
 
+// Item indices in order of a key, sorted by value (no lookups through the index while
+// sorting). Items are in resource order, so the index breaks ties as the resource would.
+template <typename Key>
+std::vector<uint32_t> sorted_by(const std::vector<Item>& items, Key key) {
+  using K = decltype(key(items[0]));
+  std::vector<std::pair<K, uint32_t>> keyed(items.size());
+  for (uint32_t i = 0; i < items.size(); ++i) keyed[i] = {key(items[i]), i};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<uint32_t> order(items.size());
+  for (size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
+  return order;
+}
+
 // Placed items by the time buckets their lifetimes cover, as compressed rows built up
 // front (every lifetime is known); an item counts once placed. Items living longer
 // than kLong buckets are kept apart and scanned once per query, not once per bucket.
@@ -102,16 +115,11 @@ uint64_t best_fit(const Item& item, const std::vector<std::pair<uint64_t, uint64
 // Greedy by size keeps to the lower bound far better than a linear scan, and costs
 // time in proportion to the pairs of resources alive together; past this many pairs
 // per resource on average the linear scan takes over.
-constexpr uint64_t kGreedyPairsPerResource = 48;
+constexpr uint64_t kGreedyPairsPerResource = 16;
 
 std::vector<uint64_t> place_aliased(std::vector<Item>& items, uint32_t positions) {
-  std::vector<uint32_t> by_size(items.size());
-  for (uint32_t i = 0; i < items.size(); ++i) by_size[i] = i;
-  std::sort(by_size.begin(), by_size.end(), [&](uint32_t a, uint32_t b) {
-    if (items[a].req.size != items[b].req.size) return items[a].req.size > items[b].req.size;
-    if (items[a].life.first != items[b].life.first) return items[a].life.first < items[b].life.first;
-    return items[a].resource < items[b].resource;
-  });
+  const std::vector<uint32_t> by_size =
+      sorted_by(items, [](const Item& it) { return std::pair{~it.req.size, it.life.first}; });  // larger first
   std::vector<uint64_t> offset(items.size(), 0);
   TimeIndex index(items, positions);
   std::vector<std::pair<uint64_t, uint64_t>> busy;
@@ -168,15 +176,15 @@ class FreeList {
     size_t best = blocks_.size();
     for (size_t i = 0; i < blocks_.size(); ++i) {
       const Block& b = blocks_[i];
-      if (b.length < size || align_up(b.start, align) + size > b.start + b.length) continue;
-      if (best == blocks_.size() || b.length < blocks_[best].length) best = i;
+      if (b.length < size || (best != blocks_.size() && b.length >= blocks_[best].length)) continue;
+      if (align_up(b.start, align) + size > b.start + b.length) continue;
+      best = i;
+      if (b.length == size) break;  // an exact fit: none smaller, and the lowest of its length
     }
     if (best != blocks_.size()) {
       const Block b = blocks_[best];
       const uint64_t at = align_up(b.start, align);
-      blocks_.erase(blocks_.begin() + ptrdiff_t(best));
-      if (at + size < b.start + b.length) blocks_.insert(blocks_.begin() + ptrdiff_t(best), {at + size, b.start + b.length - at - size});
-      if (at > b.start) blocks_.insert(blocks_.begin() + ptrdiff_t(best), {b.start, at - b.start});
+      replace(best, {b.start, at - b.start}, {at + size, b.start + b.length - at - size});
       return at;
     }
     uint64_t at = align_up(top_, align);
@@ -192,36 +200,49 @@ class FreeList {
 
   // Returns a block, merged with free neighbours that touch it.
   void give_back(uint64_t start, uint64_t length) {
-    auto next = std::lower_bound(blocks_.begin(), blocks_.end(), start, [](const Block& b, uint64_t s) { return b.start < s; });
-    if (next != blocks_.end() && next->start == start + length) {
-      length += next->length;
-      next = blocks_.erase(next);
+    const auto next = std::lower_bound(blocks_.begin(), blocks_.end(), start, [](const Block& b, uint64_t s) { return b.start < s; });
+    const bool joins_next = next != blocks_.end() && next->start == start + length;
+    const bool joins_previous = next != blocks_.begin() && std::prev(next)->start + std::prev(next)->length == start;
+    if (joins_previous) {
+      std::prev(next)->length += length + (joins_next ? next->length : 0);
+      if (joins_next) blocks_.erase(next);
+    } else if (joins_next) {
+      next->length += length;
+      next->start = start;
+    } else {
+      blocks_.insert(next, {start, length});
     }
-    if (next != blocks_.begin() && std::prev(next)->start + std::prev(next)->length == start) {
-      std::prev(next)->length += length;
-      return;
-    }
-    blocks_.insert(next, {start, length});
   }
 
  private:
   struct Block {
     uint64_t start, length;
   };
+
+  // Block i gives way to what is left of it on either side (empty parts dropped),
+  // moving the array only when the count of blocks changes.
+  void replace(size_t i, Block left, Block right) {
+    const auto at = blocks_.begin() + ptrdiff_t(i);
+    if (left.length && right.length) {
+      *at = right;
+      blocks_.insert(at, left);
+    } else if (left.length || right.length) {
+      *at = left.length ? left : right;
+    } else {
+      blocks_.erase(at);
+    }
+  }
+
   std::vector<Block> blocks_;  // sorted by start, disjoint, never touching
   uint64_t top_ = 0;
 };
 
 std::vector<uint64_t> place_linear_scan(const std::vector<Item>& items) {
-  std::vector<uint32_t> by_first(items.size()), by_last(items.size());
-  for (uint32_t i = 0; i < items.size(); ++i) by_first[i] = by_last[i] = i;
-  std::sort(by_first.begin(), by_first.end(), [&](uint32_t a, uint32_t b) {
-    if (items[a].life.first != items[b].life.first) return items[a].life.first < items[b].life.first;
-    if (items[a].req.size != items[b].req.size) return items[a].req.size > items[b].req.size;
-    return items[a].resource < items[b].resource;
-  });
-  std::sort(by_last.begin(), by_last.end(),
-            [&](uint32_t a, uint32_t b) { return items[a].life.last < items[b].life.last; });
+  // First use, larger first; the order of releases at one position changes nothing (the
+  // free blocks merge the same way).
+  const std::vector<uint32_t> by_first =
+      sorted_by(items, [](const Item& it) { return std::pair{it.life.first, ~it.req.size}; });
+  const std::vector<uint32_t> by_last = sorted_by(items, [](const Item& it) { return it.life.last; });
   std::vector<uint64_t> offset(items.size(), 0);
   FreeList heap;
   size_t released = 0;
@@ -246,12 +267,12 @@ std::vector<uint64_t> place_linear_scan_mirrored(const std::vector<Item>& items)
   return place_linear_scan(mirrored);
 }
 
-// The linear scan forwards and, when that leaves bytes above `lower_bound`, backwards;
-// the smaller layout (forwards on a tie).
+// The linear scan forwards and, when that leaves more than 1 % above `lower_bound`,
+// backwards too; the smaller layout (forwards on a tie).
 std::vector<uint64_t> place_linear_scan_both_ways(const std::vector<Item>& items, uint64_t lower_bound) {
   std::vector<uint64_t> forwards = place_linear_scan(items);
   const uint64_t forwards_size = heap_size(items, forwards);
-  if (forwards_size <= lower_bound) return forwards;
+  if (forwards_size - forwards_size / 101 <= lower_bound) return forwards;  // forwards ≤ 1.01 × lower bound
   std::vector<uint64_t> backwards = place_linear_scan_mirrored(items);
   return heap_size(items, backwards) < forwards_size ? backwards : forwards;
 }
@@ -303,12 +324,7 @@ uint64_t live_bytes_peak(const std::vector<Item>& items, uint32_t positions) {
 // Sweeps the heap in order of first use; the latest occupant of each byte range is
 // the one a new resource hands over from.
 void find_handovers(const std::vector<Item>& items, const std::vector<uint64_t>& offset, std::vector<Handover>& out) {
-  std::vector<uint32_t> by_start(items.size());
-  for (uint32_t i = 0; i < items.size(); ++i) by_start[i] = i;
-  std::sort(by_start.begin(), by_start.end(), [&](uint32_t a, uint32_t b) {
-    if (items[a].life.first != items[b].life.first) return items[a].life.first < items[b].life.first;
-    return items[a].resource < items[b].resource;
-  });
+  const std::vector<uint32_t> by_start = sorted_by(items, [](const Item& it) { return it.life.first; });
   struct Segment {
     uint64_t start, end;
     uint32_t item;  // the last resource to use [start, end)
