@@ -2,8 +2,8 @@
 // share bytes only when their lifetimes are disjoint. Placement is greedy by size
 // with best fit among the gaps left by resources alive at the same time.
 #include <algorithm>
-#include <array>
 #include <map>
+#include <memory_resource>
 
 #include "graph/compiler/steps.h"
 
@@ -326,28 +326,27 @@ uint64_t live_bytes_peak(const std::vector<Item>& items, uint32_t positions) {
 void find_handovers(const std::vector<Item>& items, const std::vector<uint64_t>& offset, std::vector<Handover>& out) {
   const std::vector<uint32_t> by_start = sorted_by(items, [](const Item& it) { return it.life.first; });
   struct Segment {
-    uint64_t start, end;
+    uint64_t end;
     uint32_t item;  // the last resource to use [start, end)
   };
-  std::vector<Segment> occupied;  // sorted by start, disjoint
+  std::pmr::monotonic_buffer_resource arena;
+  std::pmr::map<uint64_t, Segment> occupied(&arena);  // start → segment; disjoint
   std::vector<uint32_t> previous;
   for (uint32_t i : by_start) {
     const uint64_t begin = offset[i], end = begin + items[i].req.size;
     if (end == begin) continue;
     previous.clear();
-    auto lo = std::upper_bound(occupied.begin(), occupied.end(), begin, [](uint64_t b, const Segment& s) { return b < s.start; });
-    if (lo != occupied.begin() && std::prev(lo)->end > begin) --lo;
-    auto hi = lo;
-    for (; hi != occupied.end() && hi->start < end; ++hi) previous.push_back(hi->item);
-    std::array<Segment, 3> replacement{};  // what is left of the first and last overlapped, around the new one
-    size_t n = 0;
-    if (lo != hi && lo->start < begin) replacement[n++] = {lo->start, begin, lo->item};
-    replacement[n++] = {begin, end, i};
-    if (lo != hi && std::prev(hi)->end > end) replacement[n++] = {end, std::prev(hi)->end, std::prev(hi)->item};
-    const size_t at = size_t(lo - occupied.begin()), overlapped = size_t(hi - lo);
-    if (overlapped > n) occupied.erase(occupied.begin() + ptrdiff_t(at + n), occupied.begin() + ptrdiff_t(at + overlapped));
-    if (overlapped < n) occupied.insert(occupied.begin() + ptrdiff_t(at + overlapped), n - overlapped, Segment{});
-    std::copy(replacement.begin(), replacement.begin() + ptrdiff_t(n), occupied.begin() + ptrdiff_t(at));
+    auto it = occupied.upper_bound(begin);
+    if (it != occupied.begin() && std::prev(it)->second.end > begin) --it;
+    while (it != occupied.end() && it->first < end) {
+      const uint64_t start = it->first;
+      const Segment seg = it->second;
+      previous.push_back(seg.item);
+      it = occupied.erase(it);
+      if (start < begin) occupied.emplace(start, Segment{begin, seg.item});
+      if (seg.end > end) it = occupied.emplace(end, Segment{seg.end, seg.item}).first;
+    }
+    occupied.emplace(begin, Segment{end, i});
     std::sort(previous.begin(), previous.end());
     previous.erase(std::unique(previous.begin(), previous.end()), previous.end());
     for (uint32_t p : previous) out.push_back({items[i].resource, items[p].resource});
