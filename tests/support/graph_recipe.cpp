@@ -40,7 +40,10 @@ GraphRecipe record_recipe(RandomGraph source) {
     for (const ResourceUse& u : g.passes[p].uses) {
       BuildStep step{u.direction, u.slot, p, {u.resource, u.version}};
       if (u.direction == SlotDirection::output) step.made = u.resource;
-      if (u.direction == SlotDirection::history) step = {u.direction, u.slot, p, {g.resources[u.resource].previous_of, 0}, u.resource};
+      if (u.direction == SlotDirection::history) {  // follows the pass's output, makes the history
+        step.what = {g.resources[u.resource].previous_of, 0};
+        step.made = u.resource;
+      }
       recipe.steps.push_back(step);
     }
   }

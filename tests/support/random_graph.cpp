@@ -408,37 +408,24 @@ RandomGraph make_random_graph(const RandomGraphOptions& options) {
   // consume_unread: of four fitting decls, the one that reads more of the classes made
   // but not yet read (and makes fewer of them), so that what passes make gets read.
   std::array<uint32_t, kClassCount> unread{};
+  auto unread_class_for = [&](const SlotDecl& s) {  // the first class the slot takes with some unread; kClassCount if none
+    uint32_t c = 0;
+    while (c < kClassCount && !((accepted_classes(s.kind, s.usage) & bit(Cls(c))) && unread[c] > 0)) ++c;
+    return c;
+  };
+  auto reads = [](const SlotDecl& s) { return s.direction == SlotDirection::input || s.direction == SlotDirection::inout; };
   auto reads_unread = [&](uint32_t d) {
     int score = 0;
-    for (const SlotDecl& s : out.decls[d]->slots) {
-      if (s.direction == SlotDirection::input || s.direction == SlotDirection::inout) {
-        for (uint32_t c = 0; c < kClassCount; ++c) {
-          if ((accepted_classes(s.kind, s.usage) & bit(Cls(c))) && unread[c] > 0) {
-            ++score;
-            break;
-          }
-        }
-      }
-    }
-    for (uint32_t c = 0; c < kClassCount; ++c) {
-      if ((produces[d] & bit(Cls(c))) && unread[c] > 0) --score;
-    }
+    for (const SlotDecl& s : out.decls[d]->slots) score += reads(s) && unread_class_for(s) < kClassCount;
+    for (uint32_t c = 0; c < kClassCount; ++c) score -= (produces[d] & bit(Cls(c))) && unread[c] > 0;
     return score;
   };
   auto account = [&](uint32_t d) {
     for (const SlotDecl& s : out.decls[d]->slots) {
-      if (s.direction == SlotDirection::input || s.direction == SlotDirection::inout) {
-        for (uint32_t c = 0; c < kClassCount; ++c) {
-          if ((accepted_classes(s.kind, s.usage) & bit(Cls(c))) && unread[c] > 0) {
-            --unread[c];
-            break;
-          }
-        }
-      }
+      if (!reads(s)) continue;
+      if (const uint32_t c = unread_class_for(s); c < kClassCount) --unread[c];
     }
-    for (uint32_t c = 0; c < kClassCount; ++c) {
-      if (produces[d] & bit(Cls(c))) ++unread[c];
-    }
+    for (uint32_t c = 0; c < kClassCount; ++c) unread[c] += (produces[d] & bit(Cls(c))) != 0;
   };
   std::vector<uint32_t> sequence(options.passes);
   for (uint32_t s = 0; s < options.passes; ++s) {
