@@ -11,70 +11,24 @@
 #include "graph/plan.h"
 #include "graph/plan_report.h"
 #include "tests/fixtures/full_frame.h"
-#include "tests/support/random_graph.h"
+#include "tests/support/graph_recipe.h"
 
 namespace volgraph {
 namespace {
 
-// A recorded graph: rebuilding it replays the GraphBuilder calls that made it, in an
-// order where every resource exists before it is read. This is the "building" half of
-// the measurement; the random generation that chose the graph is not timed.
-struct Recipe {
-  test::RandomGraph source;
-  std::vector<uint32_t> build_order;
-  std::vector<uint32_t> version_begin;  // resource r's versions start here in a flat array
-};
+// A recorded graph (tests/support/graph_recipe.h): rebuilding it replays the
+// GraphBuilder calls that made it. This is the "building" half of the measurement; the
+// random generation that chose the graph is not timed.
+using test::BenchShape;
+using test::GraphRecipe;
 
-// Two shapes of random graph. Frame-like: the scene has every feature, inputs come
-// mostly from the last 8 passes and at most 64 back, 2 % of resources are graph
-// outputs. Stress: the property tests' shape — random scene needs (most passes get
-// culled), long-range reads from anywhere in the frame, 5 % outputs.
-enum class Shape { frame_like, stress };
-
-Recipe record(uint32_t passes, Shape shape) {
-  test::RandomGraphOptions o;
-  o.passes = passes;
-  o.seed = 20261121 + passes;
-  if (shape == Shape::frame_like) {
-    o.allow_needs = false;
-    o.far_window = 64;
-    o.output_fraction = 0.02;
-  }
-  Recipe r{test::make_random_graph(o), {}, {}};
-  const Plan all = compile(r.source.graph, {.cull = false});
-  for (const PlannedPass& p : all.order) r.build_order.push_back(p.pass);
-  r.version_begin.push_back(0);
-  for (const GraphResource& res : r.source.graph.resources) {
-    r.version_begin.push_back(r.version_begin.back() + uint32_t(res.version_writers.size()));
-  }
-  return r;
-}
-
-Graph rebuild(const Recipe& r) {
-  const Graph& g = r.source.graph;
-  GraphBuilder b(g.output_size, g.scene);
-  for (const GraphPass& p : g.passes) b.add_pass(p.name, *p.decl, p.variant);
-  std::vector<ResourceVersion> made(r.version_begin.back());  // what the builder returned per version
-  auto version = [&](uint32_t res, uint32_t v) -> ResourceVersion& { return made[r.version_begin[res] + v]; };
-  for (uint32_t p : r.build_order) {
-    for (const ResourceUse& u : g.passes[p].uses) {
-      if (u.direction == SlotDirection::output) {
-        version(u.resource, 0) = b.create(p, u.slot, g.resources[u.resource].desc);
-      } else if (u.direction == SlotDirection::inout) {
-        version(u.resource, u.version + 1) = b.modify(p, u.slot, version(u.resource, u.version));
-      } else {
-        b.read(p, u.slot, version(u.resource, u.version));
-      }
-    }
-  }
-  for (const ResourceVersion& o : g.outputs) b.mark_output(version(o.resource, o.version));
-  return b.finish();
-}
-
-const Recipe& recipe(uint32_t passes, Shape shape) {
-  static std::map<std::pair<uint32_t, Shape>, Recipe> cache;  // generated once per size and shape
+const GraphRecipe& recipe(uint32_t passes, BenchShape shape) {
+  static std::map<std::pair<uint32_t, BenchShape>, GraphRecipe> cache;  // generated once per size and shape
   auto it = cache.find({passes, shape});
-  if (it == cache.end()) it = cache.emplace(std::pair{passes, shape}, record(passes, shape)).first;
+  if (it == cache.end()) {
+    it = cache.emplace(std::pair{passes, shape}, test::record_recipe(test::make_random_graph(test::bench_graph_options(passes, shape))))
+             .first;
+  }
   return it->second;
 }
 
@@ -85,11 +39,11 @@ void report_memory(benchmark::State& state, const Plan& plan) {
   state.counters["barriers"] = double(plan.barriers.size());
 }
 
-void build_and_compile(benchmark::State& state, Shape shape) {
-  const Recipe& r = recipe(uint32_t(state.range(0)), shape);
+void build_and_compile(benchmark::State& state, BenchShape shape) {
+  const GraphRecipe& r = recipe(uint32_t(state.range(0)), shape);
   Plan plan;
   for (auto _ : state) {
-    Graph g = rebuild(r);
+    Graph g = test::rebuild(r);
     plan = compile(g);
     benchmark::DoNotOptimize(plan.order.data());
   }
@@ -100,13 +54,13 @@ void build_and_compile(benchmark::State& state, Shape shape) {
   state.SetLabel(std::string(placement_method_name(plan.memory.method)));
 }
 
-void BM_BuildAndCompile_FrameLike(benchmark::State& state) { build_and_compile(state, Shape::frame_like); }
-void BM_BuildAndCompile_Stress(benchmark::State& state) { build_and_compile(state, Shape::stress); }
+void BM_BuildAndCompile_FrameLike(benchmark::State& state) { build_and_compile(state, BenchShape::frame_like); }
+void BM_BuildAndCompile_Stress(benchmark::State& state) { build_and_compile(state, BenchShape::stress); }
 BENCHMARK(BM_BuildAndCompile_FrameLike)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BuildAndCompile_Stress)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 void BM_CompileOnly_FrameLike(benchmark::State& state) {
-  const Recipe& r = recipe(uint32_t(state.range(0)), Shape::frame_like);
+  const GraphRecipe& r = recipe(uint32_t(state.range(0)), BenchShape::frame_like);
   for (auto _ : state) {
     Plan plan = compile(r.source.graph);
     benchmark::DoNotOptimize(plan.order.data());

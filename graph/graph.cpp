@@ -10,15 +10,19 @@ GraphBuilder::GraphBuilder(Extent output_size, SceneFeatures scene) {
   graph_.scene = scene;
 }
 
+void GraphBuilder::reserve(uint32_t passes, uint32_t resources) {
+  graph_.passes.reserve(passes);
+  graph_.resources.reserve(resources);
+}
+
 uint32_t GraphBuilder::add_pass(std::string name, const PassDecl& decl, uint16_t variant) {
-  GraphPass p;
+  GraphPass& p = graph_.passes.emplace_back();
   p.name = std::move(name);
   p.decl = &decl;
   p.variant = variant;
   p.kind = decl.kind;
   p.needs = decl.needs;
   p.uses.reserve(decl.slots.size());
-  graph_.passes.push_back(std::move(p));
   return static_cast<uint32_t>(graph_.passes.size() - 1);
 }
 
@@ -53,11 +57,10 @@ ResourceVersion GraphBuilder::create(uint32_t pass, uint16_t slot, ResourceDesc 
                                      " on a " + std::string(kind_name(desc.kind)));
   }
   desc.persistent = desc.persistent || s.persistent;
-  GraphResource r;
+  GraphResource& r = graph_.resources.emplace_back();
   r.desc = std::move(desc);
   r.creator = pass;
   r.version_writers.push_back(pass);
-  graph_.resources.push_back(std::move(r));
   const uint32_t id = static_cast<uint32_t>(graph_.resources.size() - 1);
   p.uses.push_back({id, 0, slot, s.usage, SlotDirection::output, false});
   return {id, 0};

@@ -88,6 +88,9 @@ class GraphBuilder {
  public:
   GraphBuilder(Extent output_size, SceneFeatures scene);
 
+  // Room for this many passes and resources, when the caller knows (no regrowth).
+  void reserve(uint32_t passes, uint32_t resources);
+
   uint32_t add_pass(std::string name, const PassDecl& decl, uint16_t variant = 0);
   // Creates the resource of an output slot; desc.name is filled in when empty.
   ResourceVersion create(uint32_t pass, uint16_t slot, ResourceDesc desc);

@@ -28,14 +28,13 @@ struct UsesByResource {
 };
 
 UsesByResource uses_by_resource(const FlatGraph& g, const Schedule& schedule) {
-  const Graph& graph = *g.graph;
   UsesByResource out;
   std::vector<uint32_t> last_position(g.resource_count(), kNone);
   auto for_each_bound_use = [&](auto&& visit) {
     for (uint32_t pos = 0; pos < schedule.order.size(); ++pos) {
       const uint32_t p = schedule.order[pos];
       for (uint32_t k = g.use_begin[p]; k < g.use_begin[p + 1]; ++k) {
-        if (schedule.bound[k]) visit(pos, graph.passes[p].kind, g.uses[k]);
+        if (schedule.bound[k]) visit(pos, g.pass_kind[p], g.uses[k]);
       }
     }
   };
@@ -50,7 +49,7 @@ UsesByResource uses_by_resource(const FlatGraph& g, const Schedule& schedule) {
   std::vector<uint32_t> fill(out.begin.begin(), out.begin.end() - 1);
   std::fill(last_position.begin(), last_position.end(), kNone);
   for_each_bound_use([&](uint32_t pos, PassKind kind, const ResourceUse& u) {
-    const AccessState s = access_state(u.usage, kind, graph.resources[u.resource].desc.kind);
+    const AccessState s = access_state(u.usage, kind, g.resource_kind[u.resource]);
     if (last_position[u.resource] == pos) {
       Use& merged = out.uses[fill[u.resource] - 1];
       merged.state.stages |= s.stages;

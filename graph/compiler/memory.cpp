@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <map>
 #include <memory_resource>
-#include <set>
 
 #include "graph/compiler/steps.h"
 
 namespace volgraph::compiler {
-uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
+uint64_t align_up(uint64_t v, uint64_t a) {
+  if ((a & (a - 1)) == 0) return (v + a - 1) & ~(a - 1);  // a power of two (every backend's): no division
+  return (v + a - 1) / a * a;
+}
 
 namespace {
 
@@ -20,6 +22,25 @@ struct Item {
   Lifetime life;
   MemoryRequirements req;
 };
+
+uint64_t heap_size(const std::vector<Item>& items, const std::vector<uint64_t>& offset) {
+  uint64_t size = 0;
+  for (size_t i = 0; i < items.size(); ++i) size = std::max(size, offset[i] + items[i].req.size);
+  return size;
+}
+
+// Item indices in order of a key, sorted by value (no lookups through the index while
+// sorting). Items are in resource order, so the index breaks ties as the resource would.
+template <typename Key>
+std::vector<uint32_t> sorted_by(const std::vector<Item>& items, Key key) {
+  using K = decltype(key(items[0]));
+  std::vector<std::pair<K, uint32_t>> keyed(items.size());
+  for (uint32_t i = 0; i < items.size(); ++i) keyed[i] = {key(items[i]), i};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<uint32_t> order(items.size());
+  for (size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
+  return order;
+}
 
 // Placed items by the time buckets their lifetimes cover, as compressed rows built up
 // front (every lifetime is known); an item counts once placed. Items living longer
@@ -94,16 +115,11 @@ uint64_t best_fit(const Item& item, const std::vector<std::pair<uint64_t, uint64
 // Greedy by size keeps to the lower bound far better than a linear scan, and costs
 // time in proportion to the pairs of resources alive together; past this many pairs
 // per resource on average the linear scan takes over.
-constexpr uint64_t kGreedyPairsPerResource = 48;
+constexpr uint64_t kGreedyPairsPerResource = 16;
 
 std::vector<uint64_t> place_aliased(std::vector<Item>& items, uint32_t positions) {
-  std::vector<uint32_t> by_size(items.size());
-  for (uint32_t i = 0; i < items.size(); ++i) by_size[i] = i;
-  std::sort(by_size.begin(), by_size.end(), [&](uint32_t a, uint32_t b) {
-    if (items[a].req.size != items[b].req.size) return items[a].req.size > items[b].req.size;
-    if (items[a].life.first != items[b].life.first) return items[a].life.first < items[b].life.first;
-    return items[a].resource < items[b].resource;
-  });
+  const std::vector<uint32_t> by_size =
+      sorted_by(items, [](const Item& it) { return std::pair{~it.req.size, it.life.first}; });  // larger first
   std::vector<uint64_t> offset(items.size(), 0);
   TimeIndex index(items, positions);
   std::vector<std::pair<uint64_t, uint64_t>> busy;
@@ -115,6 +131,20 @@ std::vector<uint64_t> place_aliased(std::vector<Item>& items, uint32_t positions
     index.place(i);
   }
   return offset;
+}
+
+// The distinct alignments of `items`, strictest first, when there are at most
+// kFewAlignments of them (a backend has a handful); empty otherwise.
+constexpr size_t kFewAlignments = 16;
+std::vector<uint64_t> few_alignments_strictest_first(const std::vector<Item>& items) {
+  std::vector<uint64_t> out;
+  for (const Item& it : items) {
+    if (std::find(out.begin(), out.end(), it.req.alignment) != out.end()) continue;
+    if (out.size() == kFewAlignments) return {};
+    out.push_back(it.req.alignment);
+  }
+  std::sort(out.begin(), out.end(), std::greater<>());
+  return out;
 }
 
 // Side by side, strictest alignment first so that padding stays rare.
@@ -135,31 +165,34 @@ std::vector<uint64_t> place_unaliased(const std::vector<Item>& items) {
 // A linear scan in order of first use: each resource takes the best-fitting free
 // block (or the top of the heap) and gives its block back after its last use.
 // O(n log n) whatever the lifetimes, at the price of some fragmentation.
+// The free blocks are few (the holes between resources alive at once): one flat array
+// sorted by start, searched linearly for the best fit, beats two balanced trees.
 class FreeList {
  public:
-  explicit FreeList(std::pmr::memory_resource* arena) : by_start_(arena), by_size_(arena) {}
-
   // Where a block of `size` aligned to `align` goes: the smallest free block it fits
-  // in, else the top of the heap (reusing a free block that reaches the top).
+  // in (the lowest such when several are as small), else the top of the heap (reusing
+  // a free block that reaches the top).
   uint64_t take(uint64_t size, uint64_t align) {
-    for (auto it = by_size_.lower_bound({size, 0}); it != by_size_.end(); ++it) {
-      const auto [length, start] = *it;
-      const uint64_t at = align_up(start, align);
-      if (at + size > start + length) continue;
-      erase(start, length);
-      if (at > start) add(start, at - start);
-      if (at + size < start + length) add(at + size, start + length - at - size);
+    size_t best = blocks_.size();
+    for (size_t i = 0; i < blocks_.size(); ++i) {
+      const Block& b = blocks_[i];
+      if (b.length < size || (best != blocks_.size() && b.length >= blocks_[best].length)) continue;
+      if (align_up(b.start, align) + size > b.start + b.length) continue;
+      best = i;
+      if (b.length == size) break;  // an exact fit: none smaller, and the lowest of its length
+    }
+    if (best != blocks_.size()) {
+      const Block b = blocks_[best];
+      const uint64_t at = align_up(b.start, align);
+      replace(best, {b.start, at - b.start}, {at + size, b.start + b.length - at - size});
       return at;
     }
     uint64_t at = align_up(top_, align);
-    if (!by_start_.empty()) {
-      const auto last = std::prev(by_start_.end());
-      if (last->first + last->second == top_) {
-        const uint64_t start = last->first, length = last->second;
-        erase(start, length);
-        at = align_up(start, align);
-        if (at > start) add(start, at - start);
-      }
+    if (!blocks_.empty() && blocks_.back().start + blocks_.back().length == top_) {
+      const Block last = blocks_.back();
+      blocks_.pop_back();
+      at = align_up(last.start, align);
+      if (at > last.start) blocks_.push_back({last.start, at - last.start});
     }
     top_ = std::max(top_, at + size);
     return at;
@@ -167,51 +200,51 @@ class FreeList {
 
   // Returns a block, merged with free neighbours that touch it.
   void give_back(uint64_t start, uint64_t length) {
-    auto next = by_start_.lower_bound(start);
-    if (next != by_start_.end() && next->first == start + length) {
-      length += next->second;
-      erase(next->first, next->second);
-      next = by_start_.lower_bound(start);
+    const auto next = std::lower_bound(blocks_.begin(), blocks_.end(), start, [](const Block& b, uint64_t s) { return b.start < s; });
+    const bool joins_next = next != blocks_.end() && next->start == start + length;
+    const bool joins_previous = next != blocks_.begin() && std::prev(next)->start + std::prev(next)->length == start;
+    if (joins_previous) {
+      std::prev(next)->length += length + (joins_next ? next->length : 0);
+      if (joins_next) blocks_.erase(next);
+    } else if (joins_next) {
+      next->length += length;
+      next->start = start;
+    } else {
+      blocks_.insert(next, {start, length});
     }
-    if (next != by_start_.begin()) {
-      const auto prev = std::prev(next);
-      if (prev->first + prev->second == start) {
-        start = prev->first;
-        length += prev->second;
-        erase(prev->first, prev->second);
-      }
-    }
-    add(start, length);
   }
 
  private:
-  void add(uint64_t start, uint64_t length) {
-    by_start_.emplace(start, length);
-    by_size_.emplace(length, start);
-  }
-  void erase(uint64_t start, uint64_t length) {
-    by_start_.erase(start);
-    by_size_.erase({length, start});
+  struct Block {
+    uint64_t start, length;
+  };
+
+  // Block i gives way to what is left of it on either side (empty parts dropped),
+  // moving the array only when the count of blocks changes.
+  void replace(size_t i, Block left, Block right) {
+    const auto at = blocks_.begin() + ptrdiff_t(i);
+    if (left.length && right.length) {
+      *at = right;
+      blocks_.insert(at, left);
+    } else if (left.length || right.length) {
+      *at = left.length ? left : right;
+    } else {
+      blocks_.erase(at);
+    }
   }
 
-  std::pmr::map<uint64_t, uint64_t> by_start_;            // start → length
-  std::pmr::set<std::pair<uint64_t, uint64_t>> by_size_;  // (length, start): best fit
+  std::vector<Block> blocks_;  // sorted by start, disjoint, never touching
   uint64_t top_ = 0;
 };
 
 std::vector<uint64_t> place_linear_scan(const std::vector<Item>& items) {
-  std::vector<uint32_t> by_first(items.size()), by_last(items.size());
-  for (uint32_t i = 0; i < items.size(); ++i) by_first[i] = by_last[i] = i;
-  std::sort(by_first.begin(), by_first.end(), [&](uint32_t a, uint32_t b) {
-    if (items[a].life.first != items[b].life.first) return items[a].life.first < items[b].life.first;
-    if (items[a].req.size != items[b].req.size) return items[a].req.size > items[b].req.size;
-    return items[a].resource < items[b].resource;
-  });
-  std::sort(by_last.begin(), by_last.end(),
-            [&](uint32_t a, uint32_t b) { return items[a].life.last < items[b].life.last; });
+  // First use, larger first; the order of releases at one position changes nothing (the
+  // free blocks merge the same way).
+  const std::vector<uint32_t> by_first =
+      sorted_by(items, [](const Item& it) { return std::pair{it.life.first, ~it.req.size}; });
+  const std::vector<uint32_t> by_last = sorted_by(items, [](const Item& it) { return it.life.last; });
   std::vector<uint64_t> offset(items.size(), 0);
-  std::pmr::monotonic_buffer_resource arena;
-  FreeList heap(&arena);
+  FreeList heap;
   size_t released = 0;
   for (uint32_t i : by_first) {
     for (; released < by_last.size() && items[by_last[released]].life.last < items[i].life.first; ++released) {
@@ -221,6 +254,27 @@ std::vector<uint64_t> place_linear_scan(const std::vector<Item>& items) {
     offset[i] = heap.take(items[i].req.size, items[i].req.alignment);
   }
   return offset;
+}
+
+// The linear scan run backwards in time (lifetimes mirrored: the last use becomes the
+// first), which fragments differently; the offsets hold for the original lifetimes, as
+// mirroring keeps which lifetimes overlap.
+std::vector<uint64_t> place_linear_scan_mirrored(const std::vector<Item>& items) {
+  uint32_t end = 0;
+  for (const Item& it : items) end = std::max(end, it.life.last);
+  std::vector<Item> mirrored = items;
+  for (Item& it : mirrored) it.life = {end - it.life.last, end - it.life.first};
+  return place_linear_scan(mirrored);
+}
+
+// The linear scan forwards and, when that leaves more than 1 % above `lower_bound`,
+// backwards too; the smaller layout (forwards on a tie).
+std::vector<uint64_t> place_linear_scan_both_ways(const std::vector<Item>& items, uint64_t lower_bound) {
+  std::vector<uint64_t> forwards = place_linear_scan(items);
+  const uint64_t forwards_size = heap_size(items, forwards);
+  if (forwards_size - forwards_size / 101 <= lower_bound) return forwards;  // forwards ≤ 1.01 × lower bound
+  std::vector<uint64_t> backwards = place_linear_scan_mirrored(items);
+  return heap_size(items, backwards) < forwards_size ? backwards : forwards;
 }
 
 // How many pairs of resources are alive at a common position: greedy-by-size visits
@@ -240,11 +294,20 @@ uint64_t overlapping_pairs(const std::vector<Item>& items, uint32_t positions) {
   return pairs / 2;
 }
 
-uint64_t heap_size(const std::vector<Item>& items, const std::vector<uint64_t>& offset) {
-  uint64_t size = 0;
-  for (size_t i = 0; i < items.size(); ++i) size = std::max(size, offset[i] + items[i].req.size);
-  return size;
+// The size of place_unaliased's layout without making it: the same walk, strictest
+// alignment first and in item order within one alignment.
+uint64_t unaliased_size(const std::vector<Item>& items) {
+  const std::vector<uint64_t> alignments = few_alignments_strictest_first(items);
+  if (alignments.empty()) return heap_size(items, place_unaliased(items));
+  uint64_t cursor = 0;
+  for (const uint64_t alignment : alignments) {
+    for (const Item& it : items) {
+      if (it.req.alignment == alignment) cursor = align_up(cursor, alignment) + it.req.size;
+    }
+  }
+  return cursor;
 }
+
 
 // The most bytes alive at one position: no placement can do better.
 uint64_t live_bytes_peak(const std::vector<Item>& items, uint32_t positions) {
@@ -261,12 +324,7 @@ uint64_t live_bytes_peak(const std::vector<Item>& items, uint32_t positions) {
 // Sweeps the heap in order of first use; the latest occupant of each byte range is
 // the one a new resource hands over from.
 void find_handovers(const std::vector<Item>& items, const std::vector<uint64_t>& offset, std::vector<Handover>& out) {
-  std::vector<uint32_t> by_start(items.size());
-  for (uint32_t i = 0; i < items.size(); ++i) by_start[i] = i;
-  std::sort(by_start.begin(), by_start.end(), [&](uint32_t a, uint32_t b) {
-    if (items[a].life.first != items[b].life.first) return items[a].life.first < items[b].life.first;
-    return items[a].resource < items[b].resource;
-  });
+  const std::vector<uint32_t> by_start = sorted_by(items, [](const Item& it) { return it.life.first; });
   struct Segment {
     uint64_t end;
     uint32_t item;  // the last resource to use [start, end)
@@ -324,12 +382,12 @@ MemoryLayout place_memory(const Graph& graph, const std::vector<Lifetime>& lifet
                                        : PlacementMethod::linear_scan;
     // Side by side is what --no-alias allocates; an aliased layout that padding made
     // larger (mixed alignments) gives way to it.
-    const std::vector<uint64_t> side_by_side = place_unaliased(items);
-    const uint64_t side_by_side_size = heap_size(items, side_by_side);
+    const uint64_t side_by_side_size = unaliased_size(items);
+    const uint64_t lower_bound = live_bytes_peak(items, positions);
     std::vector<uint64_t> offset = method == PlacementMethod::greedy_by_size ? place_aliased(items, positions)
-                                   : method == PlacementMethod::linear_scan  ? place_linear_scan(items)
-                                                                             : side_by_side;
-    if (heap_size(items, offset) > side_by_side_size) offset = side_by_side;
+                                   : method == PlacementMethod::linear_scan  ? place_linear_scan_both_ways(items, lower_bound)
+                                                                             : place_unaliased(items);
+    if (method != PlacementMethod::unaliased && heap_size(items, offset) > side_by_side_size) offset = place_unaliased(items);
     m.stats.method = std::max(m.stats.method, method);
     Heap heap{heap_class, heap_size(items, offset), 1};
     const uint32_t heap_index = static_cast<uint32_t>(m.heaps.size());
@@ -342,7 +400,7 @@ MemoryLayout place_memory(const Graph& graph, const std::vector<Lifetime>& lifet
     m.stats.unaliased_bytes += side_by_side_size;
     m.stats.transient_count += items.size();
     m.stats.aliased_bytes += heap.size;
-    m.stats.lower_bound_bytes += live_bytes_peak(items, positions);
+    m.stats.lower_bound_bytes += lower_bound;
     m.heaps.push_back(heap);
     if (alias) find_handovers(items, offset, m.handovers);
   }

@@ -128,8 +128,7 @@ std::vector<uint8_t> cull_for_needs(const FlatGraph& g, const std::vector<uint32
   const Graph& graph = *g.graph;
   std::vector<uint8_t> dead(g.pass_count(), 0);
   for (uint32_t p : order) {
-    const GraphPass& pass = graph.passes[p];
-    if (const SceneFeatures missing = pass.needs & ~graph.scene) {
+    if (const SceneFeatures missing = g.pass_needs[p] & ~graph.scene) {
       dead[p] = 1;
       culled.push_back({p, CullReason::scene_lacks, missing, 0});
     }

@@ -15,6 +15,9 @@ struct FlatGraph {
   std::vector<ResourceUse> uses;
   std::vector<uint32_t> version_begin;   // per resource + 1: its versions' writers in version_writer
   std::vector<uint32_t> version_writer;  // the pass that made each version
+  std::vector<PassKind> pass_kind;       // per pass
+  std::vector<SceneFeatures> pass_needs;  // per pass
+  std::vector<ResourceKind> resource_kind;  // per resource
 
   uint32_t pass_count() const { return uint32_t(use_begin.size() - 1); }
   uint32_t resource_count() const { return uint32_t(version_begin.size() - 1); }

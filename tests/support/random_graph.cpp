@@ -256,6 +256,10 @@ class Wiring {
     if (n == 0) return kNone;
     // Colour first most of the time when both 2D classes fit.
     if (n == 2 && order[0] == kColor2d && order[1] == kDepth2d && rng_.chance(0.25)) std::swap(order[0], order[1]);
+    for (uint32_t i = 0; options_.consume_unread && i < n; ++i) {
+      const uint32_t r = oldest_unread(order[i], seq, exclude);
+      if (r != kNone) return r;
+    }
     for (uint32_t i = 0; i < n; ++i) {
       const uint32_t r = pick_in(pools_[order[i]], seq, exclude);
       if (r != kNone) return r;
@@ -263,7 +267,28 @@ class Wiring {
     return kNone;
   }
 
-  void touch(uint32_t resource, uint32_t cls, uint32_t seq) { pools_[cls].push_back({resource, seq}); }
+  // `resource` got a new latest version (created or modified) at `seq`.
+  void touch(uint32_t resource, uint32_t cls, uint32_t seq) {
+    pools_[cls].push_back({resource, seq});
+    if (!options_.consume_unread) return;
+    if (unread_seq_.size() <= resource) unread_seq_.resize(resource + 1, kNone);
+    unread_seq_[resource] = seq;
+    unread_[cls].push_back({resource, seq});
+  }
+
+  // A pass read or modified `resource`'s latest version: its writer feeds a later pass.
+  void mark_read(uint32_t resource) {
+    if (resource >= unread_seq_.size() || unread_seq_[resource] == kNone) return;
+    if (fed_.size() <= unread_seq_[resource]) fed_.resize(unread_seq_[resource] + 1, 0);
+    fed_[unread_seq_[resource]] = 1;
+    unread_seq_[resource] = kNone;
+  }
+
+  // Whether `resource`'s latest version is unread and its writer feeds no later pass.
+  bool left_by_unfed_pass(uint32_t resource) const {
+    if (resource >= unread_seq_.size() || unread_seq_[resource] == kNone) return false;
+    return unread_seq_[resource] >= fed_.size() || !fed_[unread_seq_[resource]];
+  }
 
  private:
   uint32_t pick_in(const std::vector<Entry>& pool, uint32_t seq, const std::vector<uint32_t>& exclude) {
@@ -287,6 +312,25 @@ class Wiring {
     return kNone;
   }
 
+  // consume_unread: the oldest resource of class `c` whose latest version no pass has
+  // read, made at most far_window passes back by a pass that feeds no later pass yet,
+  // not in `exclude`; kNone if none.
+  uint32_t oldest_unread(uint32_t c, uint32_t seq, const std::vector<uint32_t>& exclude) {
+    const std::vector<Entry>& list = unread_[c];
+    const uint32_t from = options_.far_window == 0 || seq <= options_.far_window ? 0 : seq - options_.far_window;
+    auto current = [&](const Entry& e) {
+      return unread_seq_[e.resource] == e.seq && (e.seq >= fed_.size() || !fed_[e.seq]);
+    };
+    size_t& head = unread_head_[c];
+    while (head < list.size() && (list[head].seq < from || !current(list[head]))) ++head;
+    for (size_t i = head; i < list.size(); ++i) {
+      if (current(list[i]) && std::find(exclude.begin(), exclude.end(), list[i].resource) == exclude.end()) {
+        return list[i].resource;
+      }
+    }
+    return kNone;
+  }
+
   // Where long-range reads may start: the whole pool, or the last far_window passes.
   size_t far_begin(const std::vector<Entry>& pool, uint32_t seq) const {
     if (options_.far_window == 0 || seq <= options_.far_window) return 0;
@@ -298,6 +342,13 @@ class Wiring {
   Rng& rng_;
   const RandomGraphOptions& options_;
   std::array<std::vector<Entry>, kClassCount> pools_;
+  // consume_unread: per resource the sequence position of its unread latest version
+  // (kNone once read), and per class the latest versions in order made (stale entries
+  // skipped), scanned from a head that only moves forward.
+  std::vector<uint32_t> unread_seq_;
+  std::vector<uint8_t> fed_;  // per sequence position: some version its pass made was read
+  std::array<std::vector<Entry>, kClassCount> unread_;
+  std::array<size_t, kClassCount> unread_head_{};
 };
 
 }  // namespace
@@ -354,9 +405,38 @@ RandomGraph make_random_graph(const RandomGraphOptions& options) {
     }
   };
   rebuild();
+  // consume_unread: of four fitting decls, the one that reads more of the classes made
+  // but not yet read (and makes fewer of them), so that what passes make gets read.
+  std::array<uint32_t, kClassCount> unread{};
+  auto unread_class_for = [&](const SlotDecl& s) {  // the first class the slot takes with some unread; kClassCount if none
+    uint32_t c = 0;
+    while (c < kClassCount && !((accepted_classes(s.kind, s.usage) & bit(Cls(c))) && unread[c] > 0)) ++c;
+    return c;
+  };
+  auto reads = [](const SlotDecl& s) { return s.direction == SlotDirection::input || s.direction == SlotDirection::inout; };
+  auto reads_unread = [&](uint32_t d) {
+    int score = 0;
+    for (const SlotDecl& s : out.decls[d]->slots) score += reads(s) && unread_class_for(s) < kClassCount;
+    for (uint32_t c = 0; c < kClassCount; ++c) score -= (produces[d] & bit(Cls(c))) && unread[c] > 0;
+    return score;
+  };
+  auto account = [&](uint32_t d) {
+    for (const SlotDecl& s : out.decls[d]->slots) {
+      if (!reads(s)) continue;
+      if (const uint32_t c = unread_class_for(s); c < kClassCount) --unread[c];
+    }
+    for (uint32_t c = 0; c < kClassCount; ++c) unread[c] += (produces[d] & bit(Cls(c))) != 0;
+  };
   std::vector<uint32_t> sequence(options.passes);
   for (uint32_t s = 0; s < options.passes; ++s) {
-    const uint32_t d = rng.pick(fitting);
+    uint32_t d = rng.pick(fitting);
+    if (options.consume_unread) {
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t other = rng.pick(fitting);
+        if (reads_unread(other) > reads_unread(d)) d = other;
+      }
+      account(d);
+    }
     sequence[s] = d;
     if ((available | produces[d]) != available) {
       available |= produces[d];
@@ -410,6 +490,7 @@ RandomGraph make_random_graph(const RandomGraphOptions& options) {
   };
   auto read_version = [&](uint32_t p, uint16_t slot, uint32_t r, uint32_t v) {
     builder.read(p, slot, {r, v});
+    if (v == latest[r]) wiring.mark_read(r);
     preds[p].push_back(writer_of(r, v));
     readers[r][v].push_back(p);
   };
@@ -427,6 +508,7 @@ RandomGraph make_random_graph(const RandomGraphOptions& options) {
       const uint32_t r = wiring.pick(accepted_classes(slot.kind, slot.usage), s, not_modifiable);
       if (r == kNone) continue;  // cannot happen for a fitting decl; stay safe
       const uint32_t v = latest[r];
+      wiring.mark_read(r);
       preds[p].push_back(writer_of(r, v));
       for (uint32_t q : readers[r][v]) {
         if (q != p) preds[p].push_back(q);
@@ -512,6 +594,13 @@ RandomGraph make_random_graph(const RandomGraphOptions& options) {
   for (uint32_t r = 0; r < latest.size(); ++r) {
     if (builder.graph().resources[r].previous_of != kNone) continue;  // a history: not this frame's
     if (rng.chance(options.output_fraction)) {
+      builder.mark_output({r, latest[r]});
+      any = true;
+    }
+  }
+  if (options.consume_unread) {  // what the frame's last passes (and any other pass no pass reads) make
+    for (uint32_t r = 0; r < latest.size(); ++r) {
+      if (!wiring.left_by_unfed_pass(r)) continue;
       builder.mark_output({r, latest[r]});
       any = true;
     }

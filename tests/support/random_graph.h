@@ -32,6 +32,11 @@ struct RandomGraphOptions {
   bool allow_persistent = true;   // outputs may be persistent
   double stale_fraction = 0.05;   // chance per input slot to read an older version when acyclic
   uint32_t far_window = 0;        // long-range reads reach at most this many passes back (0: anywhere)
+  // Inputs and inouts take the oldest resource (within far_window) whose latest version
+  // no pass has read yet and whose writer feeds no later pass yet, when one fits, and
+  // what a pass feeding no later pass leaves unread (the frame's last passes, mostly)
+  // becomes a graph output: as in a frame, every pass feeds what the frame delivers.
+  bool consume_unread = false;
 };
 
 // Builds a random acyclic graph: passes are added in a shuffled order, then wired along a
