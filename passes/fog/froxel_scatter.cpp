@@ -29,9 +29,9 @@ struct FroxelScatterTable : fog::PhaseTable {
   // The phase variants and dual_hg's lobes come first (fog::PhaseTable); then:
   // Parameters.
   ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
-  ParamHandle<int64_t> shadow_steps = integer("shadow_steps", 0, 0, 256, "",
-      "steps of the march through the local volumes toward each light not covered by media_shadow (0: none; the global and height fog "
-      "dim every light in closed form regardless)");
+  ParamHandle<int64_t> shadow_steps = integer("shadow_steps", 8, 0, 256, "",
+      "steps of the march through the local volumes toward each light not covered by media_shadow (0: the volumes do not shadow; "
+      "skipped where the scene has no local volume; the global and height fog dim every light in closed form regardless)");
   ParamHandle<double> shadow_distance = number("shadow_distance", 50, 0.01, 1e5, "m", "how far that march goes toward directional lights");
   ParamHandle<bool> skip_empty = flag("skip_empty", true, "froxels without scattering skip the light loop (off: to measure the saving)");
   // Slots.

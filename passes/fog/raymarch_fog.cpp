@@ -41,9 +41,9 @@ struct RaymarchFogTable : fog::PhaseTable {
   // Parameters.
   ParamHandle<int64_t> steps = integer("steps", 64, 1, 4096, "", "equal steps from the camera to the surface");
   ParamHandle<int64_t> shadow_steps =
-      integer("shadow_steps", 0, 0, 1024, "",
-              "steps of the march through the local volumes toward each light (0: none; the global and height fog dim every light "
-              "in closed form regardless)");
+      integer("shadow_steps", 8, 0, 1024, "",
+              "steps of the march through the local volumes toward each light (0: the volumes do not shadow; skipped where the "
+              "scene has no local volume; the global and height fog dim every light in closed form regardless)");
   ParamHandle<double> max_distance = number("max_distance", 100, 1e-3, 1e7, "m",
                                             "view depth the march reaches where no surface is (at most the camera's far plane)");
   ParamHandle<double> shadow_distance =
