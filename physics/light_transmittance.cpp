@@ -5,6 +5,7 @@
 
 #include "physics/lighting.h"
 #include "physics/media.h"
+#include "physics/media_average.h"
 #include "physics/media_field.h"
 
 namespace volgraph::physics {
@@ -58,9 +59,16 @@ Vec3 fog_optical_depth_to_light(const Media& media, const Light& light, const Ve
 Vec3 volumes_optical_depth_to_light(const Media& media, const Light& light, const Vec3& p, int steps, double max_distance,
                                     double jitter) {
   if (steps <= 0 || media.volumes.empty()) return {0, 0, 0};
+  const double length = light_march_length(light, p, max_distance);
+  if (length <= 0) return {0, 0, 0};
   const MediaField field(local_volumes(media));
-  const Vec3 to_light = to_vec3(-vec(light_arriving(light, p).travel));
-  return optical_depth_along(field, p, to_light, light_march_length(light, p, max_distance), steps, jitter);
+  const RaySegment segment{p, to_vec3(-vec(light_arriving(light, p).travel)), 0.0, length};
+  glm::dvec3 optical_depth(0);
+  for (size_t i = 0; i < media.volumes.size(); ++i) {
+    const Medium& m = media.volumes[i].medium;
+    optical_depth += (vec(m.sigma_s) + vec(m.sigma_a)) * (volume_mean_density(field, i, segment, jitter - 0.5, steps) * length);
+  }
+  return to_vec3(optical_depth);
 }
 
 Vec3 fog_transmittance_to_light(const Media& media, const Light& light, const Vec3& p) {

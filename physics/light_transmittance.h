@@ -6,8 +6,10 @@
 //   (infinite when the light travels level or upward) and no global fog — a directional
 //   light's E is what reaches a point through the global fog (DESIGN.md; the reference's
 //   SceneMedia::optical_depth_to_infinity, which this follows);
-// - plus the local volumes by a march of equal steps, e^(−Σ_k σt(p + (k + jitter)·Δ·ω)·Δ),
-//   Δ the march length / steps: up to the light, `max_distance` m toward a directional one.
+// - plus the local volumes, each σt × its chord on the segment to the light (`max_distance`
+//   m toward a directional one) × its mean density there (physics/media_average.h): exact
+//   for a volume without edge fade or noise, the mean of `steps` points stratified over the
+//   chord otherwise.
 #pragma once
 
 #include "graph/scene/scene.h"
@@ -29,8 +31,8 @@ Media local_volumes(const Media& media);
 // The closed-form part of τ: the global fog and the height fog from p toward `light`.
 Vec3 fog_optical_depth_to_light(const Media& media, const Light& light, const Vec3& p);
 
-// The local volumes' part of τ: a march of `steps` (≤ 0: none) through them toward `light`
-// from p; `jitter` in [0, 1): where inside each step σt is sampled.
+// The local volumes' part of τ toward `light` from p: chords and mean densities as above,
+// `steps` (≤ 0: none) stratified samples per chord, each `jitter` (in [0, 1)) into its stratum.
 Vec3 volumes_optical_depth_to_light(const Media& media, const Light& light, const Vec3& p, int steps, double max_distance,
                                     double jitter);
 

@@ -30,7 +30,7 @@ double height_fog_mean_density(const HeightFog& fog, const RaySegment& s) {
   return std::min(depth / length, std::exp(kMaxExponent<double>));  // MediaField's largest density
 }
 
-double volume_mean_density(const MediaField& field, size_t i, const RaySegment& s, double jitter) {
+double volume_mean_density(const MediaField& field, size_t i, const RaySegment& s, double jitter, int samples) {
   const std::optional<RayInterval> chord = volume_interval(field, i, s.origin, s.ray);
   if (!chord) return 0;
   const double a = std::max(s.t0, chord->enter), b = std::min(s.t1, chord->exit);
@@ -38,10 +38,10 @@ double volume_mean_density(const MediaField& field, size_t i, const RaySegment& 
   const double inside = (b - a) / (s.t1 - s.t0);
   if (uniform(field.media().volumes[i])) return inside;
   double sum = 0;
-  for (int k = 0; k < kMediaSubSamples; ++k) {
-    sum += field.volume_density(i, point_at(s, a + (b - a) * (k + 0.5 + jitter) / kMediaSubSamples));
+  for (int k = 0; k < samples; ++k) {
+    sum += field.volume_density(i, point_at(s, a + (b - a) * (k + 0.5 + jitter) / samples));
   }
-  return inside * sum / kMediaSubSamples;
+  return inside * sum / samples;
 }
 
 MediaSample average_media(const MediaField& field, const RaySegment& s, double jitter) {

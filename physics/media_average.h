@@ -36,8 +36,9 @@ std::optional<RayInterval> volume_interval(const MediaField& field, size_t i, co
 // e^kMaxExponent (the closed form overflows float past it).
 double height_fog_mean_density(const HeightFog& fog, const RaySegment& s);
 
-// The mean density of volume `i` over the segment.
-double volume_mean_density(const MediaField& field, size_t i, const RaySegment& s, double jitter);
+// The mean density of volume `i` over the segment, with `samples` stratified points inside
+// it where the volume has an edge fade or noise.
+double volume_mean_density(const MediaField& field, size_t i, const RaySegment& s, double jitter, int samples = kMediaSubSamples);
 
 // Every medium's σs, σa and emission averaged over the segment; g the σs-weighted mean.
 MediaSample average_media(const MediaField& field, const RaySegment& s, double jitter);

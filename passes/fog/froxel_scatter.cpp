@@ -3,10 +3,11 @@
 // phase function as the variant, V from the shadow map when one is wired, and T the media's
 // transmittance toward the light (volumetric self-shadowing): the global and height fog's
 // in closed form, always (shaders/include/light_transmittance.glsl), times the local
-// volumes' by either of two methods: a march of `shadow_steps` through the volumes from
-// every froxel toward every light (0, the default: none), or, for the shadow map's light
-// when an opacity_shadow_map is wired to `media_shadow`, one lookup in that map (the other
-// lights keep the march).
+// volumes' by either of two methods: from every froxel toward every light, each volume's
+// chord times its mean density over `shadow_steps` stratified samples (exact for a volume
+// without edge fade or noise; 0: none), or, for the shadow map's light when an
+// opacity_shadow_map is wired to `media_shadow`, one lookup in that map (the other lights
+// keep the chords).
 // Shaders: shaders/froxel_scatter.comp, froxel_scatter_shadowed.comp,
 // froxel_scatter_media_shadowed.comp (shaders/include/froxel_scatter_body.glsl).
 #include <cstddef>
@@ -30,9 +31,9 @@ struct FroxelScatterTable : fog::PhaseTable {
   // Parameters.
   ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
   ParamHandle<int64_t> shadow_steps = integer("shadow_steps", 8, 0, 256, "",
-      "steps of the march through the local volumes toward each light not covered by media_shadow (0: the volumes do not shadow; "
-      "skipped where the scene has no local volume; the global and height fog dim every light in closed form regardless)");
-  ParamHandle<double> shadow_distance = number("shadow_distance", 50, 0.01, 1e5, "m", "how far that march goes toward directional lights");
+      "samples of each local volume's density along its chord toward each light not covered by media_shadow (a volume without "
+      "edge fade or noise: its exact chord; 0: the volumes do not shadow; the global and height fog dim every light in closed form)");
+  ParamHandle<double> shadow_distance = number("shadow_distance", 50, 0.01, 1e5, "m", "how far toward directional lights the volumes shadow");
   ParamHandle<bool> skip_empty = flag("skip_empty", true, "froxels without scattering skip the light loop (off: to measure the saving)");
   // Slots.
   SlotHandle media_scattering = input("media_scattering", ResourceKind::texture3d, Usage::sampled, "from froxel_voxelize");

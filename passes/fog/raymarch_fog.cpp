@@ -8,7 +8,8 @@
 // light through the phase function — the variant, the same five as froxel_scatter's, codes
 // from shaders/include/phase_codes.h —, the shadow map's visibility when one is wired, and
 // volumetric shadows: the global and height fog toward each light in closed form, always,
-// and the local volumes by a secondary march of `shadow_steps` toward it (0: none). Writes
+// and the local volumes by their chords toward it, each volume's density sampled
+// `shadow_steps` times along its chord (exact without edge fade or noise; 0: none). Writes
 // fog_apply's two images: in-scattered radiance and transmittance.
 // Shaders: shaders/raymarch_fog.comp, raymarch_fog_shadowed.comp
 // (shaders/include/raymarch_fog_body.glsl, in_scattering.glsl, light_transmittance.glsl).
@@ -42,12 +43,12 @@ struct RaymarchFogTable : fog::PhaseTable {
   ParamHandle<int64_t> steps = integer("steps", 64, 1, 4096, "", "equal steps from the camera to the surface");
   ParamHandle<int64_t> shadow_steps =
       integer("shadow_steps", 8, 0, 1024, "",
-              "steps of the march through the local volumes toward each light (0: the volumes do not shadow; skipped where the "
-              "scene has no local volume; the global and height fog dim every light in closed form regardless)");
+              "samples of each local volume's density along its chord toward each light (a volume without edge fade or noise: "
+              "its exact chord; 0: the volumes do not shadow; the global and height fog dim every light in closed form)");
   ParamHandle<double> max_distance = number("max_distance", 100, 1e-3, 1e7, "m",
                                             "view depth the march reaches where no surface is (at most the camera's far plane)");
   ParamHandle<double> shadow_distance =
-      number("shadow_distance", 50, 1e-3, 1e7, "m", "how far the march toward a directional light goes");
+      number("shadow_distance", 50, 1e-3, 1e7, "m", "how far toward a directional light the volumes shadow");
   ParamHandle<std::string> resolution =
       choice("resolution", "full", {"full", "half"}, "the outputs' size: the frame's or half of it in x and y");
   ParamHandle<bool> jitter =

@@ -5,14 +5,17 @@
 //   the height fog's to infinity (infinite when the light travels level or upward) and no
 //   global fog — its E is what reaches a point through the global fog (DESIGN.md, the CPU
 //   reference's SceneMedia::optical_depth_to_infinity);
-// - the local volumes by a march of equal steps through media_field.glsl (σt at
-//   (k + jitter)·Δ, k = 0 … steps − 1, times Δ), or not at all with 0 steps (or where an
-//   opacity shadow map, which holds the volumes alone, stands in for it): up to the light,
-//   or `max_distance` m toward a directional light.
+// - the local volumes, each σt × its chord on the segment to the light (`max_distance` m
+//   toward a directional light) × its mean density there (media_average.glsl): exact for a
+//   volume without edge fade or noise, the mean of `steps` points stratified over the chord
+//   otherwise; not at all with 0 steps (or where an opacity shadow map, which holds the
+//   volumes alone, stands in for it). optical_depth_along's march of equal steps serves
+//   the opacity shadow map.
 // CPU twin: physics/light_transmittance.h — change both.
 #ifndef VOLGRAPH_LIGHT_TRANSMITTANCE_GLSL
 #define VOLGRAPH_LIGHT_TRANSMITTANCE_GLSL
 #include "lighting.glsl"
+#include "media_average.glsl"
 #include "media_field.glsl"
 
 // How far the march toward `light` from `p` goes (m).
@@ -67,12 +70,23 @@ vec3 fog_optical_depth_to_light(Fogs fogs, Light light, vec3 p, vec3 to_light) {
   return fogs.fog_sigma_t * distance + fogs.height_sigma_t * unit_depth;
 }
 
-// The local volumes' part of τ: a march of `steps` (0: none) through them toward `light`
-// from p; `jitter` in [0, 1): where inside each step σt is sampled.
-vec3 volumes_optical_depth_to_light(MediaField field, Light light, vec3 p, vec3 to_light, int steps, float max_distance,
+// The local volumes' part of τ toward `light` from p: per volume, σt times the length of
+// its chord on the segment to the light (`max_distance` m toward a directional one) times
+// its mean density there (media_average.glsl) — exact for a volume without edge fade or
+// noise, the mean of `samples` points stratified over the chord otherwise, each `jitter`
+// (in [0, 1)) into its stratum; samples 0: none.
+vec3 volumes_optical_depth_to_light(MediaField field, Light light, vec3 p, vec3 to_light, int samples, float max_distance,
                                     float jitter) {
-  if (steps <= 0 || field.counts.x == 0) return vec3(0.0);
-  return optical_depth_along(local_volumes(field), p, to_light, light_march_length(light, p, max_distance), steps, jitter);
+  if (samples <= 0 || field.counts.x == 0) return vec3(0.0);
+  const float len = light_march_length(light, p, max_distance);
+  if (len <= 0.0) return vec3(0.0);
+  vec3 optical_depth = vec3(0.0);
+  for (int i = 0; i < field.counts.x; ++i) {
+    const MediumVolume v = field.volumes[i];
+    const float mean = volume_mean_density_sampled(v, p, to_light, 0.0, len, jitter - 0.5, samples);
+    optical_depth += (v.medium.sigma_s_g.rgb + v.medium.sigma_a.rgb) * (mean * len);
+  }
+  return optical_depth;
 }
 
 // e^(−τ) of the closed-form part alone (what the scene pass dims surfaces by).

@@ -36,17 +36,23 @@ float height_fog_mean_density(MediaField field, vec3 origin, vec3 ray, float t0,
   return min(depth / len, exp(MAX_EXPONENT));
 }
 
-float volume_mean_density(MediumVolume v, vec3 origin, vec3 ray, float t0, float t1, float jitter) {
+// The mean density of volume v over [t0, t1], with `samples` stratified points inside it
+// where the volume has an edge fade or noise.
+float volume_mean_density_sampled(MediumVolume v, vec3 origin, vec3 ray, float t0, float t1, float jitter, int samples) {
   const vec2 chord = volume_interval(v, origin, ray);
   const float a = max(t0, chord.x), b = min(t1, chord.y);
   if (b <= a) return 0.0;
   const float inside = (b - a) / (t1 - t0);
   if (v.fade.x <= 0.0 && int(v.noise.x) == 0) return inside;
   float sum = 0.0;
-  for (int k = 0; k < MEDIA_SUB_SAMPLES; ++k) {
-    sum += volume_density(v, origin + (a + (b - a) * (float(k) + 0.5 + jitter) / float(MEDIA_SUB_SAMPLES)) * ray);
+  for (int k = 0; k < samples; ++k) {
+    sum += volume_density(v, origin + (a + (b - a) * (float(k) + 0.5 + jitter) / float(samples)) * ray);
   }
-  return inside * sum / float(MEDIA_SUB_SAMPLES);
+  return inside * sum / float(samples);
+}
+
+float volume_mean_density(MediumVolume v, vec3 origin, vec3 ray, float t0, float t1, float jitter) {
+  return volume_mean_density_sampled(v, origin, ray, t0, t1, jitter, MEDIA_SUB_SAMPLES);
 }
 
 MediaSample average_media(MediaField field, vec3 origin, vec3 ray, float t0, float t1, float jitter) {
