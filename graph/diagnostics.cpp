@@ -23,13 +23,21 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 
 }  // namespace
 
-std::string format_diagnostic(const Diagnostic& d) {
+namespace {
+
+std::string format_as(const Diagnostic& d, const char* severity) {
   std::string out = d.where.file;
   if (d.where.line > 0) out += ":" + std::to_string(d.where.line);
-  out += ": error";
+  out += std::string(": ") + severity;
   if (!d.where.pointer.empty()) out += " at " + d.where.pointer;
   return out + ": " + d.message;
 }
+
+}  // namespace
+
+std::string format_diagnostic(const Diagnostic& d) { return format_as(d, "error"); }
+
+std::string format_warning(const Diagnostic& d) { return format_as(d, "warning"); }
 
 ConfigError::ConfigError(std::vector<Diagnostic> diagnostics) : diagnostics_(std::move(diagnostics)) {
   for (const Diagnostic& d : diagnostics_) {
@@ -39,6 +47,8 @@ ConfigError::ConfigError(std::vector<Diagnostic> diagnostics) : diagnostics_(std
 }
 
 void Diagnostics::error(Where where, std::string message) { list_.push_back({std::move(where), std::move(message)}); }
+
+void Diagnostics::warning(Where where, std::string message) { warnings_.push_back({std::move(where), std::move(message)}); }
 
 void Diagnostics::throw_if_any() const {
   if (!list_.empty()) throw ConfigError(list_);

@@ -19,7 +19,10 @@ struct Diagnostic {
   std::string message;
 };
 
+// "file:line: error at /pointer: message".
 std::string format_diagnostic(const Diagnostic& d);
+// The same with "warning" for what is accepted but not done as asked.
+std::string format_warning(const Diagnostic& d);
 
 // Thrown when input is invalid; carries every diagnostic found before giving up.
 class ConfigError : public std::exception {
@@ -33,15 +36,19 @@ class ConfigError : public std::exception {
   std::string text_;
 };
 
-// Collects diagnostics while loading; throws them together at a checkpoint.
+// Collects diagnostics while loading; throws the errors together at a checkpoint and
+// keeps the warnings (input accepted, but not drawn as it asks) for the caller to show.
 class Diagnostics {
  public:
   void error(Where where, std::string message);
+  void warning(Where where, std::string message);
   bool empty() const { return list_.empty(); }
   void throw_if_any() const;
+  const std::vector<Diagnostic>& warnings() const { return warnings_; }
 
  private:
   std::vector<Diagnostic> list_;
+  std::vector<Diagnostic> warnings_;
 };
 
 // " (did you mean \"x\"?)" when a candidate is close to `word`, else "".

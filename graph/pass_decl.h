@@ -78,6 +78,7 @@ struct ParamProblem {
   std::string param;
   std::string message;
   std::optional<Where> where = std::nullopt;  // set when the problem is elsewhere in the config (a scene object)
+  bool warning = false;                       // accepted, but not drawn as the config asks (shown, not refused)
 };
 
 struct PassDecl;

@@ -49,11 +49,13 @@ std::vector<ParamProblem> check_models(const PassDecl&, const Scene& scene, cons
     if (o.shape != Shape::gltf) {
       ++draws;
     } else {
+      Where where = o.where;
+      where.pointer += "/file";
       try {
-        draws += plumbing::load_gltf(o.file).primitives.size();
+        const plumbing::GltfModel model = plumbing::load_gltf(o.file);
+        draws += model.primitives.size();
+        for (const std::string& ignored : model.ignored) problems.push_back({"", o.file + ": " + ignored, where, true});
       } catch (const std::exception& e) {
-        Where where = o.where;
-        where.pointer += "/file";
         problems.push_back({"", o.file + ": " + e.what(), where});
       }
     }

@@ -332,6 +332,7 @@ LoadedConfig load(const Args& args, const PassRegistry& registry) {
   Overrides at_own_size = args.overrides;
   at_own_size.size.reset();
   LoadedConfig loaded = load_config(args.config, registry, at_own_size);
+  for (const Diagnostic& w : loaded.warnings) std::cerr << format_warning(w) << "\n";
   if (args.overrides.size) {
     loaded.config.output_size = *args.overrides.size;
     resize(loaded.graph, *args.overrides.size);

@@ -71,6 +71,7 @@ struct LoadedConfig {
   Config config;
   Graph graph;
   std::vector<std::vector<ParamValue>> params;  // per graph pass
+  std::vector<Diagnostic> warnings;             // what loads but is not drawn as asked (format_warning)
 };
 
 // Reads, checks and wires a config. Throws ConfigError with every diagnostic found.

@@ -494,14 +494,16 @@ class Wiring {
     const PassNode& node = config_.passes[p];
     for (const ParamProblem& problem : decl.check_scene(decl, config_.scene, params_[p])) {
       if (problem.where) {
-        diags_.error(*problem.where, problem.message);
+        if (problem.warning) diags_.warning(*problem.where, problem.message);
+        else diags_.error(*problem.where, problem.message);
         continue;
       }
       Where where = node.where;
       for (const ParamSetting& s : node.params) {
         if (s.name == problem.param) where = s.where;
       }
-      diags_.error(where, "pass \"" + node.name + "\": " + problem.message);
+      if (problem.warning) diags_.warning(where, "pass \"" + node.name + "\": " + problem.message);
+      else diags_.error(where, "pass \"" + node.name + "\": " + problem.message);
     }
   }
 
@@ -664,6 +666,7 @@ class Wiring {
   LoadedConfig build(const std::vector<uint32_t>& order) {
     LoadedConfig out;
     out.config = config_;
+    out.warnings = diags_.warnings();
     GraphBuilder b(config_.output_size, config_.scene.features());
     for (uint32_t p = 0; p < config_.passes.size(); ++p) add_pass(b, p, 0);
     steps_.assign(config_.passes.size(), {});

@@ -413,5 +413,26 @@ TEST(MissingFile, ConfigThatDoesNotExist) {
   }
 }
 
+// A glTF model loads with what it uses and volgraph does not draw reported as a warning at
+// the object's file (format_warning), not refused: the glass vase's transmission is drawn opaque.
+TEST_F(Loader, AModelsIgnoredFeaturesAreWarningsAtItsFile) {
+  const std::string text = R"({ "output": { "size": [16, 16] },
+    "scene": { "camera": { "position": [0, 0.3, 1], "target": [0, 0.1, 0] },
+      "objects": [ { "shape": "gltf", "file": ")" + std::string(VOLGRAPH_SOURCE_DIR) + R"(/../shared/assets/gltf/GlassVaseFlowers/GlassVaseFlowers.glb" } ],
+      "lights": [ { "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1] } ] },
+    "graph": { "passes": [ { "name": "lit", "type": "scene" },
+      { "name": "out", "type": "composite", "inputs": { "color": "lit.color" } } ], "outputs": ["out.output"] } })";
+  const LoadedConfig loaded = load(text);
+  ASSERT_FALSE(loaded.warnings.empty());
+  bool transmission = false;
+  for (const Diagnostic& w : loaded.warnings) {
+    EXPECT_EQ(w.where.pointer, "/scene/objects/0/file") << format_warning(w);
+    transmission |= w.message.find("KHR_materials_transmission (ignored: drawn opaque)") != std::string::npos;
+    EXPECT_NE(format_warning(w).find(": warning at /scene/objects/0/file: "), std::string::npos) << format_warning(w);
+  }
+  EXPECT_TRUE(transmission);
+  EXPECT_TRUE(load(replace(text, "GlassVaseFlowers/GlassVaseFlowers.glb", "Suzanne/Suzanne.gltf")).warnings.empty());
+}
+
 }  // namespace
 }  // namespace volgraph
