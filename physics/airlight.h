@@ -44,6 +44,21 @@ template <typename Real>
 constexpr std::array<Real, 4> kGaussLegendre8Weights = {Real(0.3626837833783620), Real(0.3137066458778873),
                                                         Real(0.2223810344533745), Real(0.1012285362903763)};
 
+// ∫ f(w) dw over [w0, w1] by `panels` equal panels of 8 Gauss–Legendre nodes each.
+template <typename Real, typename Integrand>
+Real gauss_legendre_panels(Real w0, Real w1, int panels, const Integrand& f) {
+  const Real panel = (w1 - w0) / Real(panels);
+  Real sum = 0;
+  for (int k = 0; k < panels; ++k) {
+    const Real centre = w0 + (Real(k) + Real(0.5)) * panel;
+    for (size_t n = 0; n < 8; ++n) {
+      const Real x = (n < 4 ? -1 : 1) * kGaussLegendre8Nodes<Real>[n % 4];
+      sum += kGaussLegendre8Weights<Real>[n % 4] * f(centre + Real(0.5) * panel * x);
+    }
+  }
+  return sum * Real(0.5) * panel;
+}
+
 // Where a light stands relative to a ray (unit direction): its projection t_c along the
 // ray and its distance h from the ray's line, clamped to kAirlightMinDistance.
 template <typename Real>
@@ -107,20 +122,12 @@ Real airlight(const AirlightGeometry<Real>& geometry, Real length, Real sigma_t,
   const Real h = geometry.h, t_c = geometry.t_c;
   const Real end = std::min(length, airlight_negligible_beyond(geometry, sigma_t));
   const Real w0 = airlight_asinh(-t_c / h), w1 = airlight_asinh((end - t_c) / h);
-  const Real panel = (w1 - w0) / Real(kAirlightPanels);
-  Real sum = 0;
-  for (int k = 0; k < kAirlightPanels; ++k) {
-    const Real centre = w0 + (Real(k) + Real(0.5)) * panel;
-    for (size_t n = 0; n < 8; ++n) {
-      const Real x = (n < 4 ? -1 : 1) * kGaussLegendre8Nodes<Real>[n % 4];
-      const Real w = centre + Real(0.5) * panel * x;
-      const Real along = h * std::sinh(w), distance = h * std::cosh(w);
-      const Real t = std::max(t_c + along, Real(0));
-      const Real attenuation = std::exp(-std::min(sigma_t * (t + distance), Real(80)));
-      sum += kGaussLegendre8Weights<Real>[n % 4] * phase_hg(g, -along / distance) * attenuation / distance;
-    }
-  }
-  return sum * Real(0.5) * panel;
+  return gauss_legendre_panels(w0, w1, kAirlightPanels, [&](Real w) {
+    const Real along = h * std::sinh(w), distance = h * std::cosh(w);
+    const Real t = std::max(t_c + along, Real(0));
+    const Real attenuation = std::exp(-std::min(sigma_t * (t + distance), Real(80)));
+    return phase_hg(g, -along / distance) * attenuation / distance;
+  });
 }
 
 }  // namespace volgraph::physics

@@ -99,23 +99,14 @@ Real point_scattering_piece(const RayLight<Real>& light, const AirlightGeometry<
                             Real sigma_t, Real g, int panels) {
   const Real h = geometry.h, t_c = geometry.t_c;
   const Real w0 = airlight_asinh((a - t_c) / h), w1 = airlight_asinh((b - t_c) / h);
-  const Real panel = (w1 - w0) / Real(panels);
-  Real sum = 0;
-  for (int k = 0; k < panels; ++k) {
-    const Real centre = w0 + (Real(k) + Real(0.5)) * panel;
-    for (size_t n = 0; n < 8; ++n) {
-      const Real x = (n < 4 ? -1 : 1) * kGaussLegendre8Nodes<Real>[n % 4];
-      const Real w = centre + Real(0.5) * panel * x;
-      const Real along = h * std::sinh(w), distance = h * std::cosh(w);
-      const Real s = std::max(t_c + along, Real(0));
-      std::array<Real, 3> travel{};
-      for (size_t i = 0; i < 3; ++i) travel[i] = (along * direction[i] - perpendicular[i]) / distance;
-      const Real attenuation = std::exp(-std::min(sigma_t * (s + distance), Real(80)));
-      sum += kGaussLegendre8Weights<Real>[n % 4] * phase_hg(g, -along / distance) * spot_cone(light, travel) * attenuation /
-             distance;
-    }
-  }
-  return sum * Real(0.5) * panel;
+  return gauss_legendre_panels(w0, w1, panels, [&](Real w) {
+    const Real along = h * std::sinh(w), distance = h * std::cosh(w);
+    const Real s = std::max(t_c + along, Real(0));
+    std::array<Real, 3> travel{};
+    for (size_t i = 0; i < 3; ++i) travel[i] = (along * direction[i] - perpendicular[i]) / distance;
+    const Real attenuation = std::exp(-std::min(sigma_t * (s + distance), Real(80)));
+    return phase_hg(g, -along / distance) * spot_cone(light, travel) * attenuation / distance;
+  });
 }
 
 // I above for a point or spot light: the ray cut where it crosses the cones (and where the

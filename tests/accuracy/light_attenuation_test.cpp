@@ -29,19 +29,23 @@ namespace {
 
 const std::string kTestConfigs = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/";
 
-// Scenes (the "scene" and "output" members of a config). The camera's far plane is the
-// froxel grid's far end in froxel_fog.json (40 m): the reference integrates to it.
-const char* const kLampsInFog = R"(
-  "output": { "size": [96, 64] },
-  "scene": {
-    "camera": { "position": [0, 1.5, 0], "target": [0, 1.6, -1], "fov_y_deg": 60, "near": 0.1, "far": 40 },
-    "background": { "radiance": [0, 0, 0] },
-    "lights": [
+// The lamps (a spot and a point light 5–7 m away) and the homogeneous fog (σt 0.15 /m)
+// of the two lamp scenes.
+const char* const kLampsAndFog = R"("lights": [
       { "name": "spot", "type": "spot", "position": [-2, 4, -7], "direction": [0.3, -1, 0.1], "intensity": [40, 36, 30],
         "inner_cone_deg": 20, "outer_cone_deg": 35, "cast_shadows": false },
       { "name": "lamp", "type": "point", "position": [1.5, 1.8, -5], "intensity": [15, 14, 12], "cast_shadows": false }
     ],
-    "media": { "fog": { "sigma_s": [0.12, 0.12, 0.12], "sigma_a": [0.03, 0.03, 0.03], "g": 0.3 } }
+    "media": { "fog": { "sigma_s": [0.12, 0.12, 0.12], "sigma_a": [0.03, 0.03, 0.03], "g": 0.3 } })";
+
+// Scenes (the "scene" and "output" members of a config). The camera's far plane is the
+// froxel grid's far end in froxel_fog.json (40 m): the reference integrates to it.
+const std::string kLampsInFog = R"(
+  "output": { "size": [96, 64] },
+  "scene": {
+    "camera": { "position": [0, 1.5, 0], "target": [0, 1.6, -1], "fov_y_deg": 60, "near": 0.1, "far": 40 },
+    "background": { "radiance": [0, 0, 0] },
+    )" + std::string(kLampsAndFog) + R"(
   })";
 
 const char* const kSunInHeightFog = R"(
@@ -56,7 +60,7 @@ const char* const kSunInHeightFog = R"(
   })";
 
 // The lamps' scene inside a room: a floor (y = 0) and a back wall (z = −10), grey.
-const char* const kLampsInARoom = R"(
+const std::string kLampsInARoom = R"(
   "output": { "size": [96, 64] },
   "scene": {
     "camera": { "position": [0, 1.5, 0], "target": [0, 1.2, -1], "fov_y_deg": 60, "near": 0.1, "far": 40 },
@@ -67,15 +71,11 @@ const char* const kLampsInARoom = R"(
       { "name": "wall", "shape": "plane", "size": [20, 1, 10], "material": "grey",
         "transform": { "translate": [0, 5, -10], "rotate_deg": [90, 0, 0] } }
     ],
-    "lights": [
-      { "name": "spot", "type": "spot", "position": [-2, 4, -7], "direction": [0.3, -1, 0.1], "intensity": [40, 36, 30],
-        "inner_cone_deg": 20, "outer_cone_deg": 35, "cast_shadows": false },
-      { "name": "lamp", "type": "point", "position": [1.5, 1.8, -5], "intensity": [15, 14, 12], "cast_shadows": false }
-    ],
-    "media": { "fog": { "sigma_s": [0.12, 0.12, 0.12], "sigma_a": [0.03, 0.03, 0.03], "g": 0.3 } }
+    )" + std::string(kLampsAndFog) + R"(
   })";
 
-// raymarch_fog at every default of its pass (shadow_steps 0, 64 jittered steps, full
+// raymarch_fog at every default of its pass (shadow_steps 8, which no local volume here
+// makes run, 64 jittered steps, full
 // resolution), applied to the scene's colour.
 const char* const kRaymarchAtDefaults = R"(
   "graph": { "passes": [
@@ -120,7 +120,7 @@ const DefaultTechnique kTechniques[] = {
      "closed form with the sun dimmed by the fog above each point (measured 0.04 %); fp16"},
 };
 
-std::string config_text(const char* scene, const DefaultTechnique& t) {
+std::string config_text(const std::string& scene, const DefaultTechnique& t) {
   if (t.include.empty()) return std::string("{") + scene + "," + t.graph + "}";
   return R"({ "include": ["../graphs/)" + t.include + R"("],)" + scene + "}";
 }
@@ -135,11 +135,11 @@ class LightAttenuation : public ::testing::Test {
     const std::vector<std::string> messages = gpu_->finish();
     EXPECT_TRUE(messages.empty()) << "vulkan validation:\n" << joined_messages(messages);
   }
-  LoadedConfig load(const char* scene, const DefaultTechnique& t) {
+  LoadedConfig load(const std::string& scene, const DefaultTechnique& t) {
     return accuracy::load_linear_text(kTestConfigs + "light_attenuation.json", config_text(scene, t), registry_);
   }
   // Each applicable technique on `scene` within its bound over the fog-only pixels.
-  void expect_every_technique_within_bound(const char* scene, const char* scene_name, double DefaultTechnique::*bound) {
+  void expect_every_technique_within_bound(const std::string& scene, const char* scene_name, double DefaultTechnique::*bound) {
     const LoadedConfig first = load(scene, kTechniques[0]);
     const Extent size = first.config.output_size;
     const reference::ReferenceImage ref = accuracy::render_reference(first);
