@@ -33,6 +33,8 @@ options (plan, validate, render):
   --size WxH                   frame size (overrides output.size)
   --set PASS.PARAM=VALUE       set a pass parameter (VALUE in JSON: 2, 0.5, true, [1,2,3], word)
   --variant PASS=VARIANT       swap a pass's variant
+  --graph FILE                 the graph of FILE (e.g. configs/graphs/raymarch_fog.json) in place of
+                               the config's: another technique on the same scene
   --no-cull                    keep every pass (debug)
   --no-alias                   give every transient resource its own memory (debug)
   --serialize                  a full barrier between every two passes (debug)
@@ -139,12 +141,20 @@ std::string backend_value(const std::string& text) {
 
 }  // namespace
 
+// An option that names one file: given twice, which one was meant is unclear.
+void once(std::string& kept, const std::string& flag_name, const std::string& value) {
+  if (!kept.empty()) throw UsageError(flag_name + " given twice (\"" + kept + "\" and \"" + value + "\"); expected one file");
+  if (value.empty()) throw UsageError(flag_name + " expects a file name, got an empty one");
+  kept = value;
+}
+
 void config_argument(CLI::App& app, Args& args) { app.add_option("config", args.config); }
 
 void graph_options(CLI::App& app, Args& args) {
   value_option(app, "--size", [&](const std::string& v) { args.overrides.size = size_value(v); });
   value_option(app, "--set", [&](const std::string& v) { args.overrides.sets.push_back(v); });
   value_option(app, "--variant", [&](const std::string& v) { args.overrides.variants.push_back(v); });
+  value_option(app, "--graph", [&](const std::string& v) { once(args.overrides.graph, "--graph", v); });
   flag(app, "--no-cull", [&] { args.compile.cull = false; });
   flag(app, "--no-alias", [&] { args.compile.alias = false; });
   flag(app, "--serialize", [&] { args.compile.serialize = true; });
@@ -153,13 +163,6 @@ void graph_options(CLI::App& app, Args& args) {
 void plan_options(CLI::App& app, Args& args) {
   flag(app, "--json", [&] { args.json = true; });
   flag(app, "--dot", [&] { args.dot = true; });
-}
-
-// An option that names one file: given twice, which one was meant is unclear.
-void once(std::string& kept, const std::string& flag_name, const std::string& value) {
-  if (!kept.empty()) throw UsageError(flag_name + " given twice (\"" + kept + "\" and \"" + value + "\"); expected one file");
-  if (value.empty()) throw UsageError(flag_name + " expects a file name, got an empty one");
-  kept = value;
 }
 
 void output_option(CLI::App& app, Args& args) {

@@ -63,6 +63,7 @@ struct Overrides {
   std::optional<Extent> size;
   std::vector<std::string> sets;      // "PASS.PARAM=VALUE", VALUE in JSON syntax
   std::vector<std::string> variants;  // "PASS=VARIANT"
+  std::string graph;                  // --graph FILE: FILE's graph in place of the config's ("" keeps it)
 };
 
 // A config and the graph it wires, with each pass's parameter values resolved

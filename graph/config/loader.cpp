@@ -334,6 +334,17 @@ class Loader {
  public:
   const SizeNodes& sizes() const { return sizes_; }
 
+  // --graph FILE: the passes and outputs read so far dropped, FILE's read in their
+  // place (the config's scene, size and description kept).
+  void replace_graph(const std::string& path, const Where& from) {
+    config_.passes.clear();
+    config_.outputs.clear();
+    sizes_.clear();
+    const std::string description = config_.description;
+    load_file(path, nullptr, 0, from);
+    config_.description = description;
+  }
+
  private:
   SizeNodes sizes_;
   Config& config_;
@@ -887,6 +898,8 @@ LoadedConfig load(const std::string& name, const std::string* text, const PassRe
   config.file = name;
   Loader loader(config);
   loader.load_file(name, text, 0, {});
+  loader.diagnostics().throw_if_any();
+  if (!o.graph.empty()) loader.replace_graph(o.graph, {kCommandLine.file, "--graph " + o.graph, 0});
   loader.diagnostics().throw_if_any();
   apply_overrides(config, o, loader.diagnostics());
   loader.diagnostics().throw_if_any();

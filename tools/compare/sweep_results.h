@@ -1,0 +1,75 @@
+// The results of a sweep, one file a point: DIR/points/<id>.json, written whole (to a
+// temporary name, then renamed) as soon as the point is done, so that Ctrl-C leaves
+// every finished point saved and a second run resumes without redoing them. The
+// aggregate files are rewritten after every point: results.json, results.csv, the
+// Pareto front (time against error, per device), report.html with the plot as SVG, and
+// pareto.png beside it.
+#pragma once
+
+#include <functional>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tools/compare/ab_report.h"
+#include "tools/compare/metrics.h"
+#include "tools/compare/sweep_spec.h"
+#include "tools/compare/timing.h"
+
+namespace volgraph::compare {
+
+struct PointResult {
+  std::string id, series, label, graph;
+  std::vector<std::pair<std::string, std::string>> settings;
+  bool ok = false;
+  std::string error;    // why the point failed (ok false)
+  std::string backend, device, driver;
+  bool device_is_cpu = false;
+  std::string command;  // a self-contained command that renders this point alone
+  TimingSummary timing;
+  MemorySummary memory;
+  ErrorMetrics metrics;  // against the reference over the spec's mask
+  std::string metric;    // the spec's metric: which figure the front is taken on
+  double seconds = 0;    // wall time to render and measure the point
+  bool pareto = false;   // on the front of its device (set by mark_pareto)
+};
+
+std::string point_result_json(const PointResult& result);
+// Throws std::runtime_error naming `file` when the text is not a point result.
+PointResult parse_point_result(const std::string& text, const std::string& file);
+
+// Marks, within each device, the points no other point of that device beats in both
+// frame time (median) and the metric; failed points are never on the front.
+void mark_pareto(std::vector<PointResult>& results);
+
+// The finished points in DIR/points (every *.json there), sorted by id.
+std::vector<PointResult> read_results(const std::string& dir);
+// Writes DIR/points/<id>.json (temporary name, then rename).
+void save_point(const std::string& dir, const PointResult& result);
+// Rewrites results.json, results.csv, report.html and pareto.png from `results`
+// (in the spec's point order where the spec is given).
+void write_aggregates(const std::string& dir, const SweepSpec& spec, std::vector<PointResult> results);
+
+// Runs every point of the spec that DIR/points does not hold yet, saving each when done
+// and the aggregates after each; a point whose runner throws is saved as failed with the
+// message and the sweep goes on. Progress on `progress`: a bar with points done, elapsed
+// and an estimate when `terminal`, else one plain line per point.
+using PointRunner = std::function<PointResult(const SweepPoint&)>;
+struct SweepSummary {
+  int ran = 0, skipped = 0, failed = 0;
+};
+SweepSummary run_sweep(const SweepSpec& spec, const std::string& dir, const PointRunner& runner, std::ostream& progress,
+                       bool terminal);
+
+// --emit-jobs: DIR/jobs.txt (one self-contained shell command a line, `command_for(point)`)
+// and DIR/manifest.json (the spec, each point's id, label and command), for GNU parallel
+// (`parallel < DIR/jobs.txt`) or a Slurm array (tools/sweep_slurm.sh).
+void write_jobs(const std::string& dir, const SweepSpec& spec, const std::function<std::string(const SweepPoint&)>& command_for);
+
+// --merge: the point results of every DIR gathered into `out` (a point done in several
+// keeps one copy per device; identical copies are one), aggregates rewritten. Merging
+// twice gives the same files.
+void merge_results(const std::vector<std::string>& dirs, const std::string& out, const SweepSpec* spec);
+
+}  // namespace volgraph::compare
