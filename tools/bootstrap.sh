@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages volgraph builds and tests with, when any is missing.
+# Installs the Debian packages volgraph builds and tests with, when any is missing:
+# chromium loads the A/B reports in the browser test, GNU parallel runs emitted sweep
+# jobs, rsvg-convert (librsvg2-bin) turns a sweep's SVG plot into its PNG.
 # Idempotent: a few dpkg queries when everything is there.
 set -euo pipefail
 
@@ -10,6 +12,7 @@ packages=(
   libvulkan-dev vulkan-validationlayers glslang-tools spirv-tools
   libstb-dev libopenexr-dev libtinygltf-dev
   libglm-dev libcli11-dev libspirv-cross-c-shared-dev
+  chromium parallel librsvg2-bin
 )
 # Dawn refuses bookworm's lavapipe (Mesa 22); Mesa 25 comes from bookworm-backports.
 backports=(mesa-vulkan-drivers)
