@@ -185,6 +185,67 @@ void reference_options(CLI::App& app, Args& args) {
   value_option(app, "--tolerance", [&](const std::string& v) { args.tolerance = tolerance_value(v); });
 }
 
+namespace {
+
+double positive_number(const std::string& flag_name, const std::string& text) {
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end || !(x >= 0 && x < 1e300)) throw UsageError(flag_name + " expects a number ≥ 0, got " + quoted(text));
+  return x;
+}
+
+}  // namespace
+
+void ab_options(CLI::App& app, Args& args) {
+  CompareArgs& c = args.compare;
+  value_option(app, "--pass", [&](const std::string& v) { once(c.pass, "--pass", v); });
+  value_option(app, "--a", [&](const std::string& v) { once(c.a, "--a", v); });
+  value_option(app, "--b", [&](const std::string& v) { once(c.b, "--b", v); });
+  value_option(app, "--a-graph", [&](const std::string& v) { once(c.a_graph, "--a-graph", v); });
+  value_option(app, "--b-graph", [&](const std::string& v) { once(c.b_graph, "--b-graph", v); });
+  value_option(app, "--reference", [&](const std::string& v) { once(c.reference, "--reference", v); });
+}
+
+void timing_options(CLI::App& app, Args& args) {
+  CompareArgs& c = args.compare;
+  value_option(app, "--runs", [&](const std::string& v) { c.runs = whole_number("--runs", v, 1); });
+  value_option(app, "--warmup", [&](const std::string& v) { c.warmup = whole_number("--warmup", v, 0); });
+}
+
+void sweep_options(CLI::App& app, Args& args) {
+  CompareArgs& c = args.compare;
+  value_option(app, "--point", [&](const std::string& v) { once(c.point, "--point", v); });
+  value_option(app, "--reference", [&](const std::string& v) { once(c.reference, "--reference", v); });
+  flag(app, "--emit-jobs", [&] { c.emit_jobs = true; });
+  app.add_option("--merge")->expected(1, -1)->each([&](const std::string& v) { c.merge.push_back(v); });
+  value_option(app, "--size", [&](const std::string& v) { args.overrides.size = size_value(v); });
+  value_option(app, "--backend", [&](const std::string& v) { c.backend = backend_value(v); });
+  value_option(app, "--device", [&](const std::string& v) { args.device = whole_number("--device", v, 0); });
+  flag(app, "--validation", [&] { args.validation = true; });
+}
+
+void tune_options(CLI::App& app, Args& args) {
+  CompareArgs& c = args.compare;
+  value_option(app, "--max-error", [&](const std::string& v) { c.max_error = positive_number("--max-error", v); });
+  value_option(app, "--metric", [&](const std::string& v) { once(c.metric, "--metric", v); });
+}
+
+std::string shell_quote(const std::string& word) {
+  const bool safe = !word.empty() && std::all_of(word.begin(), word.end(), [](unsigned char ch) {
+    return std::isalnum(ch) || std::string_view("_-./=,:@%+").find(char(ch)) != std::string_view::npos;
+  });
+  if (safe) return word;
+  std::string out = "'";
+  for (char ch : word) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return out + "'";
+}
+
+std::string shell_command(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : " ") + shell_quote(w);
+  return out;
+}
+
 void every_option(CLI::App& app, Args& args) {
   config_argument(app, args);
   graph_options(app, args);
@@ -255,6 +316,7 @@ std::optional<int> parse_command_line(int argc, char** argv, std::span<const Com
   try {
     app.parse(argc, argv);
     args.command = words[0];
+    args.command_line = shell_command({argv, argv + argc});
     take_leftovers(app.remaining(true), args);
   } catch (const CLI::ParseError& e) {
     return parse_error(e, words);

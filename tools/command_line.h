@@ -25,6 +25,21 @@ constexpr int kOk = 0, kFailure = 1, kBadInput = 2;
 // What `volgraph --help` prints.
 extern const char* const kUsage;
 
+// What ab, sweep and tune take beyond the shared options.
+struct CompareArgs {
+  std::string pass;              // ab --pass NAME: the pass --a and --b set
+  std::string a, b;              // ab --a/--b VARIANT[,param=value…]
+  std::string a_graph, b_graph;  // ab --a-graph/--b-graph FILE
+  std::string reference;         // ab/sweep --reference cpu|IMAGE.pfm ("" for ab: B against A)
+  std::optional<int> runs, warmup;  // timed rounds, untimed frames before them (ab: 5 and 1; sweep: the spec's)
+  std::string point;             // sweep --point ID: that point alone (an emitted job)
+  bool emit_jobs = false;        // sweep --emit-jobs
+  std::vector<std::string> merge;  // sweep --merge DIR…
+  std::optional<double> max_error;  // tune --max-error X
+  std::string metric;            // tune --metric NAME ("" for the spec's)
+  std::string backend;           // sweep/tune --backend ("" for the spec's)
+};
+
 struct Args {
   std::string command;
   std::string config;
@@ -41,6 +56,8 @@ struct Args {
   std::vector<std::string> dumps;
   CompileOptions compile;
   Overrides overrides;
+  CompareArgs compare;
+  std::string command_line;  // the words as given, shell-quoted (for the reports)
 };
 
 // A bad command line; a command may throw it too. Reported by bad_usage, exit 2.
@@ -59,7 +76,11 @@ void output_option(CLI::App& app, Args& args);      // -o/--output OUT
 void render_options(CLI::App& app, Args& args);     // --backend --device --frames --timings --timings-out
                                                     // --validation --dump
 void reference_options(CLI::App& app, Args& args);  // --threads --spp --tolerance
-// All of the above: what the commands older than CLI11 accept (each ignores those it
+void ab_options(CLI::App& app, Args& args);         // --pass --a --b --a-graph --b-graph --reference
+void timing_options(CLI::App& app, Args& args);     // --runs --warmup
+void sweep_options(CLI::App& app, Args& args);      // --point --reference --emit-jobs --merge --size --backend --device --validation
+void tune_options(CLI::App& app, Args& args);       // --max-error --metric
+// All of the above but the comparison groups: what the commands older than CLI11 accept (each ignores those it
 // does not use, as it always did).
 void every_option(CLI::App& app, Args& args);
 
@@ -68,6 +89,11 @@ struct Command {
   void (*declare)(CLI::App& app, Args& args);
   int (*run)(const Args& args, const PassRegistry& registry);
 };
+
+// `word` as a POSIX shell reads it back: unchanged when it is made of safe characters,
+// else in single quotes.
+std::string shell_quote(const std::string& word);
+std::string shell_command(const std::vector<std::string>& words);
 
 // Parses the command line into `args` (args.command: the command's name). Returns the
 // exit code when the process stops here: the usage printed (0; 2 for no arguments) or a

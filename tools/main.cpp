@@ -23,6 +23,7 @@
 #include "graph/execute/executor.h"
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "tools/command_line.h"
+#include "tools/compare_commands.h"
 #include "tools/image_io.h"
 #include "tools/output_files.h"
 #include "tools/webgpu_backend.h"
@@ -406,9 +407,28 @@ int run_passes(const Args&, const PassRegistry& registry) { return print_passes(
 
 int run_devices(const Args&, const PassRegistry&) { return print_devices(); }
 
-int not_implemented(const Args& args, const PassRegistry&) {
-  std::cerr << "volgraph " << args.command << ": not implemented yet (arrives with the volumetric fog issue)\n";
-  return kFailure;
+// The options of each comparison command: the shared ones and its own.
+void declare_ab(CLI::App& app, Args& args) {
+  config_argument(app, args);
+  graph_options(app, args);
+  output_option(app, args);
+  render_options(app, args);
+  reference_options(app, args);
+  timing_options(app, args);
+  ab_options(app, args);
+}
+
+void declare_sweep(CLI::App& app, Args& args) {
+  config_argument(app, args);
+  output_option(app, args);
+  reference_options(app, args);
+  timing_options(app, args);
+  sweep_options(app, args);
+}
+
+void declare_tune(CLI::App& app, Args& args) {
+  declare_sweep(app, args);
+  tune_options(app, args);
 }
 
 // Every command: its name, the options it declares (tools/command_line.h) and what runs
@@ -421,8 +441,9 @@ constexpr Command kCommands[] = {
     {"reference", every_option, run_reference},
     {"passes", every_option, run_passes},
     {"devices", every_option, run_devices},
-    {"ab", every_option, not_implemented},
-    {"sweep", every_option, not_implemented},
+    {"ab", declare_ab, run_ab},
+    {"sweep", declare_sweep, run_sweep_command},
+    {"tune", declare_tune, run_tune},
 };
 
 int run(const Args& args, const PassRegistry& registry) {

@@ -25,7 +25,9 @@
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
 #include "graph/rhi/rhi.h"
+#include "passes/linear_output.h"
 #include "reference/image_render.h"
+#include "reference/pixel_masks.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::accuracy {
@@ -37,12 +39,10 @@ struct FogComparison {
   std::string describe() const;
 };
 
-// The overrides plus, for every composite pass of the config, variant `none` and
-// exposure 0: the graph's output is then the linear radiance the reference computes.
-Overrides linear_output(const LoadedConfig& loaded, Overrides overrides);
+using volgraph::linear_output;  // passes/linear_output.h
+using volgraph::load_linear;
 
-// Loads the config at `path` (or from `text`, named `name`) with linear_output applied.
-LoadedConfig load_linear(const std::string& path, const PassRegistry& registry, const Overrides& overrides = {});
+// Loads the config from `text`, named `name`, with linear_output applied.
 LoadedConfig load_linear_text(const std::string& name, const std::string& text, const PassRegistry& registry,
                               const Overrides& overrides = {});
 
@@ -53,11 +53,8 @@ reference::ReferenceImage render_reference(const LoadedConfig& loaded, unsigned 
 // centres, no jitter), on `device`.
 Texels render_gpu(rhi::Device& device, const LoadedConfig& loaded);
 
-// Per pixel (row-major): true where the pixel and its 3×3 neighbourhood see no surface.
-std::vector<bool> fog_only_pixels(const Scene& scene, uint32_t width, uint32_t height);
-// Per pixel (row-major): true where the pixel and its 3×3 neighbourhood all see a surface
-// (where surface lighting is compared, silhouettes left out).
-std::vector<bool> surface_only_pixels(const Scene& scene, uint32_t width, uint32_t height);
+using reference::fog_only_pixels;  // reference/pixel_masks.h
+using reference::surface_only_pixels;
 
 // The GPU image against the reference over the pixels marked in `compared`.
 FogComparison compare_fog(const Texels& gpu, const reference::ReferenceImage& ref, const std::vector<bool>& compared);

@@ -1,0 +1,173 @@
+#!/usr/bin/env bash
+# The comparison commands end to end, one case per call, at tiny sizes:
+#   compare_test.sh VOLGRAPH ab_variants SOURCE_DIR     ab wronski against hillaire with the CPU reference:
+#                                                       report files, figures in report.json, the summary
+#   compare_test.sh VOLGRAPH ab_graphs SOURCE_DIR       ab of whole techniques (--a-graph/--b-graph): the froxel
+#                                                       chain, raymarch_fog and light_volume on one scene
+#   compare_test.sh VOLGRAPH ab_bad SOURCE_DIR          bad ab command lines: exit 2, one message, no report
+#   compare_test.sh VOLGRAPH sweep_resume SOURCE_DIR    a sweep interrupted by SIGINT keeps its finished points
+#                                                       and a second run does only the rest
+#   compare_test.sh VOLGRAPH sweep_jobs SOURCE_DIR      --emit-jobs run by GNU parallel (3 workers), --merge
+#                                                       twice gives the same files, the same points as a serial run
+#   compare_test.sh VOLGRAPH sweep_failures SOURCE_DIR  every point failing (a simulated device loss) is saved
+#                                                       with its error, the sweep goes on, exit 1
+#   compare_test.sh VOLGRAPH sweep_bad SOURCE_DIR       a broken spec: exit 2, one message naming the pointer
+#   compare_test.sh VOLGRAPH shipped SPEC               a shipped sweep spec runs at 32x18, one run
+#   compare_test.sh VOLGRAPH tune SOURCE_DIR            tune on a sweep whose answer is known (a fixture folder)
+set -uo pipefail
+volgraph=$1 mode=$2 arg=${3:-}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+# expect_exit CODE MESSAGE COMMAND…: the command exits CODE with MESSAGE on the first line of stderr.
+expect_exit() {
+  expected_code=$1 expected=$2
+  shift 2
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  code=$?
+  [ "$code" -eq "$expected_code" ] || fail "'$*' exit $code (expected $expected_code); stderr: $(head -c 2000 "$tmp/err")"
+  head -n 1 "$tmp/err" | grep -qF -- "$expected" || fail "'$*': expected '$expected', got: $(head -c 2000 "$tmp/err")"
+}
+
+# json_value FILE EXPR: a Python expression over the parsed JSON `j`, printed.
+json_value() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); print($2)" "$1"; }
+
+# A spec of two demo_fog points (fog_media.slices 8 and 16) at 32x18, one run.
+tiny_spec() {
+  cat >"$tmp/tiny.json" <<EOF
+{ "config": "$arg/configs/demo_fog.json", "size": [32, 18], "runs": 1, "warmup": 0, "reference": "cpu",
+  "metric": "rel_rmse", "mask": "fog_only",
+  "series": [ { "name": "slices", "vary": { "fog_media.slices": [${1:-8, 16}] } } ] }
+EOF
+}
+
+points_in() { ls "$1/points" 2>/dev/null | grep -c '\.json$'; }
+
+case "$mode" in
+  ab_variants)
+    "$volgraph" ab "$arg/configs/demo_fog.json" --pass fog_integral --a wronski --b hillaire,  --reference cpu \
+      --size 48x27 --runs 2 --validation -o "$tmp/ab" >"$tmp/out" 2>"$tmp/err" && fail "a trailing comma in --b was accepted"
+    "$volgraph" ab "$arg/configs/demo_fog.json" --pass fog_integral --a wronski --b hillaire --reference cpu \
+      --size 48x27 --runs 2 --validation -o "$tmp/ab" >"$tmp/out" 2>"$tmp/err" || fail "ab exit $?: $(cat "$tmp/err")"
+    for f in report.json report.html a.png a.pfm b.png b.pfm reference.png reference.pfm; do
+      [ -s "$tmp/ab/$f" ] || fail "no $f in the report folder: $(ls "$tmp/ab")"
+    done
+    ls "$tmp/ab" | grep -q '^flip_.*\.png$' || fail "no FLIP heatmap: $(ls "$tmp/ab")"
+    grep -q "lavapipe (CPU)" "$tmp/out" || fail "the summary does not say lavapipe is a CPU: $(cat "$tmp/out")"
+    # Every comparison has its figures, finite where the images are; A and B differ from the reference.
+    [ "$(json_value "$tmp/ab/report.json" "len(j['comparisons'])")" = 2 ] || fail "expected 2 comparisons in report.json"
+    python3 - "$tmp/ab/report.json" <<'PY' || fail "report.json figures"
+import json, math, sys
+j = json.load(open(sys.argv[1]))
+text = json.dumps(j)
+for key in ("rmse", "relative_rmse", "psnr_db", "ssim", "flip", "max_abs_error", "nan_values", "inf_values"):
+    assert key in text, key
+assert "wronski" in text and "hillaire" in text, "the settings are named"
+assert "volgraph ab" in text or "ab " in text, "the command line is recorded"
+PY
+    ;;
+  ab_graphs)
+    scene="$arg/configs/demo_light_volume.json"
+    for pair in "froxel_fog raymarch_fog" "raymarch_fog light_volume_fog" "froxel_fog light_volume_fog"; do
+      set -- $pair
+      "$volgraph" ab "$scene" --a-graph "$arg/configs/graphs/$1.json" --b-graph "$arg/configs/graphs/$2.json" --reference cpu \
+        --size 40x24 --runs 1 --validation -o "$tmp/$1-$2" >"$tmp/out" 2>"$tmp/err" || fail "ab $pair exit $?: $(cat "$tmp/err")"
+      grep -q "graph .*$1.json" "$tmp/$1-$2/report.json" || fail "report.json does not name A's graph $1"
+      grep -q "graph .*$2.json" "$tmp/$1-$2/report.json" || fail "report.json does not name B's graph $2"
+    done
+    ;;
+  ab_bad)
+    config="$arg/configs/demo_fog.json"
+    expect_exit 2 "--a names a variant; expected --pass NAME too" "$volgraph" ab "$config" --a wronski --b hillaire -o "$tmp/r"
+    expect_exit 2 "ab compares two settings" "$volgraph" ab "$config" -o "$tmp/r"
+    expect_exit 2 "--reference expects cpu or a .pfm image" "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire --reference x.png -o "$tmp/r"
+    expect_exit 2 "no pass named \"fog_integrl\"" "$volgraph" ab "$config" --pass fog_integrl --a wronski --b hillaire -o "$tmp/r"
+    expect_exit 2 "variant" "$volgraph" ab "$config" --pass fog_integral --a wronski --b bogus -o "$tmp/r"
+    touch "$tmp/file"
+    expect_exit 2 "exists and is not a folder" "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire -o "$tmp/file"
+    expect_exit 2 "does not exist" "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire -o "$tmp/no/such/dir"
+    [ -z "$(ls -A "$tmp/r" 2>/dev/null)" ] || fail "a refused ab left files: $(ls -A "$tmp/r")"
+    ;;
+  sweep_resume)
+    tiny_spec "8, 16, 24, 32"
+    "$volgraph" sweep "$tmp/tiny.json" -o "$tmp/s" >"$tmp/out" 2>"$tmp/err" &
+    pid=$!
+    for _ in $(seq 600); do [ "$(points_in "$tmp/s")" -ge 1 ] && break; sleep 0.1; done
+    kill -INT $pid
+    wait $pid
+    done_first=$(points_in "$tmp/s")
+    [ "$done_first" -ge 1 ] && [ "$done_first" -lt 4 ] || fail "after SIGINT: $done_first points saved (expected 1–3: interrupt too late?)"
+    ls -A "$tmp/s/points" | grep -v '\.json$' && fail "temporaries left in points/"
+    "$volgraph" sweep "$tmp/tiny.json" -o "$tmp/s" >"$tmp/out" 2>"$tmp/err" || fail "resumed sweep exit $?: $(cat "$tmp/err")"
+    grep -q "$((4 - done_first)) points run, $done_first already done" "$tmp/out" || fail "resume: $(cat "$tmp/out")"
+    [ "$(points_in "$tmp/s")" = 4 ] || fail "expected 4 points after the resume"
+    for f in results.json results.csv report.html; do [ -s "$tmp/s/$f" ] || fail "no $f"; done
+    [ "$(grep -c . "$tmp/s/results.csv")" = 5 ] || fail "results.csv: a header and 4 rows expected: $(cat "$tmp/s/results.csv")"
+    "$volgraph" sweep "$tmp/tiny.json" --size 16x9 -o "$tmp/s" >"$tmp/out" 2>"$tmp/err"
+    [ $? = 2 ] && grep -q "measured with other settings" "$tmp/err" || fail "a resume at another size was not refused: $(cat "$tmp/err")"
+    ;;
+  sweep_jobs)
+    tiny_spec "8, 12, 16"
+    command -v parallel >/dev/null || fail "GNU parallel is missing (tools/bootstrap.sh installs it)"
+    "$volgraph" sweep "$tmp/tiny.json" --emit-jobs -o "$tmp/jobs" >"$tmp/out" 2>"$tmp/err" || fail "emit-jobs exit $?: $(cat "$tmp/err")"
+    [ "$(grep -c . "$tmp/jobs/jobs.txt")" = 3 ] || fail "expected 3 jobs: $(cat "$tmp/jobs/jobs.txt")"
+    [ -s "$tmp/jobs/manifest.json" ] && [ -s "$tmp/jobs/reference.pfm" ] || fail "no manifest or kept reference"
+    parallel --will-cite -j 3 <"$tmp/jobs/jobs.txt" >"$tmp/par.out" 2>&1 || fail "a job failed: $(cat "$tmp/par.out")"
+    [ "$(points_in "$tmp/jobs")" = 3 ] || fail "the jobs saved $(points_in "$tmp/jobs") points"
+    "$volgraph" sweep "$tmp/tiny.json" --merge "$tmp/jobs" -o "$tmp/merged" >"$tmp/out" 2>"$tmp/err" || fail "merge exit $?: $(cat "$tmp/err")"
+    cp -r "$tmp/merged" "$tmp/merged_once"
+    "$volgraph" sweep "$tmp/tiny.json" --merge "$tmp/jobs" "$tmp/merged" -o "$tmp/merged" >"$tmp/out" 2>"$tmp/err" || fail "second merge: $(cat "$tmp/err")"
+    diff -r "$tmp/merged_once" "$tmp/merged" >/dev/null || fail "merging again changed the files: $(diff -r "$tmp/merged_once" "$tmp/merged" | head)"
+    "$volgraph" sweep "$tmp/tiny.json" -o "$tmp/serial" >"$tmp/out" 2>"$tmp/err" || fail "serial sweep: $(cat "$tmp/err")"
+    [ "$(ls "$tmp/serial/points")" = "$(ls "$tmp/merged/points")" ] || fail "the jobs' points differ from a serial run's"
+    ;;
+  sweep_failures)
+    tiny_spec "8, 16"
+    VOLGRAPH_SIMULATE_FAULT=device_lost "$volgraph" sweep "$tmp/tiny.json" -o "$tmp/f" >"$tmp/out" 2>"$tmp/err"
+    [ $? = 1 ] || fail "a sweep whose points all fail should exit 1: $(cat "$tmp/err")"
+    [ "$(points_in "$tmp/f")" = 2 ] || fail "both failed points should be saved"
+    grep -l '"ok": false' "$tmp"/f/points/*.json | wc -l | grep -qx 2 || fail "the points are not marked failed"
+    grep -q 'device lost' "$tmp"/f/points/*.json || fail "the error is not recorded"
+    ;;
+  sweep_bad)
+    tiny_spec
+    sed 's/"fog_media.slices"/"fog_media.slicez"/' "$tmp/tiny.json" >"$tmp/bad.json"
+    expect_exit 2 "bad.json" "$volgraph" sweep "$tmp/bad.json" -o "$tmp/b"
+    grep -q "/series/0" "$tmp/err" || fail "the message does not point at the series: $(cat "$tmp/err")"
+    [ "$(grep -c . "$tmp/err")" -le 2 ] || fail "more than one message: $(cat "$tmp/err")"
+    expect_exit 2 "sweep needs a SPEC" "$volgraph" sweep -o "$tmp/b"
+    ;;
+  shipped)
+    "$volgraph" sweep "$arg" --size 32x18 --runs 1 --warmup 0 -o "$tmp/s" >"$tmp/out" 2>"$tmp/err" || fail "exit $?: $(tail -c 3000 "$tmp/err")"
+    grep -q " 0 failed" "$tmp/out" || fail "$(cat "$tmp/out")"
+    grep -q '"pareto": true' "$tmp/s/results.json" || fail "no point on the Pareto front"
+    ;;
+  tune)
+    tiny_spec "8, 16"
+    "$volgraph" sweep "$tmp/tiny.json" -o "$tmp/t" >"$tmp/out" 2>"$tmp/err" || fail "sweep: $(cat "$tmp/err")"
+    # Make the answer known: rewrite the two points' figures (slices 8: fast, error 0.2;
+    # slices 16: slow, error 0.1), then a budget of 0.15 must choose slices 16, and 0.25 slices 8.
+    python3 - "$tmp/t/points" <<'PY' || fail "rewriting the fixture"
+import json, os, sys
+for name in os.listdir(sys.argv[1]):
+    path = os.path.join(sys.argv[1], name)
+    p = json.load(open(path))
+    fast = "=8" in p["label"]
+    p["timing"]["frame_wall_ms"]["median"] = 1.0 if fast else 2.0
+    p["metrics"]["relative_rmse"] = 0.2 if fast else 0.1
+    json.dump(p, open(path, "w"))
+PY
+    "$volgraph" tune "$tmp/tiny.json" --max-error 0.15 -o "$tmp/t" >"$tmp/out" 2>"$tmp/err" || fail "tune exit $?: $(cat "$tmp/err")"
+    grep -q -- "--set fog_media.slices=16" "$tmp/out" || fail "budget 0.15 should choose 16 slices: $(cat "$tmp/out")"
+    "$volgraph" validate "$tmp/t/tuned.json" >/dev/null || fail "tuned.json is not a valid config"
+    "$volgraph" plan "$tmp/t/tuned.json" --json | grep -q '"slices": 16' || fail "tuned.json does not set 16 slices"
+    "$volgraph" tune "$tmp/tiny.json" --max-error 0.25 -o "$tmp/t" >"$tmp/out" 2>"$tmp/err" || fail "tune exit $?: $(cat "$tmp/err")"
+    grep -q -- "--set fog_media.slices=8" "$tmp/out" || fail "budget 0.25 should choose 8 slices: $(cat "$tmp/out")"
+    "$volgraph" tune "$tmp/tiny.json" --max-error 0.05 -o "$tmp/t" >"$tmp/out" 2>"$tmp/err"
+    [ $? = 1 ] && grep -q "no point" "$tmp/err" || fail "a budget no point meets should exit 1: $(cat "$tmp/err")"
+    expect_exit 2 "--metric expects an error metric" "$volgraph" tune "$tmp/tiny.json" --max-error 0.1 --metric psnr -o "$tmp/t"
+    ;;
+  *) fail "unknown mode $mode" ;;
+esac
+echo PASS
