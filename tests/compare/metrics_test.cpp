@@ -12,6 +12,7 @@
 
 #include "tests/compare/test_images.h"
 #include "tools/compare/flip.h"
+#include "tools/compare/ssim.h"
 
 namespace volgraph::compare {
 namespace {
@@ -96,6 +97,33 @@ TEST(ErrorMetrics, SsimIsOneForItselfAndDropsWithNoise) {
   EXPECT_LT(light, 1.0);
   EXPECT_LT(heavy, light);
   EXPECT_GT(heavy, -1.0);
+}
+
+TEST(Ssim, AStepFollowsEquation13ByHand) {
+  // Grey vertical steps, constant along y: the 11x11 window reduces to its 1-D Gaussian
+  // (σ = 1.5) along x, cut at the image's edges and renormalised; then Wang et al. 2004
+  // eq. 13 with C₁ = (0.01 L)², C₂ = (0.03 L)². Tolerance 1e-10: the cancellation in σ² = E[x²] − μ².
+  const uint32_t w = 24, h = 7;
+  const double range = 0.8;
+  std::vector<double> test(size_t(w) * h), reference(size_t(w) * h);
+  for (size_t p = 0; p < test.size(); ++p) {
+    const bool right = p % w >= 10;
+    test[p] = right ? 0.6 : 0.2;
+    reference[p] = right ? 0.8 : 0.2 + 0.01 * double(p % w);
+  }
+  const std::vector<double> map = ssim_map(test, reference, w, h, range);
+  const double c1 = 0.0001 * range * range, c2 = 0.0009 * range * range;
+  for (int x = 0; x < int(w); ++x) {
+    double weight = 0, mx = 0, my = 0, xx = 0, yy = 0, xy = 0;
+    for (int j = std::max(0, x - 5); j <= std::min(int(w) - 1, x + 5); ++j) {
+      const double g = std::exp(-double((j - x) * (j - x)) / (2 * 1.5 * 1.5)), a = test[j], b = reference[j];
+      weight += g, mx += g * a, my += g * b, xx += g * a * a, yy += g * b * b, xy += g * a * b;
+    }
+    mx /= weight, my /= weight, xx /= weight, yy /= weight, xy /= weight;
+    const double expected = (2 * mx * my + c1) * (2 * (xy - mx * my) + c2) /
+                            ((mx * mx + my * my + c1) * (xx - mx * mx + yy - my * my + c2));
+    for (uint32_t y = 0; y < h; ++y) ASSERT_NEAR(map[y * w + x], expected, 1e-10) << "x " << x << ", y " << y;
+  }
 }
 
 TEST(ErrorMetrics, AMaskRestrictsEveryFigure) {
