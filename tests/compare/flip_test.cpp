@@ -336,6 +336,14 @@ TEST(FlipHdr, ExposuresBringTheMaximumAndTheMedianTo085) {
   EXPECT_FALSE(flip_hdr_exposures(grey_row({0, 0, 0})).found);
 }
 
+TEST(FlipHdr, ABlackReferenceTakesItsExposuresFromTheTest) {
+  // The reference has no luminance to place the exposures; the test's (constant 0.01)
+  // puts it at 0.85 after the tone mapper, against black: ΔE_c of linear 0.85 grey and black.
+  const std::vector<float> map = flip_hdr_map(constant(16, 12, {0.01f, 0.01f, 0.01f}), constant(16, 12, {0, 0, 0}));
+  const double expected = colour_error(lab_of_linear({0.85, 0.85, 0.85}), lab_of_linear({0, 0, 0}));
+  for (float e : map) ASSERT_NEAR(e, expected, 1e-4);
+}
+
 TEST(FlipHdr, InvariantToScalingBothImagesByOneFactor) {
   // The exposures follow the reference's luminance, so scaling both images by k shifts
   // them by −log2 k and every tone-mapped image stays the same. Tolerance 1e-4 a pixel:
