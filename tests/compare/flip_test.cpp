@@ -190,7 +190,7 @@ Rgb rgb_of_xyz(Rgb v) {
 }
 const Rgb kWhiteXyz = xyz_of({1, 1, 1});
 
-// YCxCz (Zhang and Wandell): Y = 116 Y/Yn − 16, Cx = 500 (X/Xn − Y/Yn), Cz = 200 (Y/Yn − Z/Zn).
+// YCxCz: Y = 116 Y/Yn − 16, Cx = 500 (X/Xn − Y/Yn), Cz = 200 (Y/Yn − Z/Zn).
 Rgb ycxcz_of_linear(Rgb c) {
   const Rgb v = xyz_of(c);
   const double x = v[0] / kWhiteXyz[0], y = v[1] / kWhiteXyz[1], z = v[2] / kWhiteXyz[2];

@@ -46,7 +46,7 @@ constexpr double kExposureTarget = 0.85;
 
 using Mat3 = std::array<std::array<double, 3>, 3>;
 
-// Linear sRGB (D65) to CIE XYZ (IEC 61966-2-1), in its exact rational form.
+// Linear sRGB to CIE XYZ: the BT.709 primaries with the D65 white, in rational form.
 constexpr Mat3 kRgbToXyz{{{10135552.0 / 24577794.0, 8788810.0 / 24577794.0, 4435075.0 / 24577794.0},
                           {2613072.0 / 12288897.0, 8788810.0 / 12288897.0, 887015.0 / 12288897.0},
                           {1425312.0 / 73733382.0, 8788810.0 / 73733382.0, 70074185.0 / 73733382.0}}};
@@ -71,20 +71,25 @@ struct Colour {
   float x, y, z;
 };
 
+// XYZ relative to the white, X/Xn, Y/Yn, Z/Zn.
+Colour relative_to_white(Colour xyz) {
+  return {xyz.x * float(1.0 / kWhite[0]), xyz.y * float(1.0 / kWhite[1]), xyz.z * float(1.0 / kWhite[2])};
+}
+
 Colour multiply(const Mat3& m, Colour c) {
   auto row = [&](size_t i) { return float(m[i][0]) * c.x + float(m[i][1]) * c.y + float(m[i][2]) * c.z; };
   return {row(0), row(1), row(2)};
 }
 
-// XYZ to the opponent space YCxCz (Zhang and Wandell 1997, as FLIP uses it).
+// XYZ to the linearised opponent space YCxCz that FLIP filters in (Andersson et al. 2020).
 Colour ycxcz_from_xyz(Colour xyz) {
-  const float xr = float(xyz.x / kWhite[0]), yr = float(xyz.y / kWhite[1]), zr = float(xyz.z / kWhite[2]);
-  return {116.0f * yr - 16.0f, 500.0f * (xr - yr), 200.0f * (yr - zr)};
+  const Colour r = relative_to_white(xyz);
+  return {116.0f * r.y - 16.0f, 500.0f * (r.x - r.y), 200.0f * (r.y - r.z)};
 }
 
 Colour xyz_from_ycxcz(Colour ycxcz) {
   const float yr = (ycxcz.x + 16.0f) / 116.0f;
-  return {float((yr + ycxcz.y / 500.0f) * kWhite[0]), float(yr * kWhite[1]), float((yr - ycxcz.z / 200.0f) * kWhite[2])};
+  return {(yr + ycxcz.y / 500.0f) * float(kWhite[0]), yr * float(kWhite[1]), (yr - ycxcz.z / 200.0f) * float(kWhite[2])};
 }
 
 // CIE 1976 L*a*b*'s f(t).
@@ -95,7 +100,8 @@ float lab_f(float t) {
 }
 
 Colour lab_from_xyz(Colour xyz) {
-  const float fx = lab_f(float(xyz.x / kWhite[0])), fy = lab_f(float(xyz.y / kWhite[1])), fz = lab_f(float(xyz.z / kWhite[2]));
+  const Colour r = relative_to_white(xyz);
+  const float fx = lab_f(r.x), fy = lab_f(r.y), fz = lab_f(r.z);
   return {116.0f * fy - 16.0f, 500.0f * (fx - fy), 200.0f * (fy - fz)};
 }
 
