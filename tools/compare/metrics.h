@@ -1,6 +1,6 @@
 // How far a test image is from a reference image, in the figures `volgraph ab` and
 // `volgraph sweep` report: RMSE, relative RMSE, PSNR, SSIM (Wang et al. 2004), HDR-FLIP
-// (Andersson et al. 2020; flip.h), the largest absolute error and the non-finite
+// (Andersson et al. 2021; flip.h), the largest absolute error and the non-finite
 // values, over every pixel or over a mask. Both images are linear RGB (radiance).
 #pragma once
 
@@ -18,7 +18,7 @@ struct ErrorMetrics {
   size_t inf_values = 0;       // ±Inf channel values of the test image inside the mask
   double rmse = 0;             // √(mean over channels of (test − ref)²)
   double relative_rmse = 0;    // rmse / √(mean over channels of ref²); 0 when both are 0
-  double psnr_db = 0;          // 20 log10(peak / rmse), peak the reference's largest value; +inf when rmse is 0
+  double psnr_db = 0;          // 20 log10(peak / rmse), peak the reference's largest value (1 if ≤ 0); +inf when rmse is 0
   double ssim = 1;             // mean SSIM of the Rec. 709 luminance (Wang et al. 2004), dynamic range = peak
   double flip = 0;             // mean HDR-FLIP (Andersson et al. 2021, flip.h), 0 identical … 1
   double max_abs_error = 0;    // largest |test − ref| over channels
@@ -27,7 +27,9 @@ struct ErrorMetrics {
 
 // The figures over the pixels of `mask` (every pixel when it is empty). Pixels where
 // the test image is not finite are counted (nan_values, inf_values) and left out of
-// the other figures. Throws std::invalid_argument when the sizes differ.
+// the other figures (so are pixels where the reference is not finite, uncounted).
+// Throws std::invalid_argument when the image sizes differ or the mask is neither empty
+// nor one value a pixel.
 //
 // Where a figure has no answer from its formula:
 // - peak: the reference's largest channel value over the compared pixels; when that is
