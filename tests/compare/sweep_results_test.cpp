@@ -403,5 +403,30 @@ TEST(SweepReport, OnePanelAndOneFrontPerDeviceLogAxesWhenSpanning) {
   EXPECT_EQ(svg.find("lavapipe"), std::string::npos);
 }
 
+TEST(SweepReport, PointThatFailedBeforeNamingADeviceIsListedApart) {
+  PointResult failed;
+  failed.id = "p9";
+  failed.series = "s";
+  failed.label = "fog_media.slices=4096";
+  failed.error = "fog_media: 4096 slices exceed the device's 2048";
+  std::vector<PointResult> r = {point("p1", "gpu A", 1, 0.5), failed};
+  mark_pareto(r);
+  const std::string svg = pareto_svg(spec_with({}), r);
+  EXPECT_EQ(count_of(svg, "class=\"panel\""), 1u);
+  const std::string html = sweep_report_html(spec_with({"p1", "p9"}), r, svg);
+  EXPECT_EQ(html.find("(device unknown)"), std::string::npos);
+  EXPECT_NE(html.find("<h2>Failed points</h2>"), std::string::npos);
+  EXPECT_NE(html.find("<b>s: fog_media.slices=4096</b> (<code>p9</code>): <pre>fog_media: 4096 slices exceed the device&#39;s 2048</pre>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("2 of the spec's 2 done"), std::string::npos);
+}
+
+TEST(SweepReport, NoPointYetIsAnEmptyPlot) {
+  const std::string svg = pareto_svg(spec_with({"p1"}), {});
+  EXPECT_NE(svg.find("no point rendered yet"), std::string::npos);
+  EXPECT_EQ(count_of(svg, "class=\"panel\""), 0u);
+}
+
 }  // namespace
 }  // namespace volgraph::compare

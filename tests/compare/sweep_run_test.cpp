@@ -174,6 +174,17 @@ TEST(SweepRun, PlainProgressIsOneLineAPoint) {
   EXPECT_EQ(progress.str().find('\r'), std::string::npos);
 }
 
+TEST(SweepRun, PlainProgressNamesTheSeriesWhenThereAreSeveral) {
+  TempDir dir;
+  FakeRunner fake;
+  SweepSpec spec = spec_of(2);
+  spec.points[1].series = "hillaire";
+  std::ostringstream progress;
+  run_sweep(spec, dir.path, runner_of(fake), progress, false);
+  EXPECT_EQ(lines_of(progress.str()), (std::vector<std::string>{"[1/2] s: slices=16: 12.3 ms, rel_rmse 0.0123 (4.1 s)",
+                                                                 "[2/2] hillaire: slices=32: 24.6 ms, rel_rmse 0.00615 (4.1 s)"}));
+}
+
 TEST(SweepRun, TerminalProgressRedrawsOneLineWithAnEstimate) {
   TempDir dir;
   FakeRunner fake;

@@ -68,10 +68,11 @@ bool plottable(const PointResult& p, const std::string& metric) {
   return p.ok && std::isfinite(p.timing.frame_wall_ms.median) && std::isfinite(error_of(p, metric));
 }
 
+// The devices that rendered a point (a failed point may have none: it is listed apart).
 std::vector<std::string> devices_of(const std::vector<PointResult>& results) {
   std::vector<std::string> devices;
   for (const PointResult& p : results) {
-    if (std::find(devices.begin(), devices.end(), p.device) == devices.end()) devices.push_back(p.device);
+    if (p.ok && std::find(devices.begin(), devices.end(), p.device) == devices.end()) devices.push_back(p.device);
   }
   return devices;
 }
@@ -277,12 +278,11 @@ std::string html_metric_cell(double value) { return "<td class=\"num\">" + figur
 
 std::string device_table(const SweepSpec& spec, const std::vector<PointResult>& ordered, const std::string& device) {
   std::vector<const PointResult*> rows;
-  std::vector<const PointResult*> failed;
   std::string clock;
   for (const PointResult& p : ordered) {
-    if (p.device != device) continue;
-    (p.ok ? rows : failed).push_back(&p);
-    if (p.ok && clock.empty()) clock = p.timing.clock;
+    if (p.device != device || !p.ok) continue;
+    rows.push_back(&p);
+    if (clock.empty()) clock = p.timing.clock;
   }
   std::stable_sort(rows.begin(), rows.end(), [](const PointResult* a, const PointResult* b) {
     return a->timing.frame_wall_ms.median < b->timing.frame_wall_ms.median;
@@ -305,14 +305,18 @@ std::string device_table(const SweepSpec& spec, const std::vector<PointResult>& 
          << escape_xml(p->id) << "</code></td></tr>\n";
   }
   html << "</table>\n";
-  if (!failed.empty()) {
-    html << "<h3>Failed points</h3>\n<ul class=\"failed\">\n";
-    for (const PointResult* p : failed) {
-      html << "<li><b>" << escape_xml(point_name(*p)) << "</b> (<code>" << escape_xml(p->id) << "</code>): <pre>"
-           << escape_xml(p->error) << "</pre></li>\n";
-    }
-    html << "</ul>\n";
+  return html.str();
+}
+
+std::string failed_list(const std::vector<PointResult>& ordered) {
+  std::ostringstream html;
+  for (const PointResult& p : ordered) {
+    if (p.ok) continue;
+    if (html.tellp() == 0) html << "<h2>Failed points</h2>\n<ul class=\"failed\">\n";
+    html << "<li><b>" << escape_xml(point_name(p)) << "</b> (<code>" << escape_xml(p.id) << "</code>"
+         << (p.device.empty() ? "" : ", " + escape_xml(p.device)) << "): <pre>" << escape_xml(p.error) << "</pre></li>\n";
   }
+  if (html.tellp() != 0) html << "</ul>\n";
   return html.str();
 }
 
@@ -362,7 +366,7 @@ std::string pareto_svg(const SweepSpec& spec, const std::vector<PointResult>& or
       << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n";
   svg << "<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
   if (devices.empty()) {
-    svg << "<text x=\"" << panel_width / 2 << "\" y=\"" << panel_height / 2 << "\" text-anchor=\"middle\">no point yet</text>\n";
+    svg << "<text x=\"" << panel_width / 2 << "\" y=\"" << panel_height / 2 << "\" text-anchor=\"middle\">no point rendered yet</text>\n";
   }
   for (size_t d = 0; d < devices.size(); ++d) {
     svg << Panel{spec, ordered, all_series, devices[d], double(d) * panel_height}.draw();
@@ -391,7 +395,7 @@ std::string sweep_report_html(const SweepSpec& spec, const std::vector<PointResu
        << " pixels against the " << escape_xml(spec.reference == "cpu" ? "CPU reference" : spec.reference) << "</dd>\n"
        << "<dt>points</dt><dd>" << spec_points_done(spec, ordered) << " of the spec's " << spec.points.size() << " done; "
        << ordered.size() << " result(s), " << failed << " failed</dd>\n</dl>\n";
-  if (std::any_of(devices.begin(), devices.end(), is_lavapipe)) {
+  if (std::any_of(ordered.begin(), ordered.end(), [](const PointResult& p) { return is_lavapipe(p.device); })) {
     html << "<p class=\"note\">Times on llvmpipe are lavapipe (CPU): Mesa's software Vulkan driver, so the “GPU” time is "
             "this machine's CPU time, not a GPU's.</p>\n";
   }
@@ -400,6 +404,7 @@ std::string sweep_report_html(const SweepSpec& spec, const std::vector<PointResu
        << escape_xml(spec.metric) << ". Times of different devices are not compared. Hover a point for its setting.</p>\n";
   html << svg;
   for (const std::string& device : devices) html << device_table(spec, ordered, device);
+  html << failed_list(ordered);
   html << "</body>\n</html>\n";
   return html.str();
 }

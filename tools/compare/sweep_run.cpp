@@ -31,18 +31,24 @@ std::string milliseconds_text(double ms) {
   return text;
 }
 
-std::string point_name(const SweepPoint& point) {
-  if (!point.label.empty()) return point.label;
-  return point.series.empty() ? point.id : point.series;
+// The label, after its series' name when the spec has several.
+std::string point_name(const SweepPoint& point, bool several_series) {
+  if (point.label.empty()) return point.series.empty() ? point.id : point.series;
+  return several_series && !point.series.empty() ? point.series + ": " + point.label : point.label;
+}
+
+bool has_several_series(const SweepSpec& spec) {
+  return std::any_of(spec.points.begin(), spec.points.end(),
+                     [&](const SweepPoint& p) { return p.series != spec.points.front().series; });
 }
 
 // "label: 12.3 ms, rel_rmse 0.0123 (4.1 s)" or "label: FAILED: message".
-std::string outcome_text(const SweepPoint& point, const PointResult& result, const std::string& metric) {
-  if (!result.ok) return point_name(point) + ": FAILED: " + result.error;
+std::string outcome_text(const std::string& name, const PointResult& result, const std::string& metric) {
+  if (!result.ok) return name + ": FAILED: " + result.error;
   char error[32], seconds[32];
   std::snprintf(error, sizeof error, "%.3g", metric_value(result.metrics, metric));
   std::snprintf(seconds, sizeof seconds, "%.1f", result.seconds);
-  return point_name(point) + ": " + milliseconds_text(result.timing.frame_wall_ms.median) + " ms, " + metric + " " + error +
+  return name + ": " + milliseconds_text(result.timing.frame_wall_ms.median) + " ms, " + metric + " " + error +
          " (" + seconds + " s)";
 }
 
@@ -57,18 +63,18 @@ class Progress {
     out_.flush();
   }
 
-  void finished(const SweepPoint& point, const PointResult& result, const std::string& metric, double seconds_so_far,
+  void finished(const std::string& name, const PointResult& result, const std::string& metric, double seconds_so_far,
                 int ran) {
     ++done_;
     const std::string counter = "[" + std::to_string(done_) + "/" + std::to_string(total_) + "] ";
     if (!terminal_) {
-      out_ << counter << outcome_text(point, result, metric) << "\n";
+      out_ << counter << outcome_text(name, result, metric) << "\n";
       out_.flush();
       return;
     }
-    if (!result.ok) out_ << "\r\x1b[K" << counter << outcome_text(point, result, metric) << "\n";
+    if (!result.ok) out_ << "\r\x1b[K" << counter << outcome_text(name, result, metric) << "\n";
     const double per_point = seconds_so_far / std::max(ran, 1);
-    draw(point_name(point), seconds_so_far, per_point * (total_ - done_));
+    draw(name, seconds_so_far, per_point * (total_ - done_));
     out_.flush();
   }
 
@@ -131,6 +137,7 @@ SweepSummary run_sweep(const SweepSpec& spec, const std::string& dir, const Poin
   const bool png = have_svg_converter();
   if (!png) std::cerr << "volgraph sweep: rsvg-convert (Debian librsvg2-bin) not found: pareto.png not written (pareto.svg has the plot)\n";
 
+  const bool several_series = has_several_series(spec);
   Progress shown(progress, terminal, int(spec.points.size()), summary.skipped);
   shown.start(dir);
   using Clock = std::chrono::steady_clock;
@@ -150,7 +157,7 @@ SweepSummary run_sweep(const SweepSpec& spec, const std::string& dir, const Poin
     write_aggregates(dir, spec, results, png);
     ++summary.ran;
     summary.failed += !result.ok;
-    shown.finished(*point, result, spec.metric, std::chrono::duration<double>(Clock::now() - sweep_start).count(),
+    shown.finished(point_name(*point, several_series), result, spec.metric, std::chrono::duration<double>(Clock::now() - sweep_start).count(),
                    summary.ran);
   }
   if (to_run.empty()) write_aggregates(dir, spec, results, png);  // a finished sweep's aggregates, up to date
