@@ -1,6 +1,8 @@
 // A sweep point's file (every field, non-finite figures), the points folder, the
 // Pareto front per device, and the aggregate files (results.json, results.csv, the
 // report and its plot).
+#include "tools/compare/sweep_results.h"
+
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
@@ -12,7 +14,6 @@
 #include <sstream>
 
 #include "tools/compare/sweep_report.h"
-#include "tools/compare/sweep_results.h"
 
 namespace volgraph::compare {
 namespace {
@@ -39,7 +40,8 @@ std::string read(const std::filesystem::path& path) {
   return text.str();
 }
 
-PointResult point(const std::string& id, const std::string& device, double ms, double error, const std::string& series = "s") {
+PointResult point(const std::string& id, const std::string& device, double ms, double error,
+                  const std::string& series = "s") {
   PointResult p;
   p.id = id;
   p.series = series;
@@ -261,7 +263,8 @@ TEST(SweepPareto, KnownSetPerDevice) {
 }
 
 TEST(SweepPareto, HigherIsBetterMetricTurnsTheComparison) {
-  std::vector<PointResult> r = {point("a", "A", 1, 0), point("b", "A", 2, 0), point("c", "A", 3, 0), point("d", "A", 4, 0)};
+  std::vector<PointResult> r = {point("a", "A", 1, 0), point("b", "A", 2, 0), point("c", "A", 3, 0),
+                                point("d", "A", 4, 0)};
   const double psnr[] = {30, 40, 35, inf};
   for (size_t i = 0; i < r.size(); ++i) {
     r[i].metric = "psnr";
@@ -309,11 +312,13 @@ TEST(SweepCsv, ColumnsQuotingAndSettingKeys) {
     start = end + 2;
   }
   ASSERT_EQ(lines.size(), 4u) << csv;
-  EXPECT_EQ(lines[0],
-            "id,series,label,device,ok,error,frame_ms_median,frame_ms_min,frame_ms_max,runs,rmse,rel_rmse,psnr,ssim,flip,"
-            "max_abs,rel_mean,nan,inf,pareto,fog_media.slices,fog_integral,sun_shadow.resolution");
+  EXPECT_EQ(
+      lines[0],
+      "id,series,label,device,ok,error,frame_ms_median,frame_ms_min,frame_ms_max,runs,rmse,rel_rmse,psnr,ssim,flip,"
+      "max_abs,rel_mean,nan,inf,pareto,fog_media.slices,fog_integral,sun_shadow.resolution");
   EXPECT_EQ(lines[1],
-            "aa,s,\"slices=64, \"\"hillaire\"\"\",\"llvmpipe, \"\"quoted\"\"\",true,,1.5,1.35,1.7999999999999998,5,0.0,0.25,0.0,1.0,"
+            "aa,s,\"slices=64, \"\"hillaire\"\"\",\"llvmpipe, "
+            "\"\"quoted\"\"\",true,,1.5,1.35,1.7999999999999998,5,0.0,0.25,0.0,1.0,"
             "0.0,0.0,0.0,0,0,true,64,hillaire,");
   EXPECT_EQ(lines[2], "bb,s,label bb,gpu,true,,2.0,1.8,2.4,5,0.0,0.125,0.0,1.0,0.0,0.0,0.0,0,0,true,,,2048");
   EXPECT_EQ(lines[3], "cc,s,label cc,gpu,false,\"line one\nline two\",,,,,,,,,,,,,,false,,,");
@@ -392,7 +397,8 @@ TEST(SweepReport, OnePanelAndOneFrontPerDeviceLogAxesWhenSpanning) {
   const std::string svg = pareto_svg(spec, r);
   EXPECT_EQ(count_of(svg, "class=\"panel\""), 2u);
   EXPECT_EQ(count_of(svg, "<polyline class=\"front\""), 2u);  // one a device: never joined across devices
-  EXPECT_EQ(count_of(svg, "<circle cx"), 4u + 5u);  // the points; the legends' swatches: A 2 series + front, B 1 + front
+  EXPECT_EQ(count_of(svg, "<circle cx"),
+            4u + 5u);  // the points; the legends' swatches: A 2 series + front, B 1 + front
   EXPECT_NE(svg.find("gpu A"), std::string::npos);
   EXPECT_NE(svg.find("gpu B"), std::string::npos);
   EXPECT_NE(svg.find("frame time, ms (median, log scale)"), std::string::npos);  // panel A: 1 … 100 ms
@@ -416,7 +422,8 @@ TEST(SweepReport, PointThatFailedBeforeNamingADeviceIsListedApart) {
   const std::string html = sweep_report_html(spec_with({"p1", "p9"}), r, svg);
   EXPECT_EQ(html.find("(device unknown)"), std::string::npos);
   EXPECT_NE(html.find("<h2>Failed points</h2>"), std::string::npos);
-  EXPECT_NE(html.find("<b>s: fog_media.slices=4096</b> (<code>p9</code>): <pre>fog_media: 4096 slices exceed the device&#39;s 2048</pre>"),
+  EXPECT_NE(html.find("<b>s: fog_media.slices=4096</b> (<code>p9</code>): <pre>fog_media: 4096 slices exceed the "
+                      "device&#39;s 2048</pre>"),
             std::string::npos)
       << html;
   EXPECT_NE(html.find("2 of the spec's 2 done"), std::string::npos);

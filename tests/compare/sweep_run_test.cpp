@@ -169,8 +169,8 @@ TEST(SweepRun, PlainProgressIsOneLineAPoint) {
   std::ostringstream progress;
   run_sweep(spec_of(3), dir.path, runner_of(fake), progress, false);
   EXPECT_EQ(lines_of(progress.str()), (std::vector<std::string>{"[1/3] slices=16: 12.3 ms, rel_rmse 0.0123 (4.1 s)",
-                                                                 "[2/3] slices=32: 24.6 ms, rel_rmse 0.00615 (4.1 s)",
-                                                                 "[3/3] slices=64: FAILED: boom"}));
+                                                                "[2/3] slices=32: 24.6 ms, rel_rmse 0.00615 (4.1 s)",
+                                                                "[3/3] slices=64: FAILED: boom"}));
   EXPECT_EQ(progress.str().find('\r'), std::string::npos);
 }
 
@@ -181,8 +181,9 @@ TEST(SweepRun, PlainProgressNamesTheSeriesWhenThereAreSeveral) {
   spec.points[1].series = "hillaire";
   std::ostringstream progress;
   run_sweep(spec, dir.path, runner_of(fake), progress, false);
-  EXPECT_EQ(lines_of(progress.str()), (std::vector<std::string>{"[1/2] s: slices=16: 12.3 ms, rel_rmse 0.0123 (4.1 s)",
-                                                                 "[2/2] hillaire: slices=32: 24.6 ms, rel_rmse 0.00615 (4.1 s)"}));
+  EXPECT_EQ(lines_of(progress.str()),
+            (std::vector<std::string>{"[1/2] s: slices=16: 12.3 ms, rel_rmse 0.0123 (4.1 s)",
+                                      "[2/2] hillaire: slices=32: 24.6 ms, rel_rmse 0.00615 (4.1 s)"}));
 }
 
 TEST(SweepRun, TerminalProgressRedrawsOneLineWithAnEstimate) {
@@ -193,10 +194,12 @@ TEST(SweepRun, TerminalProgressRedrawsOneLineWithAnEstimate) {
   run_sweep(spec_of(3), dir.path, runner_of(fake), progress, true);
   const std::string text = progress.str();
   EXPECT_NE(text.find("\r[--------"), std::string::npos) << text;
-  EXPECT_TRUE(std::regex_search(text, std::regex(R"(\r\[#{8}-{16}\] 1/3 points  \d+:\d\d elapsed, ~\d+:\d\d left  slices=16)")))
+  EXPECT_TRUE(
+      std::regex_search(text, std::regex(R"(\r\[#{8}-{16}\] 1/3 points  \d+:\d\d elapsed, ~\d+:\d\d left  slices=16)")))
       << text;
   EXPECT_NE(text.find("\r[########################] 3/3 points"), std::string::npos) << text;
-  EXPECT_NE(text.find("\r\x1b[K[2/3] slices=32: FAILED: boom\n"), std::string::npos) << text;  // failures stay on screen
+  EXPECT_NE(text.find("\r\x1b[K[2/3] slices=32: FAILED: boom\n"), std::string::npos)
+      << text;  // failures stay on screen
   EXPECT_EQ(text.find("[1/3] slices=16: 12.3 ms"), std::string::npos) << "no plain lines for points that worked";
   EXPECT_EQ(text.back(), '\n');
 }
@@ -219,7 +222,8 @@ TEST(SweepJobs, OneCommandALineAndAManifest) {
   EXPECT_EQ(manifest["points"][1]["label"], "slices=32");
   EXPECT_EQ(manifest["points"][1]["series"], "s");
   EXPECT_EQ(manifest["points"][1]["command"], "volgraph sweep configs/sweeps/fake.json --point p1 -o 'out dir'");
-  EXPECT_THROW(write_jobs(dir.path, spec, [](const SweepPoint&) { return std::string("a\nb"); }), std::invalid_argument);
+  EXPECT_THROW(write_jobs(dir.path, spec, [](const SweepPoint&) { return std::string("a\nb"); }),
+               std::invalid_argument);
 }
 
 PointResult done_point(const std::string& id, const std::string& device, double ms) {

@@ -18,7 +18,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::span<const std::byte> bytes_of(const std::string& text) { return std::as_bytes(std::span(text.data(), text.size())); }
+std::span<const std::byte> bytes_of(const std::string& text) {
+  return std::as_bytes(std::span(text.data(), text.size()));
+}
 
 // One point file found by the merge.
 struct Copy {
@@ -125,23 +127,21 @@ SweepSpec spec_of_results(const std::vector<PointResult>& results) {
 
 }  // namespace
 
-void write_jobs(const std::string& dir, const SweepSpec& spec, const std::function<std::string(const SweepPoint&)>& command_for) {
+void write_jobs(const std::string& dir, const SweepSpec& spec,
+                const std::function<std::string(const SweepPoint&)>& command_for) {
   std::string jobs;
   Json points = Json::array();
   for (const SweepPoint& point : spec.points) {
     const std::string command = command_for(point);
     if (command.find_first_of("\r\n") != std::string::npos) {
-      throw std::invalid_argument("point " + point.id + ": its command has a line break; jobs.txt takes one command a line");
+      throw std::invalid_argument("point " + point.id +
+                                  ": its command has a line break; jobs.txt takes one command a line");
     }
     jobs += command + "\n";
     points.push_back(Json{{"id", point.id}, {"label", point.label}, {"series", point.series}, {"command", command}});
   }
-  const Json manifest{{"spec", spec.file},
-                      {"config", spec.config},
-                      {"metric", spec.metric},
-                      {"count", spec.points.size()},
-                      {"jobs", "jobs.txt"},
-                      {"points", points}};
+  const Json manifest{{"spec", spec.file},           {"config", spec.config}, {"metric", spec.metric},
+                      {"count", spec.points.size()}, {"jobs", "jobs.txt"},    {"points", points}};
   std::filesystem::create_directories(dir);
   const std::filesystem::path folder(dir);
   OutputFiles files;

@@ -25,12 +25,23 @@ std::string escape_xml(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -171,8 +182,10 @@ struct Panel {
     int left_out = 0;
     for (const PointResult& p : ordered) {
       if (p.device != device) continue;
-      if (plottable(p, spec.metric)) points.push_back(&p);
-      else ++left_out;
+      if (plottable(p, spec.metric))
+        points.push_back(&p);
+      else
+        ++left_out;
     }
     std::ostringstream svg;
     svg << "<g class=\"panel\">\n";
@@ -225,8 +238,9 @@ struct Panel {
                                 (metric_lower_is_better(spec.metric) ? "lower" : "higher") + " is better" +
                                 (y.log ? ", log scale)" : ")");
     const double y_mid = top + plot_top + plot_height / 2;
-    svg << "<text x=\"18\" y=\"" << coordinate(y_mid) << "\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 18 "
-        << coordinate(y_mid) << ")\">" << escape_xml(y_title) << "</text>\n";
+    svg << "<text x=\"18\" y=\"" << coordinate(y_mid)
+        << "\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 18 " << coordinate(y_mid) << ")\">"
+        << escape_xml(y_title) << "</text>\n";
   }
 
   void draw_front(std::ostringstream& svg, std::vector<const PointResult*> points, const Axis& x, const Axis& y) const {
@@ -237,13 +251,14 @@ struct Panel {
     if (points.size() < 2) return;
     svg << "<polyline class=\"front\" fill=\"none\" stroke=\"#222\" stroke-width=\"1.5\" points=\"";
     for (const PointResult* p : points) {
-      svg << coordinate(x_of(x, p->timing.frame_wall_ms.median)) << "," << coordinate(y_of(y, error_of(*p, spec.metric)))
-          << " ";
+      svg << coordinate(x_of(x, p->timing.frame_wall_ms.median)) << ","
+          << coordinate(y_of(y, error_of(*p, spec.metric))) << " ";
     }
     svg << "\"/>\n";
   }
 
-  void draw_points(std::ostringstream& svg, const std::vector<const PointResult*>& points, const Axis& x, const Axis& y) const {
+  void draw_points(std::ostringstream& svg, const std::vector<const PointResult*>& points, const Axis& x,
+                   const Axis& y) const {
     for (const PointResult* p : points) {
       const size_t s = std::find(all_series.begin(), all_series.end(), p->series) - all_series.begin();
       const double t = p->timing.frame_wall_ms.median, e = error_of(*p, spec.metric);
@@ -260,17 +275,18 @@ struct Panel {
     const double left = plot_left + plot_width + 20;
     double row = top + plot_top + 8;
     for (size_t s = 0; s < all_series.size(); ++s) {
-      const bool here = std::any_of(points.begin(), points.end(), [&](const PointResult* p) { return p->series == all_series[s]; });
+      const bool here =
+          std::any_of(points.begin(), points.end(), [&](const PointResult* p) { return p->series == all_series[s]; });
       if (!here) continue;
       svg << "<circle cx=\"" << left + 6 << "\" cy=\"" << coordinate(row) << "\" r=\"5\" fill=\"" << series_colour(s)
           << "\"/><text x=\"" << left + 18 << "\" y=\"" << coordinate(row + 4) << "\" font-size=\"12\">"
           << escape_xml(all_series[s].empty() ? "(no series)" : all_series[s]) << "</text>\n";
       row += 20;
     }
-    svg << "<line x1=\"" << left << "\" x2=\"" << left + 14 << "\" y1=\"" << coordinate(row) << "\" y2=\"" << coordinate(row)
-        << "\" stroke=\"#222\" stroke-width=\"1.5\"/><circle cx=\"" << left + 7 << "\" cy=\"" << coordinate(row)
-        << "\" r=\"4\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"1.5\"/><text x=\"" << left + 18 << "\" y=\""
-        << coordinate(row + 4) << "\" font-size=\"12\">Pareto front</text>\n";
+    svg << "<line x1=\"" << left << "\" x2=\"" << left + 14 << "\" y1=\"" << coordinate(row) << "\" y2=\""
+        << coordinate(row) << "\" stroke=\"#222\" stroke-width=\"1.5\"/><circle cx=\"" << left + 7 << "\" cy=\""
+        << coordinate(row) << "\" r=\"4\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"1.5\"/><text x=\"" << left + 18
+        << "\" y=\"" << coordinate(row + 4) << "\" font-size=\"12\">Pareto front</text>\n";
   }
 };
 
@@ -290,19 +306,21 @@ std::string device_table(const SweepSpec& spec, const std::vector<PointResult>& 
   std::ostringstream html;
   html << "<h2>" << escape_xml(device_title(device)) << "</h2>\n";
   if (!clock.empty()) html << "<p class=\"clock\">Times: " << escape_xml(clock) << "</p>\n";
-  html << "<table>\n<tr><th>front</th><th>series</th><th>setting</th><th>frame ms (median)</th><th>min – max</th><th>runs</th>"
-       << "<th>error (" << escape_xml(spec.metric) << ")</th><th>rmse</th><th>rel_rmse</th><th>psnr dB</th><th>ssim</th><th>flip</th>"
+  html << "<table>\n<tr><th>front</th><th>series</th><th>setting</th><th>frame ms (median)</th><th>min – "
+          "max</th><th>runs</th>"
+       << "<th>error (" << escape_xml(spec.metric)
+       << ")</th><th>rmse</th><th>rel_rmse</th><th>psnr dB</th><th>ssim</th><th>flip</th>"
        << "<th>max_abs</th><th>NaN / Inf</th><th>id</th></tr>\n";
   for (const PointResult* p : rows) {
     const Spread& t = p->timing.frame_wall_ms;
     html << "<tr" << (p->pareto ? " class=\"front\"" : "") << "><td>" << (p->pareto ? "★" : "") << "</td><td>"
          << escape_xml(p->series) << "</td><td>" << escape_xml(p->label) << "</td>" << html_metric_cell(t.median)
-         << "<td class=\"num\">" << figure(t.min) << " – " << figure(t.max) << "</td><td class=\"num\">" << t.runs << "</td>"
-         << html_metric_cell(metric_value(p->metrics, spec.metric)) << html_metric_cell(p->metrics.rmse)
+         << "<td class=\"num\">" << figure(t.min) << " – " << figure(t.max) << "</td><td class=\"num\">" << t.runs
+         << "</td>" << html_metric_cell(metric_value(p->metrics, spec.metric)) << html_metric_cell(p->metrics.rmse)
          << html_metric_cell(p->metrics.relative_rmse) << html_metric_cell(p->metrics.psnr_db)
-         << html_metric_cell(p->metrics.ssim) << html_metric_cell(p->metrics.flip) << html_metric_cell(p->metrics.max_abs_error)
-         << "<td class=\"num\">" << p->metrics.nan_values << " / " << p->metrics.inf_values << "</td><td><code>"
-         << escape_xml(p->id) << "</code></td></tr>\n";
+         << html_metric_cell(p->metrics.ssim) << html_metric_cell(p->metrics.flip)
+         << html_metric_cell(p->metrics.max_abs_error) << "<td class=\"num\">" << p->metrics.nan_values << " / "
+         << p->metrics.inf_values << "</td><td><code>" << escape_xml(p->id) << "</code></td></tr>\n";
   }
   html << "</table>\n";
   return html.str();
@@ -314,7 +332,8 @@ std::string failed_list(const std::vector<PointResult>& ordered) {
     if (p.ok) continue;
     if (html.tellp() == 0) html << "<h2>Failed points</h2>\n<ul class=\"failed\">\n";
     html << "<li><b>" << escape_xml(point_name(p)) << "</b> (<code>" << escape_xml(p.id) << "</code>"
-         << (p.device.empty() ? "" : ", " + escape_xml(p.device)) << "): <pre>" << escape_xml(p.error) << "</pre></li>\n";
+         << (p.device.empty() ? "" : ", " + escape_xml(p.device)) << "): <pre>" << escape_xml(p.error)
+         << "</pre></li>\n";
   }
   if (html.tellp() != 0) html << "</ul>\n";
   return html.str();
@@ -326,7 +345,9 @@ size_t spec_points_done(const SweepSpec& spec, const std::vector<PointResult>& o
   }));
 }
 
-std::span<const std::byte> bytes_of(const std::string& text) { return std::as_bytes(std::span(text.data(), text.size())); }
+std::span<const std::byte> bytes_of(const std::string& text) {
+  return std::as_bytes(std::span(text.data(), text.size()));
+}
 
 // pareto.png from the SVG by rsvg-convert; empty when it fails (stderr says why).
 std::vector<std::byte> render_png(const std::string& dir, const std::string& svg) {
@@ -338,7 +359,8 @@ std::vector<std::byte> render_png(const std::string& dir, const std::string& svg
   pid_t child = 0;
   int status = 0;
   const bool spawned = posix_spawnp(&child, "rsvg-convert", nullptr, nullptr, const_cast<char**>(argv), environ) == 0;
-  const bool converted = spawned && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  const bool converted =
+      spawned && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
   if (converted) {
     std::ifstream in(png_file, std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -366,7 +388,8 @@ std::string pareto_svg(const SweepSpec& spec, const std::vector<PointResult>& or
       << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n";
   svg << "<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
   if (devices.empty()) {
-    svg << "<text x=\"" << panel_width / 2 << "\" y=\"" << panel_height / 2 << "\" text-anchor=\"middle\">no point rendered yet</text>\n";
+    svg << "<text x=\"" << panel_width / 2 << "\" y=\"" << panel_height / 2
+        << "\" text-anchor=\"middle\">no point rendered yet</text>\n";
   }
   for (size_t d = 0; d < devices.size(); ++d) {
     svg << Panel{spec, ordered, all_series, devices[d], double(d) * panel_height}.draw();
@@ -386,22 +409,27 @@ std::string sweep_report_html(const SweepSpec& spec, const std::vector<PointResu
        << "th{background:#f2f2f2}td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}\n"
        << "tr.front{background:#fff4c2;font-weight:bold}pre{display:inline;white-space:pre-wrap}\n"
        << ".note{background:#eef4ff;border-left:4px solid #4e79a7;padding:.4em .8em}dt{font-weight:bold}\n"
-       << "</style>\n</head>\n<body>\n<h1>Sweep: " << escape_xml(spec.file.empty() ? "(merged results)" : spec.file) << "</h1>\n";
+       << "</style>\n</head>\n<body>\n<h1>Sweep: " << escape_xml(spec.file.empty() ? "(merged results)" : spec.file)
+       << "</h1>\n";
   if (!spec.description.empty()) html << "<p>" << escape_xml(spec.description) << "</p>\n";
   html << "<dl>\n<dt>config</dt><dd>" << escape_xml(spec.config) << "</dd>\n<dt>size</dt><dd>" << spec.size.width << "×"
        << spec.size.height << ", " << spec.runs << " runs after " << spec.warmup << " warm-up, " << spec.frames
-       << " frame(s), backend " << escape_xml(spec.backend) << "</dd>\n<dt>error</dt><dd>" << escape_xml(spec.metric) << " ("
-       << (metric_lower_is_better(spec.metric) ? "lower" : "higher") << " is better) over " << escape_xml(spec.mask)
-       << " pixels against the " << escape_xml(spec.reference == "cpu" ? "CPU reference" : spec.reference) << "</dd>\n"
-       << "<dt>points</dt><dd>" << spec_points_done(spec, ordered) << " of the spec's " << spec.points.size() << " done; "
-       << ordered.size() << " result(s), " << failed << " failed</dd>\n</dl>\n";
+       << " frame(s), backend " << escape_xml(spec.backend) << "</dd>\n<dt>error</dt><dd>" << escape_xml(spec.metric)
+       << " (" << (metric_lower_is_better(spec.metric) ? "lower" : "higher") << " is better) over "
+       << escape_xml(spec.mask) << " pixels against the "
+       << escape_xml(spec.reference == "cpu" ? "CPU reference" : spec.reference) << "</dd>\n"
+       << "<dt>points</dt><dd>" << spec_points_done(spec, ordered) << " of the spec's " << spec.points.size()
+       << " done; " << ordered.size() << " result(s), " << failed << " failed</dd>\n</dl>\n";
   if (std::any_of(ordered.begin(), ordered.end(), [](const PointResult& p) { return is_lavapipe(p.device); })) {
-    html << "<p class=\"note\">Times on llvmpipe are lavapipe (CPU): Mesa's software Vulkan driver, so the “GPU” time is "
+    html << "<p class=\"note\">Times on llvmpipe are lavapipe (CPU): Mesa's software Vulkan driver, so the “GPU” time "
+            "is "
             "this machine's CPU time, not a GPU's.</p>\n";
   }
-  html << "<p class=\"note\">The Pareto front (★, joined by a line) holds, per device, the points no other point of that "
+  html << "<p class=\"note\">The Pareto front (★, joined by a line) holds, per device, the points no other point of "
+          "that "
           "device beats in both median frame time and "
-       << escape_xml(spec.metric) << ". Times of different devices are not compared. Hover a point for its setting.</p>\n";
+       << escape_xml(spec.metric)
+       << ". Times of different devices are not compared. Hover a point for its setting.</p>\n";
   html << svg;
   for (const std::string& device : devices) html << device_table(spec, ordered, device);
   html << failed_list(ordered);
@@ -423,7 +451,9 @@ bool have_svg_converter() {
 
 void write_aggregates(const std::string& dir, const SweepSpec& spec, std::vector<PointResult> results) {
   const bool png = have_svg_converter();
-  if (!png) std::cerr << "volgraph sweep: rsvg-convert (Debian librsvg2-bin) not found: pareto.png not written (pareto.svg has the plot)\n";
+  if (!png)
+    std::cerr << "volgraph sweep: rsvg-convert (Debian librsvg2-bin) not found: pareto.png not written (pareto.svg has "
+                 "the plot)\n";
   write_aggregates(dir, spec, std::move(results), png);
 }
 

@@ -93,7 +93,8 @@ Spread read_spread(const Reader& r, const Json& object, const std::string& point
 Json timing_json(const TimingSummary& t) {
   Json passes = Json::array();
   for (const PassTimes& p : t.passes) {
-    passes.push_back(Json{{"pass", p.pass}, {"type", p.type}, {"gpu_ms", spread_json(p.gpu_ms)}, {"cpu_ms", spread_json(p.cpu_ms)}});
+    passes.push_back(
+        Json{{"pass", p.pass}, {"type", p.type}, {"gpu_ms", spread_json(p.gpu_ms)}, {"cpu_ms", spread_json(p.cpu_ms)}});
   }
   return Json{{"runs", t.runs},
               {"warmup", t.warmup},
@@ -121,9 +122,12 @@ TimingSummary read_timing(const Reader& r, const Json& j, const std::string& at)
 }
 
 Json memory_json(const MemorySummary& m) {
-  return Json{{"aliased_bytes", m.aliased_bytes},         {"unaliased_bytes", m.unaliased_bytes},
-              {"lower_bound_bytes", m.lower_bound_bytes}, {"persistent_bytes", m.persistent_bytes},
-              {"passes_run", m.passes_run},               {"passes_culled", m.passes_culled}};
+  return Json{{"aliased_bytes", m.aliased_bytes},
+              {"unaliased_bytes", m.unaliased_bytes},
+              {"lower_bound_bytes", m.lower_bound_bytes},
+              {"persistent_bytes", m.persistent_bytes},
+              {"passes_run", m.passes_run},
+              {"passes_culled", m.passes_culled}};
 }
 
 MemorySummary read_memory(const Reader& r, const Json& j, const std::string& at) {
@@ -216,7 +220,9 @@ PointResult read_point(const Reader& r, const Json& j) {
   return p;
 }
 
-std::span<const std::byte> bytes_of(const std::string& text) { return std::as_bytes(std::span(text.data(), text.size())); }
+std::span<const std::byte> bytes_of(const std::string& text) {
+  return std::as_bytes(std::span(text.data(), text.size()));
+}
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -404,7 +410,7 @@ Json device_summary(const std::string& device, const std::vector<PointResult>& o
   });
   Json ids = Json::array();
   for (const PointResult* p : front) ids.push_back(p->id);
-  return Json{{"device", device}, {"device_is_cpu", is_cpu}, {"clock", clock},     {"points", points},
+  return Json{{"device", device}, {"device_is_cpu", is_cpu}, {"clock", clock}, {"points", points},
               {"ok", ok},         {"failed", points - ok},   {"pareto", ids}};
 }
 
@@ -451,7 +457,7 @@ std::string results_json(const SweepSpec& spec, const std::vector<PointResult>& 
 
 std::string results_csv(const std::vector<PointResult>& ordered) {
   const std::vector<std::string> keys = setting_keys(ordered);
-  std::vector<std::string> header = {"id",  "series",        "label",        "device",       "ok",
+  std::vector<std::string> header = {"id",    "series",          "label",        "device",       "ok",
                                      "error", "frame_ms_median", "frame_ms_min", "frame_ms_max", "runs"};
   for (const std::string& m : csv_metric_columns()) header.push_back(m);
   for (const char* extra : {"nan", "inf", "pareto"}) header.push_back(extra);
@@ -465,10 +471,12 @@ std::string results_csv(const std::vector<PointResult>& ordered) {
   for (const PointResult& p : ordered) {
     std::vector<std::string> cells = {p.id, p.series, p.label, p.device, p.ok ? "true" : "false", p.error};
     const Spread& t = p.timing.frame_wall_ms;
-    for (const std::string& figure : {csv_number(t.median), csv_number(t.min), csv_number(t.max), std::to_string(t.runs)}) {
+    for (const std::string& figure :
+         {csv_number(t.median), csv_number(t.min), csv_number(t.max), std::to_string(t.runs)}) {
       cells.push_back(p.ok ? figure : "");
     }
-    for (const std::string& m : csv_metric_columns()) cells.push_back(p.ok ? csv_number(metric_value(p.metrics, m)) : "");
+    for (const std::string& m : csv_metric_columns())
+      cells.push_back(p.ok ? csv_number(metric_value(p.metrics, m)) : "");
     cells.push_back(p.ok ? std::to_string(p.metrics.nan_values) : "");
     cells.push_back(p.ok ? std::to_string(p.metrics.inf_values) : "");
     cells.push_back(p.pareto ? "true" : "false");

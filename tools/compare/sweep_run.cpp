@@ -48,13 +48,14 @@ std::string outcome_text(const std::string& name, const PointResult& result, con
   char error[32], seconds[32];
   std::snprintf(error, sizeof error, "%.3g", metric_value(result.metrics, metric));
   std::snprintf(seconds, sizeof seconds, "%.1f", result.seconds);
-  return name + ": " + milliseconds_text(result.timing.frame_wall_ms.median) + " ms, " + metric + " " + error +
-         " (" + seconds + " s)";
+  return name + ": " + milliseconds_text(result.timing.frame_wall_ms.median) + " ms, " + metric + " " + error + " (" +
+         seconds + " s)";
 }
 
 class Progress {
  public:
-  Progress(std::ostream& out, bool terminal, int total, int done) : out_(out), terminal_(terminal), total_(total), done_(done) {}
+  Progress(std::ostream& out, bool terminal, int total, int done)
+      : out_(out), terminal_(terminal), total_(total), done_(done) {}
 
   // Before the first point: what is already done.
   void start(const std::string& dir) {
@@ -135,7 +136,9 @@ SweepSummary run_sweep(const SweepSpec& spec, const std::string& dir, const Poin
   SweepSummary summary;
   summary.skipped = int(spec.points.size() - to_run.size());
   const bool png = have_svg_converter();
-  if (!png) std::cerr << "volgraph sweep: rsvg-convert (Debian librsvg2-bin) not found: pareto.png not written (pareto.svg has the plot)\n";
+  if (!png)
+    std::cerr << "volgraph sweep: rsvg-convert (Debian librsvg2-bin) not found: pareto.png not written (pareto.svg has "
+                 "the plot)\n";
 
   const bool several_series = has_several_series(spec);
   Progress shown(progress, terminal, int(spec.points.size()), summary.skipped);
@@ -157,8 +160,8 @@ SweepSummary run_sweep(const SweepSpec& spec, const std::string& dir, const Poin
     write_aggregates(dir, spec, results, png);
     ++summary.ran;
     summary.failed += !result.ok;
-    shown.finished(point_name(*point, several_series), result, spec.metric, std::chrono::duration<double>(Clock::now() - sweep_start).count(),
-                   summary.ran);
+    shown.finished(point_name(*point, several_series), result, spec.metric,
+                   std::chrono::duration<double>(Clock::now() - sweep_start).count(), summary.ran);
   }
   if (to_run.empty()) write_aggregates(dir, spec, results, png);  // a finished sweep's aggregates, up to date
   shown.end();
