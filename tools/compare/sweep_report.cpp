@@ -138,7 +138,7 @@ std::vector<double> ticks_of(const Axis& axis) {
   std::vector<double> ticks;
   if (axis.log) {
     const int first = int(std::floor(std::log10(axis.lo))), last = int(std::ceil(std::log10(axis.hi)));
-    const bool few_decades = last - first < 3;
+    const bool few_decades = last - first <= 3;  // 1, 2, 5 a decade; 1 a decade over wider ranges
     for (int k = first; k <= last; ++k) {
       for (double m : {1.0, 2.0, 5.0}) {
         if (m != 1 && !few_decades) continue;
