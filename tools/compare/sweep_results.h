@@ -47,9 +47,32 @@ void mark_pareto(std::vector<PointResult>& results);
 std::vector<PointResult> read_results(const std::string& dir);
 // Writes DIR/points/<id>.json (temporary name, then rename).
 void save_point(const std::string& dir, const PointResult& result);
-// Rewrites results.json, results.csv, report.html and pareto.png from `results`
-// (in the spec's point order where the spec is given).
+// The same as DIR/points/<stem>.json (merge_results' <id>@<device hash>). The file's
+// pareto is always false: the front depends on the other points (results.json has it).
+void save_point_as(const std::string& dir, const std::string& stem, const PointResult& result);
+// Rewrites results.json, results.csv, report.html, pareto.svg and pareto.png from
+// `results` (in the spec's point order where the spec is given), all staged and renamed
+// together. pareto.png needs rsvg-convert (librsvg2-bin): without it no PNG is written
+// (a stale one is removed) and stderr says so.
 void write_aggregates(const std::string& dir, const SweepSpec& spec, std::vector<PointResult> results);
+// The same, the PNG written only when `write_png` (run_sweep checks for rsvg-convert once).
+void write_aggregates(const std::string& dir, const SweepSpec& spec, std::vector<PointResult> results, bool write_png);
+// Whether rsvg-convert is on PATH.
+bool have_svg_converter();
+
+// The aggregates' parts, for write_aggregates and its tests. The points in the spec's
+// order (every copy of a point, by device), then the points the spec does not have.
+std::vector<PointResult> in_spec_order(const SweepSpec& spec, std::vector<PointResult> results);
+// results.json: the spec's figures, every point with its pareto flag, a summary per device.
+std::string results_json(const SweepSpec& spec, const std::vector<PointResult>& ordered);
+// results.csv (RFC 4180, CRLF): id, series, label, device, ok, error, frame_ms_median,
+// frame_ms_min, frame_ms_max, runs, the metrics (rmse … rel_mean, nan, inf), pareto, then
+// one column a setting key over all points (its value: a JSON string's text, other JSON as
+// written; empty where a point lacks the key). A failed point's figures are empty.
+std::string results_csv(const std::vector<PointResult>& ordered);
+// 8 hex digits of the FNV-1a hash of a device name: merge_results names a point done on
+// several devices DIR/points/<id>@<hash>.json.
+std::string device_hash(const std::string& device);
 
 // Runs every point of the spec that DIR/points does not hold yet, saving each when done
 // and the aggregates after each; a point whose runner throws is saved as failed with the
@@ -57,7 +80,7 @@ void write_aggregates(const std::string& dir, const SweepSpec& spec, std::vector
 // and an estimate when `terminal`, else one plain line per point.
 using PointRunner = std::function<PointResult(const SweepPoint&)>;
 struct SweepSummary {
-  int ran = 0, skipped = 0, failed = 0;
+  int ran = 0, skipped = 0, failed = 0;  // ran counts the failed too; skipped: already in DIR/points
 };
 SweepSummary run_sweep(const SweepSpec& spec, const std::string& dir, const PointRunner& runner, std::ostream& progress,
                        bool terminal);
@@ -70,6 +93,12 @@ void write_jobs(const std::string& dir, const SweepSpec& spec, const std::functi
 // --merge: the point results of every DIR gathered into `out` (a point done in several
 // keeps one copy per device; identical copies are one), aggregates rewritten. Merging
 // twice gives the same files.
+// The rule: `out`'s own points count as one more dir, after the others. A point id done
+// on one device is out/points/<id>.json; done on several, each copy is
+// out/points/<id>@<device_hash(device)>.json (the id inside stays the spec's). Two copies
+// of one id and device that differ: the first dir listed wins, stderr says which. Point
+// files of `out` the merge replaced (an <id>.json now split by device) are removed.
+// Without a spec the aggregates take the metric of the first point.
 void merge_results(const std::vector<std::string>& dirs, const std::string& out, const SweepSpec* spec);
 
 }  // namespace volgraph::compare
