@@ -25,11 +25,20 @@ commands:
                                visibility; pass parameters such as ambient or tone maps are not part
                                of the scene and are ignored): .exr or .pfm linear float, or .png
                                with linear values clamped to [0, 1] and sRGB-encoded (no tone map)
+  ab CONFIG -o DIR             two settings of one config side by side in time and error (report.html):
+                               --pass NAME --a VARIANT[,param=value…] --b …, or --a-graph FILE --b-graph FILE;
+                               --reference cpu|IMAGE.pfm (default: B against A), --runs N (5), --warmup N (1)
+  sweep SPEC -o DIR            every point of a sweep spec (configs/sweeps/): time, error, Pareto front,
+                               results.csv/json, report.html; resumes in DIR; --emit-jobs (DIR/jobs.txt for
+                               GNU parallel or tools/sweep_slurm.sh), --point ID (one job), --merge DIR…;
+                               --size, --runs, --warmup, --backend, --reference override the spec's
+  tune SPEC --max-error X -o DIR  the fastest point with its error (--metric, default the spec's) ≤ X:
+                               DIR/tuned.json (a config including the swept one) and the flags
   passes                       the pass types with their variants, parameters and slots
   devices                      the Vulkan devices (index for --device N; lavapipe is the default)
   test                         run the whole test suite (handled by tools/volgraph)
 
-options (plan, validate, render):
+options (plan, validate, render, ab):
   --size WxH                   frame size (overrides output.size)
   --set PASS.PARAM=VALUE       set a pass parameter (VALUE in JSON: 2, 0.5, true, [1,2,3], word)
   --variant PASS=VARIANT       swap a pass's variant
@@ -39,14 +48,14 @@ options (plan, validate, render):
   --no-alias                   give every transient resource its own memory (debug)
   --serialize                  a full barrier between every two passes (debug)
 
-options (reference):
+options (reference; ab, sweep and tune for their CPU reference):
   --size WxH                   frame size (overrides output.size)
   --threads N                  worker threads, at most 256 (default: the hardware's); the image does not depend on it
   --spp N                      samples per pixel on a regular sub-pixel grid, N a square (1, 4, 9, …);
                                default 1: pixel centres, as the GPU samples
   --tolerance X                relative error allowed in each stretch of the media integral (default 1e-5)
 
-options (render):
+options (render, ab):
   --backend vulkan|webgpu      default vulkan; webgpu: Dawn (its Vulkan backend on lavapipe here)
   --device N                   a Vulkan device by index (volgraph devices); default lavapipe (vulkan only)
   --frames N                   render N frames, write the last
