@@ -118,6 +118,8 @@ TEST_F(SweepSpecTest, ArithmeticRangesIncludeTheEnd) {
   // 0.1 + 2 × 0.1 is 0.30000000000000004 in doubles: rounded to 12 digits, the end included.
   EXPECT_EQ(values_of("fog_media.near", R"({"from": 0.1, "to": 0.3, "step": 0.1})"),
             (std::vector<std::string>{"0.1", "0.2", "0.3"}));
+  EXPECT_EQ(values_of("sun_shadow.pcf_radius", R"({"from": 0, "to": 0.5, "step": 0.1})"),  // 3 × 0.1 is 0.30000000000000004
+            (std::vector<std::string>{"0.0", "0.1", "0.2", "0.3", "0.4", "0.5"}));
   EXPECT_EQ(values_of("sun_shadow.pcf_radius", R"({"from": 0, "to": 1, "step": 0.25})"),
             (std::vector<std::string>{"0.0", "0.25", "0.5", "0.75", "1.0"}));
 }
