@@ -64,6 +64,17 @@ TEST_F(SweepSpecTest, ReadsTheSettingsOfTheSpec) {
   EXPECT_EQ(spec.mask, "fog_only");
 }
 
+TEST_F(SweepSpecTest, AReferenceImageIsResolvedFromTheSpecsFolder) {
+  const SweepSpec spec = read("good_reference.json");
+  EXPECT_EQ(spec.reference, spec_file("reference.PFM"));
+  EXPECT_EQ(spec.metric, "rel_rmse");  // the defaults
+  EXPECT_EQ(spec.mask, "all");
+  EXPECT_EQ(spec.frames, 1);
+  EXPECT_EQ(spec.backend, "vulkan");
+  ASSERT_EQ(spec.points.size(), 1u);
+  EXPECT_EQ(spec.points[0].label, "froxel");
+}
+
 TEST_F(SweepSpecTest, ExpandsTheCartesianProductWithTheLastKeyFastest) {
   const SweepSpec spec = read("good.json");
   ASSERT_EQ(spec.points.size(), 6u + 3u + 1u);  // 2 × 3 froxel, 3 ray-march steps, 1 default
@@ -118,6 +129,9 @@ TEST_F(SweepSpecTest, ArithmeticRangesIncludeTheEnd) {
   // 0.1 + 2 × 0.1 is 0.30000000000000004 in doubles: rounded to 12 digits, the end included.
   EXPECT_EQ(values_of("fog_media.near", R"({"from": 0.1, "to": 0.3, "step": 0.1})"),
             (std::vector<std::string>{"0.1", "0.2", "0.3"}));
+  // (0.3 − 0)/0.1 is 2.9999999999999996: within 1e-9 of 3 steps, so 0.3 is in.
+  EXPECT_EQ(values_of("sun_shadow.pcf_radius", R"({"from": 0, "to": 0.3, "step": 0.1})"),
+            (std::vector<std::string>{"0.0", "0.1", "0.2", "0.3"}));
   EXPECT_EQ(values_of("sun_shadow.pcf_radius", R"({"from": 0, "to": 0.5, "step": 0.1})"),  // 3 × 0.1 is 0.30000000000000004
             (std::vector<std::string>{"0.0", "0.1", "0.2", "0.3", "0.4", "0.5"}));
   EXPECT_EQ(values_of("sun_shadow.pcf_radius", R"({"from": 0, "to": 1, "step": 0.25})"),
@@ -216,10 +230,11 @@ const BrokenSpec kBrokenSpecs[] = {
     {"bad_json.json", "", "invalid JSON"},
     {"bad_duplicate_key.json", "/runs", "duplicate key \"runs\" (first at line 3)"},
     // What the config refuses, at the series' key, with the loader's message (once for the two points that make it).
-    {"bad_refused_param.json", "/series/0/vary/fog_media.slices",
+    {"bad_refused_param.json", "/series/0/vary/fog_media.slices/1",
      "the config refuses series \"froxel\"'s point \"fog_media.slices=1000, fog_integral=wronski\": --set fog_media.slices=1000"},
+    {"bad_refused_range.json", "/series/0/vary/fog_media.slices", "point \"fog_media.slices=1024\": --set fog_media.slices=1024"},
     {"bad_refused_pass.json", "/series/0/set/fog_nothing.slices", "no pass named \"fog_nothing\""},
-    {"bad_refused_variant.json", "/series/0/vary/fog_integral", "--variant fog_integral=hilaire"},
+    {"bad_refused_variant.json", "/series/0/vary/fog_integral/1", "--variant fog_integral=hilaire"},
     {"bad_refused_graph_point.json", "/series/1/set/fog_media.slices", "the config refuses series \"raymarch\"'s point \"raymarch\""},
     {"bad_refused_near_far.json", "/series/0", "must exceed near"},
 };

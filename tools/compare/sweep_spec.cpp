@@ -30,6 +30,11 @@ using config::Source;
 // As the config loader: deeper nesting than any spec needs is refused before parsing.
 constexpr int kMaxJsonDepth = 256;
 constexpr int64_t kMaxSide = 16384;
+// 2^53: the integers of a range stay integers below it (a parameter reads them as doubles too).
+constexpr double kLargestExactInteger = 9007199254740992.0;
+
+// An integer as written (16, not 16.0), small enough to stay exact.
+bool integral(const Json& j) { return j.is_number_integer() && std::abs(j.get<double>()) < kLargestExactInteger; }
 
 const std::vector<std::string> kBackends{"vulkan", "webgpu"};
 const std::vector<std::string> kMasks{"all", "fog_only", "surfaces"};
@@ -91,6 +96,7 @@ struct Axis {
   bool variant = false;  // "PASS" (a variant) rather than "PASS.PARAM"
   std::vector<Json> values;
   std::string pointer;  // of the key, for the config's refusals
+  bool listed = false;  // the values are an array written out (not a range): each has its own pointer
 };
 
 struct Series {
@@ -378,6 +384,7 @@ class SpecReader {
       }
       axis.values.push_back(e.json());
     }
+    axis.listed = true;
     return true;
   }
 
@@ -400,7 +407,7 @@ class SpecReader {
       if (!times) return false;
       const double count = std::floor(std::log(*to / *from) / std::log(*times) + 1e-9) + 1;
       if (!count_fits(r, count)) return false;
-      if (from_node->json().is_number_integer() && times_node->json().is_number_integer()) {
+      if (integral(from_node->json()) && integral(times_node->json()) && *to < kLargestExactInteger) {
         geometric_integers(from_node->json().get<int64_t>(), times_node->json().get<int64_t>(), *to, out);
       } else {
         geometric(*from, *times, *to, out);
@@ -411,7 +418,8 @@ class SpecReader {
     if (!step) return false;
     const double count = std::floor((*to - *from) / *step + 1e-9) + 1;
     if (!count_fits(r, count)) return false;
-    const bool integers = from_node->json().is_number_integer() && step_node->json().is_number_integer();
+    const bool integers = integral(from_node->json()) && integral(step_node->json()) &&
+                          std::abs(*from) + (count - 1) * *step < kLargestExactInteger;
     for (int64_t i = 0; i < int64_t(count); ++i) {
       if (integers) {
         out.emplace_back(from_node->json().get<int64_t>() + i * step_node->json().get<int64_t>());
@@ -450,12 +458,12 @@ class SpecReader {
   static void geometric_integers(int64_t from, int64_t times, double to, std::vector<Json>& out) {
     for (int64_t v = from; double(v) <= to; v *= times) {
       out.emplace_back(v);
-      if (v > std::numeric_limits<int64_t>::max() / times) return;
+      if (double(v) * double(times) > to) return;  // the next is past the end (and may not fit an int64)
     }
   }
 
   static void geometric(double from, double times, double to, std::vector<Json>& out) {
-    for (int i = 0;; ++i) {
+    for (int i = 0; i <= int(kMaxSweepPoints); ++i) {
       const double v = round_12_digits(from * std::pow(times, i));
       if (v > to * (1 + 1e-9)) return;
       out.emplace_back(std::abs(v - to) <= 1e-9 * to ? to : v);
@@ -571,13 +579,23 @@ class SpecReader {
       for (const auto* axes : {&s.sets, &s.varies}) {
         for (const Axis& a : *axes) {
           const std::string prefix = (a.variant ? "--variant " : "--set ") + a.key + "=";
-          if (d.where.pointer.rfind(prefix, 0) == 0) pointer = a.pointer;
+          if (d.where.pointer.rfind(prefix, 0) == 0) pointer = pointer_of_value(a, p);
         }
       }
     }
     const std::string loader = flag ? d.where.pointer + ": " + d.message : format_diagnostic(d);
     if (!reported.emplace(pointer, loader).second) return;
     diags_.error(where(pointer), "the config refuses series \"" + s.name + "\"'s point \"" + p.label + "\": " + loader);
+  }
+
+  // The pointer of the value `a` takes at point `p`: its element when the values are listed.
+  static std::string pointer_of_value(const Axis& a, const SweepPoint& p) {
+    if (!a.listed) return a.pointer;
+    const auto setting = std::find_if(p.settings.begin(), p.settings.end(), [&](const auto& s) { return s.first == a.key; });
+    for (size_t i = 0; setting != p.settings.end() && i < a.values.size(); ++i) {
+      if (a.values[i].dump() == setting->second) return a.pointer + "/" + std::to_string(i);
+    }
+    return a.pointer;
   }
 
   const PassRegistry& registry_;
