@@ -112,6 +112,31 @@ TEST_F(SweepSpecTest, ASeriesGraphIsResolvedAndASeriesWithoutVaryIsOnePointNamed
   EXPECT_TRUE(d.overrides.sets.empty() && d.overrides.variants.empty() && d.overrides.graph.empty());
 }
 
+TEST_F(SweepSpecTest, FramesSetThePointsFrameCountNotThePasses) {
+  const SweepSpec spec = read("good_frames.json");
+  ASSERT_EQ(spec.points.size(), 4u + 1u);
+  const std::vector<int> frames{1, 2, 4, 8, 3};  // the ranged counts, then the spec's
+  for (size_t i = 0; i < frames.size(); ++i) EXPECT_EQ(spec.points[i].frames, frames[i]) << i;
+  EXPECT_EQ(spec.points[2].label, "frames=4");
+  EXPECT_EQ(spec.points[2].settings, (Settings{{"fog_integral", "\"wronski\""}, {"frames", "4"}}));
+  EXPECT_EQ(spec.points[2].overrides.variants, (std::vector<std::string>{"fog_integral=wronski"}));
+  EXPECT_TRUE(spec.points[2].overrides.sets.empty());
+}
+
+// Every spec shipped in configs/sweeps/ reads (and each of its points loads against its config).
+TEST_F(SweepSpecTest, EveryShippedSpecReads) {
+  const std::filesystem::path dir = std::filesystem::path(VOLGRAPH_SOURCE_DIR) / "configs" / "sweeps";
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no configs/sweeps";
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".json") continue;
+    try {
+      EXPECT_FALSE(read_sweep_spec(entry.path().string(), registry_).points.empty()) << entry.path();
+    } catch (const ConfigError& e) {
+      ADD_FAILURE() << e.what();
+    }
+  }
+}
+
 TEST_F(SweepSpecTest, GeometricRangesMultiplyUpToTheEnd) {
   EXPECT_EQ(values_of("fog_media.slices", R"({"from": 16, "to": 128, "times": 2})"),
             (std::vector<std::string>{"16", "32", "64", "128"}));
@@ -215,7 +240,7 @@ const BrokenSpec kBrokenSpecs[] = {
     {"bad_series_no_name.json", "/series/0", "missing \"name\""},
     {"bad_series_unknown_key.json", "/series/0/vray", "unknown key \"vray\" (did you mean \"vary\"?)"},
     {"bad_graph_missing.json", "/series/0/graph", "file not found: \"no_such_graph.json\""},
-    {"bad_key.json", "/series/0/set/fog media", "expected a key \"PASS\" (picks a variant) or \"PASS.PARAM\""},
+    {"bad_key.json", "/series/0/set/fog media", "expected a key \"PASS\" (picks a variant), \"PASS.PARAM\" (sets a parameter) or \"frames\""},
     {"bad_variant_value.json", "/series/0/set/fog_integral", "expected the name of a variant of pass \"fog_integral\""},
     {"bad_param_value.json", "/series/0/set/fog_media.slices", "expected a value for parameter \"fog_media.slices\""},
     {"bad_vary_empty.json", "/series/0/vary/fog_media.slices", "expected a non-empty array of values, or a range"},
@@ -227,6 +252,8 @@ const BrokenSpec kBrokenSpecs[] = {
     {"bad_range_variant.json", "/series/0/vary/fog_integral", "a range needs a parameter key \"PASS.PARAM\""},
     {"bad_range_huge.json", "/series/0/vary/fog_media.far", "the range expands to 1000000001 values; expected at most 10000"},
     {"bad_too_many_points.json", "/series/0", "series \"a\" expands to 200 × 100 points, more than 10000"},
+    {"bad_frames_value.json", "/series/0/vary/frames/1", "expected an integer in [1, 1000], got 0"},
+    {"bad_frames_range.json", "/series/0/vary/frames", "expected a range of frame counts, integers in [1, 1000]"},
     {"bad_json.json", "", "invalid JSON"},
     {"bad_duplicate_key.json", "/runs", "duplicate key \"runs\" (first at line 3)"},
     // What the config refuses, at the series' key, with the loader's message (once for the two points that make it).

@@ -144,6 +144,13 @@ TEST(TuneSummary, QuotesForTheShellWhatNeedsIt) {
       << text;
 }
 
+TEST(TuneSummary, AFrameCountIsTheFramesFlag) {
+  TuneChoice choice;
+  choice.chosen = point("t", 1, 0.01, {{"fog_integral", "\"wronski\""}, {"frames", "8"}});
+  const std::string text = tuned_summary_text(demo_spec(), choice, "rel_rmse", 0.05);
+  EXPECT_EQ(text.rfind("--variant fog_integral=wronski\n--frames 8\n", 0), 0u) << text;
+}
+
 TEST(TuneSummary, APointOfAnotherGraphGivesGraphFlagAndNoOverlay) {
   TuneChoice choice;
   choice.chosen = point("g", 1, 0.01, {{"fog_march.steps", "64"}});
@@ -201,15 +208,17 @@ TEST(TuneOverlay, LoadsAsAConfigThatSetsThePointsVariantsAndParameters) {
   EXPECT_EQ(loaded.config.scene.objects.size(), 3u);  // the swept config's scene, included
 }
 
-TEST(TuneOverlay, TheWronskiPointSwitchesTheVariantTheConfigSetsOtherwise) {
+TEST(TuneOverlay, TheWronskiPointSwitchesTheVariantTheConfigSetsOtherwiseAndNamesItsFrames) {
   TuneChoice choice;
-  choice.chosen = point("w", 1, 0.01, {{"fog_integral", "\"wronski\""}});
+  choice.chosen = point("w", 1, 0.01, {{"fog_integral", "\"wronski\""}, {"frames", "8"}});
   choice.metric = "rel_rmse";
   choice.max_error = 0.05;
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("volgraph_tune_wronski_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "overlay.json").string();
-  std::ofstream(path) << tuned_overlay_json(demo_spec(), choice, dir.string());
+  const std::string text = tuned_overlay_json(demo_spec(), choice, dir.string());
+  EXPECT_NE(text.find("render it with --frames 8 (a config holds no frame count)"), std::string::npos) << text;
+  std::ofstream(path) << text;
   PassRegistry registry;
   register_builtin_passes(registry);
   const LoadedConfig loaded = load_config(path, registry);

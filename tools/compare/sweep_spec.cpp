@@ -90,10 +90,17 @@ uint64_t fnv1a_64(const std::string& bytes) {
   return h;
 }
 
+// What a key of "set" or "vary" sets: a pass's variant ("PASS"), a parameter
+// ("PASS.PARAM"), or the frames rendered before the image is measured ("frames").
+enum class Kind { variant, param, frames };
+
+constexpr const char* kFramesKey = "frames";
+constexpr int64_t kMaxFrames = 1000;
+
 // A key of "set" or "vary" and the values it takes.
 struct Axis {
   std::string key;
-  bool variant = false;  // "PASS" (a variant) rather than "PASS.PARAM"
+  Kind kind = Kind::param;
   std::vector<Json> values;
   std::string pointer;  // of the key, for the config's refusals
   bool listed = false;  // the values are an array written out (not a range): each has its own pointer
@@ -291,21 +298,23 @@ class SpecReader {
     return ok ? std::optional(std::move(s)) : std::nullopt;
   }
 
-  // A key "PASS" (variant) or "PASS.PARAM" (parameter); nullopt (reported) when neither.
-  static std::optional<bool> key_is_variant(const Node& key_node, const std::string& key) {
+  // A key "frames", "PASS" (variant) or "PASS.PARAM" (parameter); nullopt (reported) when none.
+  static std::optional<Kind> kind_of(const Node& key_node, const std::string& key) {
+    if (key == kFramesKey) return Kind::frames;
     const size_t dot = key.find('.');
     const bool variant = dot == std::string::npos;
     const bool ok = variant ? valid_name(key) : valid_name(key.substr(0, dot)) && valid_name(key.substr(dot + 1));
-    if (ok) return variant;
-    key_node.error("expected a key \"PASS\" (picks a variant) or \"PASS.PARAM\" (sets a parameter), names of letters, digits "
-                   "and '_', got \"" + key + "\"");
+    if (ok) return variant ? Kind::variant : Kind::param;
+    key_node.error("expected a key \"PASS\" (picks a variant), \"PASS.PARAM\" (sets a parameter) or \"frames\", names of "
+                   "letters, digits and '_', got \"" + key + "\"");
     return std::nullopt;
   }
 
   // A value a key takes: a variant's name, or a parameter value as --set takes it.
-  static bool value_fits(const Node& v, bool variant, const std::string& key) {
+  static bool value_fits(const Node& v, Kind kind, const std::string& key) {
     const Json& j = v.json();
-    if (variant) {
+    if (kind == Kind::frames) return bool(v.integer(1, kMaxFrames));
+    if (kind == Kind::variant) {
       if (j.is_string() && !j.get<std::string>().empty()) return true;
       v.error("expected the name of a variant of pass \"" + key + "\" (a string), got " + config::describe(j));
       return false;
@@ -322,12 +331,12 @@ class SpecReader {
     bool ok = true;
     for (const auto& item : set.json().items()) {
       const Node v = set.child(item.key());
-      const auto variant = key_is_variant(v, item.key());
-      if (!variant || !value_fits(v, *variant, item.key())) {
+      const auto kind = kind_of(v, item.key());
+      if (!kind || !value_fits(v, *kind, item.key())) {
         ok = false;
         continue;
       }
-      out.push_back({item.key(), *variant, {v.json()}, v.pointer()});
+      out.push_back({item.key(), *kind, {v.json()}, v.pointer()});
     }
     return ok;
   }
@@ -337,8 +346,8 @@ class SpecReader {
     bool ok = true;
     for (const auto& item : vary.json().items()) {
       const Node v = vary.child(item.key());
-      const auto variant = key_is_variant(v, item.key());
-      if (!variant) {
+      const auto kind = kind_of(v, item.key());
+      if (!kind) {
         ok = false;
         continue;
       }
@@ -348,7 +357,7 @@ class SpecReader {
         ok = false;
         continue;
       }
-      Axis axis{item.key(), *variant, {}, v.pointer()};
+      Axis axis{item.key(), *kind, {}, v.pointer()};
       if (!read_vary_values(v, axis)) {
         ok = false;
         continue;
@@ -361,12 +370,12 @@ class SpecReader {
   bool read_vary_values(const Node& v, Axis& axis) {
     const Json& j = v.json();
     if (j.is_object()) {
-      if (axis.variant) {
-        v.error("a range needs a parameter key \"PASS.PARAM\"; \"" + axis.key +
+      if (axis.kind == Kind::variant) {
+        v.error("a range needs a parameter key \"PASS.PARAM\" or \"frames\"; \"" + axis.key +
                 "\" picks a variant: expected an array of variant names");
         return false;
       }
-      return read_range(v, axis.values);
+      return read_range(v, axis.values) && (axis.kind != Kind::frames || frame_counts(v, axis.values));
     }
     if (!j.is_array() || j.empty()) {
       v.error("expected a non-empty array of values, or a range {\"from\", \"to\", \"times\"} or {\"from\", \"to\", \"step\"}, got " +
@@ -375,7 +384,7 @@ class SpecReader {
     }
     for (size_t i = 0; i < v.size(); ++i) {
       const Node e = v.element(i);
-      if (!value_fits(e, axis.variant, axis.key)) return false;
+      if (!value_fits(e, axis.kind, axis.key)) return false;
       const auto same = std::find(axis.values.begin(), axis.values.end(), e.json());
       if (same != axis.values.end()) {
         e.error("the value " + e.json().dump() + " is listed twice (first at " + v.pointer() + "/" +
@@ -385,6 +394,17 @@ class SpecReader {
       axis.values.push_back(e.json());
     }
     axis.listed = true;
+    return true;
+  }
+
+  // A range of "frames": whole numbers in [1, kMaxFrames].
+  static bool frame_counts(const Node& r, const std::vector<Json>& values) {
+    for (const Json& v : values) {
+      if (v.is_number_integer() && v.get<int64_t>() >= 1 && v.get<int64_t>() <= kMaxFrames) continue;
+      r.error("expected a range of frame counts, integers in [1, " + std::to_string(kMaxFrames) + "] (\"from\" and \"" +
+              (r.json().contains("times") ? "times" : "step") + "\" written as integers), got " + v.dump());
+      return false;
+    }
     return true;
   }
 
@@ -507,13 +527,15 @@ class SpecReader {
 
   void add_point(const Series& s, const std::vector<size_t>& index) {
     SweepPoint p;
+    p.frames = spec_.frames;
     p.series = s.name;
     p.graph = s.graph;
     p.overrides.graph = s.graph;
     auto add = [&](const Axis& a, const Json& value) {
       const std::string text = value.dump();
       p.settings.emplace_back(a.key, text);
-      if (a.variant) p.overrides.variants.push_back(a.key + "=" + value.get<std::string>());
+      if (a.kind == Kind::frames) p.frames = int(value.get<int64_t>());
+      else if (a.kind == Kind::variant) p.overrides.variants.push_back(a.key + "=" + value.get<std::string>());
       else p.overrides.sets.push_back(a.key + "=" + text);
     };
     for (const Axis& a : s.sets) add(a, a.values.front());
@@ -578,7 +600,7 @@ class SpecReader {
     if (flag) {
       for (const auto* axes : {&s.sets, &s.varies}) {
         for (const Axis& a : *axes) {
-          const std::string prefix = (a.variant ? "--variant " : "--set ") + a.key + "=";
+          const std::string prefix = (a.kind == Kind::variant ? "--variant " : "--set ") + a.key + "=";
           if (d.where.pointer.rfind(prefix, 0) == 0) pointer = pointer_of_value(a, p);
         }
       }

@@ -22,7 +22,9 @@
 // a number, a string or [x, y, z]); a key "PASS" picks a variant (--variant; its value a
 // variant's name). A series' points are the cartesian product of its "vary" lists, in
 // the order written (the last key varies fastest), each with "set"; a series without
-// "vary" is one point. A key is either set or varied, never both.
+// "vary" is one point. A key is either set or varied, never both. The key "frames" (1…1000)
+// sets the point's frame count in place of the spec's (SweepPoint::frames: a temporal
+// technique's accumulation); in a spec no pass can go by that name.
 //
 // Keys and ranges: "config" and "series" are required; "size" [1…16384, 1…16384]
 // (default [160, 90]), "runs" 1…1000 (5), "warmup" 0…100 (1), "frames" 1…1000 (1),
@@ -63,6 +65,7 @@ struct SweepPoint {
   std::vector<std::pair<std::string, std::string>> settings;  // every key (set, then vary) → its compact JSON text
                                                               // (a variant's name quoted: "\"hillaire\""), in order
   Overrides overrides;  // sets and variants as the loader takes them (no size)
+  int frames = 1;       // frames rendered before the image is measured: the point's "frames" setting, else the spec's
 };
 
 struct SweepSpec {

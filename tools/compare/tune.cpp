@@ -37,7 +37,9 @@ Json value_of(const std::string& text) {
   return v.is_discarded() ? Json(text) : v;
 }
 
-bool is_variant_key(const std::string& key) { return key.find('.') == std::string::npos; }
+// The setting of a point's frame count (sweep_spec.h), a flag and no pass's.
+bool is_frames_key(const std::string& key) { return key == "frames"; }
+bool is_variant_key(const std::string& key) { return !is_frames_key(key) && key.find('.') == std::string::npos; }
 
 // `text` as one shell word: as it is when only safe characters, else in single quotes.
 std::string shell_word(const std::string& text) {
@@ -61,7 +63,9 @@ std::vector<std::string> flags_of(const PointResult& r) {
   std::vector<std::string> flags;
   if (!r.graph.empty()) flags.push_back("--graph " + shell_word(r.graph));
   for (const auto& [key, text] : r.settings) {
-    if (is_variant_key(key)) {
+    if (is_frames_key(key)) {
+      flags.push_back("--frames " + shell_word(set_value_text(text)));
+    } else if (is_variant_key(key)) {
       const Json v = value_of(text);
       flags.push_back("--variant " + shell_word(key + "=" + (v.is_string() ? v.get<std::string>() : v.dump())));
     } else {
@@ -151,7 +155,12 @@ std::string tuned_overlay_json(const SweepSpec& spec, const TuneChoice& choice, 
     passes.push_back(Json{{"name", pass}});
     return passes.back();
   };
+  std::string frames_note;
   for (const auto& [key, text] : r.settings) {
+    if (is_frames_key(key)) {
+      frames_note = "; render it with --frames " + set_value_text(text) + " (a config holds no frame count)";
+      continue;
+    }
     if (is_variant_key(key)) {
       entry(key)["variant"] = value_of(text);
       continue;
@@ -165,7 +174,7 @@ std::string tuned_overlay_json(const SweepSpec& spec, const TuneChoice& choice, 
                            ", tuned by volgraph tune: " + metric + " ≤ " + figure(choice.max_error) + ", " +
                            error_text(r, metric) + ", " + time_text(r) + " on " + device_text(r) + " (" +
                            std::to_string(choice.candidates) + " of " + std::to_string(choice.points) +
-                           " points under the budget)";
+                           " points under the budget)" + frames_note;
   overlay["include"] = include.generic_string();
   // One pass a line, the way the shipped configs are written.
   std::string out = "{\n  \"description\": " + overlay["description"].dump() + ",\n  \"include\": " + overlay["include"].dump() +
