@@ -159,7 +159,26 @@ TEST(TuneSummary, APointOfAnotherGraphGivesGraphFlagAndNoOverlay) {
   const std::string text = tuned_summary_text(demo_spec(), choice, "rel_rmse", 0.05);
   EXPECT_EQ(text.rfind("--graph configs/graphs/raymarch_fog.json\n--set fog_march.steps=64\n", 0), 0u) << text;
   EXPECT_NE(text.find("no overlay"), std::string::npos) << text;
-  EXPECT_THROW(tuned_overlay_json(demo_spec(), choice, "."), std::invalid_argument);
+  // Not an overlay: a document with the command, that the loader refuses rather than render the config's own graph.
+  choice.metric = "rel_rmse";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("volgraph_tune_graph_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "tuned.json").string();
+  const std::string doc = tuned_overlay_json(demo_spec(), choice, dir.string());
+  std::ofstream(path) << doc;
+  EXPECT_NE(doc.find("\"render_with\": \"volgraph render " + demo_spec().config +
+                     " --graph configs/graphs/raymarch_fog.json --set fog_march.steps=64\""),
+            std::string::npos)
+      << doc;
+  PassRegistry registry;
+  register_builtin_passes(registry);
+  try {
+    load_config(path, registry);
+    ADD_FAILURE() << "the document for a point of another graph loaded as a config";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("/render_with"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
 }
 
 const PassNode* find_pass(const Config& config, const std::string& name) {

@@ -90,6 +90,24 @@ std::string error_text(const PointResult& r, const std::string& metric) {
 
 std::string device_text(const PointResult& r) { return r.device.empty() ? "an unnamed device" : r.device; }
 
+// A point of another graph: a document that says how to render it and that the loader
+// refuses (its key "render_with" is no config's), so that it never renders the config's
+// own graph in the point's place.
+std::string not_an_overlay_json(const SweepSpec& spec, const TuneChoice& choice) {
+  const PointResult& r = choice.chosen;
+  std::string command = "volgraph render " + shell_word(spec.config);
+  for (const std::string& flag : flags_of(r)) command += " " + flag;
+  Json doc;
+  doc["description"] = "Not a config: point \"" + r.label + "\" (series \"" + r.series + "\", id " + r.id + ") of " + spec.file +
+                       " renders the graph " + r.graph + ", which a config including " + spec.config +
+                       " cannot swap in (a config cannot drop the graph it includes). Render it with the command of "
+                       "\"render_with\"; tuned by volgraph tune: " + choice.metric + " ≤ " + figure(choice.max_error) + ", " +
+                       error_text(r, choice.metric.empty() ? r.metric : choice.metric) + ", " + time_text(r) + " on " +
+                       device_text(r);
+  doc["render_with"] = command;
+  return doc.dump(2) + "\n";
+}
+
 }  // namespace
 
 std::optional<TuneChoice> tune(const std::vector<PointResult>& results, const std::string& metric, double max_error) {
@@ -136,10 +154,7 @@ bool tuned_overlay_possible(const TuneChoice& choice) { return choice.chosen.gra
 
 std::string tuned_overlay_json(const SweepSpec& spec, const TuneChoice& choice, const std::string& overlay_dir) {
   const PointResult& r = choice.chosen;
-  if (!tuned_overlay_possible(choice)) {
-    throw std::invalid_argument("point \"" + r.label + "\" renders the graph " + r.graph +
-                                "; a config cannot drop the graph it includes: use the flags with --graph");
-  }
+  if (!tuned_overlay_possible(choice)) return not_an_overlay_json(spec, choice);
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path config = fs::weakly_canonical(fs::absolute(spec.config), ec);

@@ -37,7 +37,9 @@ bool tuned_overlay_possible(const TuneChoice& choice);
 // The overlay config's JSON: {"description": "… tuned by volgraph tune: METRIC ≤ X, …",
 // "include": spec.config relative to `overlay_dir`, "graph": {"passes": [{"name": P,
 // "variant": V, "params": {…}}, …]}}, one entry a pass in the order the settings first name
-// it. Throws std::invalid_argument when !tuned_overlay_possible(choice).
+// it. When !tuned_overlay_possible(choice): a document that is not a config (the loader
+// refuses its key "render_with", exit 2) holding the command that renders the point,
+// `volgraph render CONFIG --graph FILE --variant … --set …`, and the figures.
 std::string tuned_overlay_json(const SweepSpec& spec, const TuneChoice& choice, const std::string& overlay_dir);
 // For people: the flags, one a line (--graph FILE when the series has one, --variant
 // PASS=NAME, --set PASS.PARAM=VALUE, shell-quoted where needed), then the chosen point's
