@@ -259,6 +259,10 @@ const BrokenSpec kBrokenSpecs[] = {
     // What the config refuses, at the series' key, with the loader's message (once for the two points that make it).
     {"bad_refused_param.json", "/series/0/vary/fog_media.slices/1",
      "the config refuses series \"froxel\"'s point \"fog_media.slices=1000, fog_integral=wronski\": --set fog_media.slices=1000"},
+    // A key the config refuses at every value: one message at the key.
+    {"bad_refused_unknown_param.json", "/series/0/vary/fog_media.slicez",
+     "the config refuses series \"froxel\"'s \"fog_media.slicez\" at the values 16, 32: --set fog_media.slicez=16: pass type "
+     "\"froxel_voxelize\" has no parameter \"slicez\" (did you mean \"slices\"?)"},
     {"bad_refused_range.json", "/series/0/vary/fog_media.slices", "point \"fog_media.slices=1024\": --set fog_media.slices=1024"},
     {"bad_refused_pass.json", "/series/0/set/fog_nothing.slices", "no pass named \"fog_nothing\""},
     {"bad_refused_variant.json", "/series/0/vary/fog_integral/1", "--variant fog_integral=hilaire"},

@@ -568,9 +568,21 @@ class SpecReader {
     return out;
   }
 
+  // What the config refuses at one point, and where in the spec.
+  struct Refusal {
+    const Series* series;
+    std::string key_pointer;    // the series' key that sets it, else the series
+    std::string value_pointer;  // that key's value at the point (its element when listed)
+    std::string value;          // the value's text in the loader's flag ("" when no key is named)
+    std::string label;          // the point's
+    std::string loader;         // the loader's message, with the flag it names
+    std::string cause;          // the same without the flag: what groups refusals
+  };
+
   // Every point loaded once against the config: what the config refuses (no such pass,
   // a parameter out of range, an unknown variant) is reported at the series' key that
-  // sets it when the loader names the flag, else at the series; each refusal once.
+  // sets it when the loader names the flag, else at the series; one refusal is one message,
+  // at the key's value when one value makes it, at the key when several do.
   void check_against_config() {
     try {
       load_config(spec_.config, registry_);
@@ -578,7 +590,7 @@ class SpecReader {
       diags_.error(where("/config"), "the config does not load: " + joined(e.diagnostics()));
       return;
     }
-    std::set<std::pair<std::string, std::string>> reported;  // (pointer, loader's message)
+    std::vector<Refusal> refusals;
     for (size_t i = 0; i < spec_.points.size(); ++i) {
       const SweepPoint& p = spec_.points[i];
       Overrides o = p.overrides;
@@ -586,28 +598,54 @@ class SpecReader {
       try {
         load_config(spec_.config, registry_, o);
       } catch (const ConfigError& e) {
-        for (const Diagnostic& d : e.diagnostics()) report_refusal(*point_series_[i], p, d, reported);
+        for (const Diagnostic& d : e.diagnostics()) refusals.push_back(refusal(*point_series_[i], p, d));
       } catch (const std::exception& e) {
-        report_refusal(*point_series_[i], p, Diagnostic{{spec_.config, "", 0}, e.what()}, reported);
+        refusals.push_back(refusal(*point_series_[i], p, Diagnostic{{spec_.config, "", 0}, e.what()}));
       }
     }
+    report(refusals);
   }
 
-  void report_refusal(const Series& s, const SweepPoint& p, const Diagnostic& d,
-                      std::set<std::pair<std::string, std::string>>& reported) {
-    const bool flag = d.where.file == "<command line>";
-    std::string pointer = s.pointer;
-    if (flag) {
-      for (const auto* axes : {&s.sets, &s.varies}) {
-        for (const Axis& a : *axes) {
-          const std::string prefix = (a.kind == Kind::variant ? "--variant " : "--set ") + a.key + "=";
-          if (d.where.pointer.rfind(prefix, 0) == 0) pointer = pointer_of_value(a, p);
-        }
+  static Refusal refusal(const Series& s, const SweepPoint& p, const Diagnostic& d) {
+    Refusal r{&s, s.pointer, s.pointer, "", p.label, format_diagnostic(d), format_diagnostic(d)};
+    if (d.where.file != "<command line>") return r;
+    r.loader = d.where.pointer + ": " + d.message;
+    r.cause = d.message;
+    for (const auto* axes : {&s.sets, &s.varies}) {
+      for (const Axis& a : *axes) {
+        const std::string prefix = (a.kind == Kind::variant ? "--variant " : "--set ") + a.key + "=";
+        if (d.where.pointer.rfind(prefix, 0) != 0) continue;
+        r.key_pointer = a.pointer;
+        r.value_pointer = pointer_of_value(a, p);
+        r.value = d.where.pointer.substr(prefix.size());
       }
     }
-    const std::string loader = flag ? d.where.pointer + ": " + d.message : format_diagnostic(d);
-    if (!reported.emplace(pointer, loader).second) return;
-    diags_.error(where(pointer), "the config refuses series \"" + s.name + "\"'s point \"" + p.label + "\": " + loader);
+    return r;
+  }
+
+  void report(const std::vector<Refusal>& refusals) {
+    std::vector<bool> done(refusals.size(), false);
+    for (size_t i = 0; i < refusals.size(); ++i) {
+      if (done[i]) continue;
+      const Refusal& first = refusals[i];
+      std::vector<std::string> values;  // the distinct values of the key that make the same refusal
+      for (size_t j = i; j < refusals.size(); ++j) {
+        const Refusal& r = refusals[j];
+        if (r.series != first.series || r.key_pointer != first.key_pointer || r.cause != first.cause) continue;
+        done[j] = true;
+        if (std::find(values.begin(), values.end(), r.value) == values.end()) values.push_back(r.value);
+      }
+      if (values.size() == 1) {
+        diags_.error(where(first.value_pointer), "the config refuses series \"" + first.series->name + "\"'s point \"" +
+                                                     first.label + "\": " + first.loader);
+        continue;
+      }
+      std::string list;
+      for (const std::string& v : values) list += (list.empty() ? "" : ", ") + v;
+      const std::string key = first.key_pointer.substr(first.key_pointer.rfind('/') + 1);
+      diags_.error(where(first.key_pointer), "the config refuses series \"" + first.series->name + "\"'s \"" + key +
+                                                 "\" at the values " + list + ": " + first.loader);
+    }
   }
 
   // The pointer of the value `a` takes at point `p`: its element when the values are listed.
