@@ -254,6 +254,10 @@ const BrokenSpec kBrokenSpecs[] = {
     {"bad_too_many_points.json", "/series/0", "series \"a\" expands to 200 × 100 points, more than 10000"},
     {"bad_frames_value.json", "/series/0/vary/frames/1", "expected an integer in [1, 1000], got 0"},
     {"bad_frames_range.json", "/series/0/vary/frames", "expected a range of frame counts, integers in [1, 1000]"},
+    // 40.0 is 40 and the order of the keys does not matter: slices 32 is rendered by both series.
+    {"bad_repeated_point.json", "/series/1",
+     "series \"fine\"'s point \"fog_media.far=40.0, fog_media.slices=32, fog_integral=wronski\" renders what series \"coarse\"'s "
+     "point \"fog_media.slices=32\" does"},
     {"bad_json.json", "", "invalid JSON"},
     {"bad_duplicate_key.json", "/runs", "duplicate key \"runs\" (first at line 3)"},
     // What the config refuses, at the series' key, with the loader's message (once for the two points that make it).

@@ -553,8 +553,44 @@ class SpecReader {
                                          "\"'s point \"" + first.label + "\"; expected every point of a spec distinct");
       return;
     }
+    const auto [same, new_render] = renders_.emplace(render_key(s, p), spec_.points.size());
+    if (!new_render) {
+      const SweepPoint& first = spec_.points[same->second];
+      if (repeats_reported_.emplace(s.name, first.series).second) {
+        diags_.error(where(s.pointer), "series \"" + s.name + "\"'s point \"" + p.label + "\" renders what series \"" +
+                                           first.series + "\"'s point \"" + first.label +
+                                           "\" does (the same graph, settings and frames); expected every point of a spec distinct");
+      }
+      return;
+    }
     point_series_.push_back(&s);
     spec_.points.push_back(std::move(p));
+  }
+
+  // What a point renders, whatever its series and the order of its settings: the graph
+  // file, the frames and the settings sorted by key, numbers that are whole written as integers.
+  std::string render_key(const Series& s, const SweepPoint& p) const {
+    std::error_code ec;
+    std::string graph = s.graph.empty() ? "" : std::filesystem::weakly_canonical(s.graph, ec).string();
+    if (ec) graph = s.graph;
+    std::vector<std::pair<std::string, std::string>> settings;
+    for (const auto& [key, text] : p.settings) {
+      if (key != kFramesKey) settings.emplace_back(key, whole_numbers_as_integers(Json::parse(text)).dump());
+    }
+    std::sort(settings.begin(), settings.end());
+    std::string out = graph + "\nframes=" + std::to_string(p.frames) + "\n";
+    for (const auto& [key, text] : settings) out += key + "=" + text + "\n";
+    return out;
+  }
+
+  static Json whole_numbers_as_integers(Json v) {
+    if (v.is_number_float() && std::floor(v.get<double>()) == v.get<double>() && std::abs(v.get<double>()) < kLargestExactInteger) {
+      return Json(int64_t(v.get<double>()));
+    }
+    if (v.is_array()) {
+      for (Json& e : v) e = whole_numbers_as_integers(e);
+    }
+    return v;
   }
 
   Where where(const std::string& pointer) const {
@@ -665,6 +701,8 @@ class SpecReader {
   std::vector<Series> series_;
   std::vector<const Series*> point_series_;  // per point
   std::map<std::string, size_t> ids_;        // id → point index
+  std::map<std::string, size_t> renders_;    // render_key → point index
+  std::set<std::pair<std::string, std::string>> repeats_reported_;  // (series, series it repeats)
 };
 
 }  // namespace
