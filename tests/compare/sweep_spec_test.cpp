@@ -233,6 +233,7 @@ const BrokenSpec kBrokenSpecs[] = {
     {"bad_metric.json", "/metric", "unknown metric \"rmes\" (did you mean \"rmse\"?); expected one of rmse, rel_rmse"},
     {"bad_mask.json", "/mask", "unknown mask \"fog\"; expected one of all, fog_only, surfaces"},
     {"bad_config_missing.json", "/config", "file not found: \"no_such_config.json\""},
+    {"bad_config_broken.json", "/config", "the config does not load: " },
     {"bad_no_config.json", "/", "missing \"config\""},
     {"bad_no_series.json", "/", "missing \"series\""},
     {"bad_series_empty.json", "/series", "expected a non-empty array of series"},
