@@ -32,17 +32,19 @@
 // the spec's folder), "metric" one of metric_names() (rel_rmse), "mask" all | fog_only |
 // surfaces (all). Series: "name" (required, unique), "graph" (an existing file), "set"
 // and "vary" objects. A "vary" value is a non-empty array of distinct values, or a range
-// of a parameter:
+// of a parameter (or of "frames", integers):
 //   {"from": a, "to": b, "times": t}   a, a·t, a·t², … ≤ b   (a > 0, t > 1)
 //   {"from": a, "to": b, "step": s}    a, a + s, a + 2s, … ≤ b (s > 0; b included when
 //                                      (b − a)/s is within 1e-9 of a whole number)
 // A range of integers (a and t, or a and s, written as integers) gives integers; other
 // ranges give their values rounded to 12 significant digits (0.1 + 2 × 0.1 is 0.3).
 // A spec expands to at most kMaxSweepPoints points (a range to at most as many values).
+// No two points of a spec render the same (graph, frames and settings in any order alike).
 //
 // Every problem is one diagnostic (file, JSON pointer, line, expectation), all thrown
-// together as a ConfigError; a point the config refuses is reported at the series' key
-// that sets it (the loader names the flag) or else at the series, with the loader's message.
+// together as a ConfigError. A point the config refuses is reported with the loader's
+// message at the series' key that sets it (the loader names the flag: at the listed
+// value that makes it, at the key when several values do) or else at the series.
 #pragma once
 
 #include <string>
