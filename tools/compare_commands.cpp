@@ -313,7 +313,7 @@ class SweepRunner {
     o.size = spec_.size;
     o.graph = point.graph;
     const LoadedConfig loaded = load_linear(spec_.config, registry_, o);
-    const SettingRun run = run_settings(session_.device(), {&loaded}, {spec_.frames, spec_.warmup, spec_.runs, args_.compile}).front();
+    const SettingRun run = run_settings(session_.device(), {&loaded}, {point.frames, spec_.warmup, spec_.runs, args_.compile}).front();
     if (const std::vector<std::string> messages = session_.take_validation_messages(); !messages.empty()) {
       throw std::runtime_error("validation: " + messages.front());
     }
@@ -475,9 +475,9 @@ int run_tune(const Args& args, const PassRegistry& registry) {
     return kFailure;
   }
   const std::string summary = tuned_summary_text(spec, *choice, metric, *c.max_error);
-  const std::string overlay = tuned_overlay_json(spec, *choice, fs::absolute(args.output).string());
   OutputFiles out;
-  out.stage((fs::path(args.output) / "tuned.json").string(), "-o", std::as_bytes(std::span(overlay)));
+  const std::string overlay = tuned_overlay_json(spec, *choice, fs::absolute(args.output).string());
+  if (tuned_overlay_possible(*choice)) out.stage((fs::path(args.output) / "tuned.json").string(), "-o", std::as_bytes(std::span(overlay)));
   out.stage((fs::path(args.output) / "tuned.txt").string(), "-o", std::as_bytes(std::span(summary)));
   out.commit();
   std::cout << summary;
