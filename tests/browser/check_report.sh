@@ -3,7 +3,9 @@
 # the page logs "report ready" and nothing else on the console (no error, no blocked
 # fetch, no uncaught exception); the viewer shows a.png left of the split and b.png
 # right of it (#split=0.5, the default), only b.png after #show=b (the B toggle's click
-# handler), a.png on the left quarter after #split=0.25 (the slider's input handler);
+# handler), a.png on the left quarter after #split=0.25 (the slider's input handler),
+# reference.png (b.png without one) | a.png magnified 4 times after
+# #left=reference&right=a&zoom=4 (the selects' change and the zoom buttons' handlers);
 # the metrics table is not blank. The page logs the boxes of the viewer and the table
 # ("report ready viewer=x,y,w,h metrics=x,y,w,h"), so this works on any report.
 #
@@ -66,4 +68,10 @@ fi
 shoot split_quarter "split=0.25"
 "$pixels" match "$work/split_quarter.png" "$viewer" "$dir/a.png" "$dir/b.png" 0.25 || fail "#split=0.25: not A | B split at 0.25"
 
-echo "check_report: $dir/report.html: console clean; viewer $viewer shows A|B, B alone, A|B at 0.25; metrics table $metrics not blank"
+other=b
+[ -f "$dir/reference.png" ] && other=reference
+shoot zoomed "left=$other&right=a&zoom=4"
+"$pixels" match "$work/zoomed.png" "$viewer" "$dir/$other.png" "$dir/a.png" 0.5 4 ||
+  fail "#left=$other&right=a&zoom=4: not $other | A magnified 4 times about the centre"
+
+echo "check_report: $dir/report.html: console clean; viewer $viewer shows A|B, B alone, A|B at 0.25, $other|A at zoom 4; metrics table $metrics not blank"

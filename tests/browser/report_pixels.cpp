@@ -1,5 +1,5 @@
 // Pixel checks on screenshots of report.html (check_report.sh): that a box of the page
-// shows given images split at a given place, that a box is not blank, and that two
+// shows given images split at a given place (and magnified about its centre), that a box is not blank, and that two
 // screenshots differ in a box. Boxes are "x,y,w,h" in screenshot pixels, as the page
 // logs them. Exit 0 when the check holds, 1 with a message when it does not, 2 on bad
 // arguments or unreadable files.
@@ -54,6 +54,16 @@ std::optional<Box> parse_box(const std::string& text, const Picture& shot) {
   return box;
 }
 
+std::optional<double> parse_number(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0') {
+    std::fprintf(stderr, "report_pixels: \"%s\" is not a number\n", text.c_str());
+    return std::nullopt;
+  }
+  return value;
+}
+
 bool close(const unsigned char* a, const unsigned char* b, int tolerance) {
   for (int c = 0; c < 3; ++c) {
     if (std::abs(int(a[c]) - int(b[c])) > tolerance) return false;
@@ -61,12 +71,27 @@ bool close(const unsigned char* a, const unsigned char* b, int tolerance) {
   return true;
 }
 
+// Whether the screenshot pixel shows source pixel (x, y), or, where the page shrinks the
+// image (nearest-neighbour sampling may round either way), one of its neighbours.
+bool shows(const unsigned char* got, const Picture& source, int x, int y, bool shrunk) {
+  constexpr int kTolerance = 8;
+  const int reach = shrunk ? 1 : 0;
+  for (int dy = -reach; dy <= reach; ++dy) {
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const int sx = std::clamp(x + dx, 0, source.width - 1), sy = std::clamp(y + dy, 0, source.height - 1);
+      if (close(got, source.at(sx, sy), kTolerance)) return true;
+    }
+  }
+  return false;
+}
+
 // Samples a grid of screenshot pixels in the box: each should show the pixel of the
 // left image (left of the split) or the right one that it covers when the image is
-// stretched over the box. Pixels next to an image pixel's edge or the split line are
-// skipped (rounding of the scaling); 95 % of the rest must match within 8/255.
-int check_match(const Picture& shot, const Box& box, const Picture& left, const Picture& right, double split) {
-  constexpr int kGrid = 48, kTolerance = 8;
+// stretched over the box and magnified `zoom` times about the box's centre. Pixels
+// next to an image pixel's edge or the split line are skipped (rounding of the
+// scaling); 95 % of the rest must match within 8/255.
+int check_match(const Picture& shot, const Box& box, const Picture& left, const Picture& right, double split, double zoom) {
+  constexpr int kGrid = 48;
   constexpr double kMatchedShare = 0.95;
   int sampled = 0, matched = 0;
   std::string first_miss;
@@ -76,16 +101,17 @@ int check_match(const Picture& shot, const Box& box, const Picture& left, const 
       const double u = (sx + 0.5 - box.x) / box.w, v = (sy + 0.5 - box.y) / box.h;
       if (std::abs(u - split) * box.w < 3) continue;
       const Picture& source = u < split ? left : right;
-      const double fx = u * source.width, fy = v * source.height;
-      const double edge_x = std::abs(fx - std::round(fx)) * box.w / source.width;
-      const double edge_y = std::abs(fy - std::round(fy)) * box.h / source.height;
-      if (box.w >= source.width && (edge_x < 1.5 || edge_y < 1.5)) continue;
-      const unsigned char* expected = source.at(std::min(source.width - 1, int(fx)), std::min(source.height - 1, int(fy)));
+      const double fx = (0.5 + (u - 0.5) / zoom) * source.width, fy = (0.5 + (v - 0.5) / zoom) * source.height;
+      const double pixel_w = zoom * box.w / source.width, pixel_h = zoom * box.h / source.height;  // screen pixels an image pixel
+      const bool shrunk = pixel_w < 1 || pixel_h < 1;
+      if (!shrunk && (std::abs(fx - std::round(fx)) * pixel_w < 1.5 || std::abs(fy - std::round(fy)) * pixel_h < 1.5)) continue;
+      const int ix = std::min(source.width - 1, int(fx)), iy = std::min(source.height - 1, int(fy));
       ++sampled;
-      if (close(shot.at(sx, sy), expected, kTolerance)) {
+      const unsigned char* got = shot.at(sx, sy);
+      if (shows(got, source, ix, iy, shrunk)) {
         ++matched;
       } else if (first_miss.empty()) {
-        const unsigned char* got = shot.at(sx, sy);
+        const unsigned char* expected = source.at(ix, iy);
         char text[160];
         std::snprintf(text, sizeof text, "at (%d,%d) the page shows %d,%d,%d, the %s image %d,%d,%d", sx, sy, got[0], got[1],
                       got[2], u < split ? "left" : "right", expected[0], expected[1], expected[2]);
@@ -133,7 +159,7 @@ int check_differ(const Picture& a, const Picture& b, const Box& box) {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: report_pixels match SHOT.png BOX LEFT.png RIGHT.png SPLIT\n"
+               "usage: report_pixels match SHOT.png BOX LEFT.png RIGHT.png SPLIT [ZOOM]\n"
                "       report_pixels not-blank SHOT.png BOX\n"
                "       report_pixels differ SHOT.png OTHER.png BOX\n");
   return 2;
@@ -143,13 +169,12 @@ int run(const std::vector<std::string>& args) {
   if (args.size() < 3) return usage();
   const auto shot = load(args[1]);
   if (!shot) return 2;
-  if (args[0] == "match" && args.size() == 6) {
+  if (args[0] == "match" && (args.size() == 6 || args.size() == 7)) {
     const auto box = parse_box(args[2], *shot);
     const auto left = load(args[3]), right = load(args[4]);
-    char* end = nullptr;
-    const double split = std::strtod(args[5].c_str(), &end);
-    if (!box || !left || !right || *end != '\0' || !(split >= 0 && split <= 1)) return 2;
-    return check_match(*shot, *box, *left, *right, split);
+    const auto split = parse_number(args[5]), zoom = parse_number(args.size() == 7 ? args[6] : "1");
+    if (!box || !left || !right || !split || !(*split >= 0 && *split <= 1) || !zoom || !(*zoom >= 1)) return 2;
+    return check_match(*shot, *box, *left, *right, *split, *zoom);
   }
   if (args[0] == "not-blank" && args.size() == 3) {
     const auto box = parse_box(args[2], *shot);

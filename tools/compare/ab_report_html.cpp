@@ -342,8 +342,8 @@ std::string header_html(const AbReport& report) {
   out << fact("device", escape(report.device) + (report.device_is_cpu ? " (CPU)" : ""));
   out << fact("backend", escape(report.backend));
   out << fact("driver", escape(report.driver));
-  out << fact("image", std::to_string(report.width) + " × " + std::to_string(report.height) + ", frame " +
-                           std::to_string(report.frames) + " of the run");
+  out << fact("image", std::to_string(report.width) + " × " + std::to_string(report.height));
+  out << fact("frames", std::to_string(report.frames) + " rendered before the compared image");
   out << fact("volgraph", escape(report.volgraph_version));
   out << fact("command", "<code>" + escape(report.command_line) + "</code>");
   out << "</dl>\n</header>\n";
