@@ -88,8 +88,9 @@ bool shows(const unsigned char* got, const Picture& source, int x, int y, bool s
 // Samples a grid of screenshot pixels in the box: each should show the pixel of the
 // left image (left of the split) or the right one that it covers when the image is
 // stretched over the box and magnified `zoom` times about the box's centre. Pixels
-// next to an image pixel's edge or the split line are skipped (rounding of the
-// scaling); 95 % of the rest must match within 8/255.
+// next to an image pixel's edge (closer than 1.5 screen pixels or a quarter of an image
+// pixel) or the split line are skipped (rounding of the scaling); 95 % of the rest
+// must match within 8/255.
 int check_match(const Picture& shot, const Box& box, const Picture& left, const Picture& right, double split, double zoom) {
   constexpr int kGrid = 48;
   constexpr double kMatchedShare = 0.95;
@@ -104,7 +105,10 @@ int check_match(const Picture& shot, const Box& box, const Picture& left, const 
       const double fx = (0.5 + (u - 0.5) / zoom) * source.width, fy = (0.5 + (v - 0.5) / zoom) * source.height;
       const double pixel_w = zoom * box.w / source.width, pixel_h = zoom * box.h / source.height;  // screen pixels an image pixel
       const bool shrunk = pixel_w < 1 || pixel_h < 1;
-      if (!shrunk && (std::abs(fx - std::round(fx)) * pixel_w < 1.5 || std::abs(fy - std::round(fy)) * pixel_h < 1.5)) continue;
+      const double margin_x = std::min(1.5, 0.25 * pixel_w), margin_y = std::min(1.5, 0.25 * pixel_h);
+      if (!shrunk && (std::abs(fx - std::round(fx)) * pixel_w < margin_x || std::abs(fy - std::round(fy)) * pixel_h < margin_y)) {
+        continue;
+      }
       const int ix = std::min(source.width - 1, int(fx)), iy = std::min(source.height - 1, int(fy));
       ++sampled;
       const unsigned char* got = shot.at(sx, sy);
