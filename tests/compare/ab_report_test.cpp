@@ -187,6 +187,8 @@ TEST(AbReportHtml, ShowsTheCpuNoteAndTheTables) {
   EXPECT_NE(html.find("<td>∞</td>"), std::string::npos) << "B's PSNR";
   EXPECT_NE(html.find("12.500 <small>[12.000–13.750]</small>"), std::string::npos) << "A's frame time";
   EXPECT_NE(html.find("1.00 MiB"), std::string::npos) << "A's aliased memory";
+  EXPECT_NE(html.find("4.00 KiB"), std::string::npos) << "A's persistent memory";
+  EXPECT_NE(html.find(">3 B<"), std::string::npos) << "B's aliased memory";
   EXPECT_NE(html.find("report ready"), std::string::npos);
 
   AbReport gpu = sample_report();
@@ -293,12 +295,28 @@ TEST(Heatmap, MapsTheRangeAndAddsTheBar) {
   EXPECT_EQ(map.rgba[4], top);     // 2 → the top
   EXPECT_EQ(map.rgba[12], middle);
   EXPECT_EQ(std::vector<int>(map.rgba.begin() + 8, map.rgba.begin() + 11), (std::vector<int>{0, 255, 255}));
-  const Rgba8Image with_bar = with_colour_bar(map, ColourMap::viridis);
+  const Rgba8Image with_bar = with_colour_bar(map, ColourMap::viridis, range);  // too small for labels
   EXPECT_EQ(with_bar.height, 2u);
   EXPECT_EQ(with_bar.width, 2u + 4u + 6u);
   const size_t top_right = 4 * (with_bar.width - 1), bottom_right = 4 * (2 * with_bar.width - 1);
   EXPECT_EQ(with_bar.rgba[top_right], top) << "the bar's top is the range's max";
   EXPECT_EQ(with_bar.rgba[bottom_right], bottom);
+}
+
+TEST(Heatmap, LabelsTheBarsEndsWhenTallEnough) {
+  const Rgba8Image map = heatmap_image(std::vector<float>(64 * 36, 0.5f), 64, 36, ColourMap::magma, kFlipRange);
+  const Rgba8Image with_bar = with_colour_bar(map, ColourMap::magma, kFlipRange);
+  EXPECT_GT(with_bar.width, 64u + 4u + 6u) << "a column for the labels";
+  const uint32_t labels_x = 64 + 4 + 6 + 4;
+  size_t lit_top = 0, lit_bottom = 0;
+  for (uint32_t y = 0; y < 36; ++y) {
+    for (uint32_t x = labels_x; x < with_bar.width; ++x) {
+      const bool lit = with_bar.rgba[4 * (size_t(y) * with_bar.width + x)] > 128;
+      (y < 18 ? lit_top : lit_bottom) += lit ? 1 : 0;
+    }
+  }
+  EXPECT_GT(lit_top, 5u) << "\"1\" at the top";
+  EXPECT_GT(lit_bottom, 5u) << "\"0\" at the bottom";
 }
 
 }  // namespace

@@ -28,11 +28,11 @@ void add_heatmaps(Files& files, const Comparison& comparison, uint32_t width, ui
   if (!comparison.abs_error_map.empty()) {
     const Rgba8Image map = heatmap_image(comparison.abs_error_map, width, height, ColourMap::viridis,
                                          abs_error_range(comparison.abs_error_map));
-    files.emplace_back("error_" + pair + ".png", png_of(with_colour_bar(map, ColourMap::viridis)));
+    files.emplace_back("error_" + pair + ".png", png_of(with_colour_bar(map, ColourMap::viridis, abs_error_range(comparison.abs_error_map))));
   }
   if (!comparison.flip_map.empty()) {
     const Rgba8Image map = heatmap_image(comparison.flip_map, width, height, ColourMap::magma, kFlipRange);
-    files.emplace_back("flip_" + pair + ".png", png_of(with_colour_bar(map, ColourMap::magma)));
+    files.emplace_back("flip_" + pair + ".png", png_of(with_colour_bar(map, ColourMap::magma, kFlipRange)));
   }
 }
 

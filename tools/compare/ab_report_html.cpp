@@ -63,8 +63,17 @@ std::string number(double value) {
   return format("%.4g", value);
 }
 
-std::string mebibytes(uint64_t bytes) {
-  return "<span title=\"" + std::to_string(bytes) + " bytes\">" + format("%.2f", double(bytes) / (1024.0 * 1024.0)) + " MiB</span>";
+// Binary units (IEC 80000-13), the exact count in the tooltip.
+std::string bytes_text(uint64_t bytes) {
+  static constexpr const char* kUnits[] = {"KiB", "MiB", "GiB", "TiB"};
+  std::string shown = std::to_string(bytes) + " B";
+  double value = double(bytes);
+  for (const char* unit : kUnits) {
+    if (value < 1024.0) break;
+    value /= 1024.0;
+    shown = format("%.2f", value) + " " + unit;
+  }
+  return "<span title=\"" + std::to_string(bytes) + " bytes\">" + shown + "</span>";
 }
 
 std::string spread_text(const Spread& spread) {
@@ -541,10 +550,10 @@ std::string memory_html(const AbReport& report) {
     for (const Rendered* render : planned) out << "<td>" << value_of(*render->memory) << "</td>";
     out << "</tr>\n";
   };
-  row("transient, aliased", [](const MemorySummary& m) { return mebibytes(m.aliased_bytes); });
-  row("transient, unaliased", [](const MemorySummary& m) { return mebibytes(m.unaliased_bytes); });
-  row("lower bound", [](const MemorySummary& m) { return mebibytes(m.lower_bound_bytes); });
-  row("persistent", [](const MemorySummary& m) { return mebibytes(m.persistent_bytes); });
+  row("transient, aliased", [](const MemorySummary& m) { return bytes_text(m.aliased_bytes); });
+  row("transient, unaliased", [](const MemorySummary& m) { return bytes_text(m.unaliased_bytes); });
+  row("lower bound", [](const MemorySummary& m) { return bytes_text(m.lower_bound_bytes); });
+  row("persistent", [](const MemorySummary& m) { return bytes_text(m.persistent_bytes); });
   row("passes run", [](const MemorySummary& m) { return std::to_string(m.passes_run); });
   row("passes culled", [](const MemorySummary& m) { return std::to_string(m.passes_culled); });
   out << "</table>\n</section>\n";

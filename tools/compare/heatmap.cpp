@@ -3,6 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#include <stb/stb_easy_font.h>
+#pragma GCC diagnostic pop
 
 namespace volgraph::compare {
 namespace {
@@ -35,8 +41,38 @@ void put(uint8_t* texel, const std::array<double, 3>& colour) {
   texel[3] = 255;
 }
 
-constexpr uint8_t kGapColour = 32;
+constexpr uint8_t kGapColour = 32, kTextColour = 230;
 constexpr uint32_t kGapWidth = 4;
+constexpr uint32_t kLabelledHeight = 20;  // room for the two labels
+constexpr int kTextHeight = 7;            // stb_easy_font's capitals and digits
+
+std::string label_of(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+int text_width(std::string text) { return stb_easy_font_width(text.data()); }
+
+// Text in stb_easy_font's segments (its quads are axis-aligned rectangles), top left at (x, y).
+void draw_text(Rgba8Image& image, int x, int y, std::string text) {
+  struct Vertex {
+    float x, y, z;
+    unsigned char colour[4];
+  };
+  std::vector<Vertex> quads(4 * 64 * text.size() + 4);
+  unsigned char colour[4] = {kTextColour, kTextColour, kTextColour, 255};
+  const int count = stb_easy_font_print(float(x), float(y), text.data(), colour, quads.data(), int(quads.size() * sizeof(Vertex)));
+  for (int q = 0; q < count; ++q) {
+    const Vertex* corner = &quads[4 * size_t(q)];
+    const int x0 = std::max(0, int(std::lround(corner[0].x))), y0 = std::max(0, int(std::lround(corner[0].y)));
+    const int x1 = std::min(int(image.width), int(std::lround(corner[2].x)));
+    const int y1 = std::min(int(image.height), int(std::lround(corner[2].y)));
+    for (int py = y0; py < y1; ++py) {
+      for (int px = x0; px < x1; ++px) std::fill_n(&image.rgba[4 * (size_t(py) * image.width + px)], 3, kTextColour);
+    }
+  }
+}
 
 }  // namespace
 
@@ -86,10 +122,13 @@ Rgba8Image colour_bar(ColourMap map, uint32_t width, uint32_t height) {
   return out;
 }
 
-Rgba8Image with_colour_bar(const Rgba8Image& heatmap, ColourMap map) {
+Rgba8Image with_colour_bar(const Rgba8Image& heatmap, ColourMap map, HeatmapRange range) {
   const uint32_t bar_width = std::max<uint32_t>(6, heatmap.width / 16);
   const Rgba8Image bar = colour_bar(map, bar_width, heatmap.height);
-  const uint32_t width = heatmap.width + kGapWidth + bar_width;
+  const std::string top = label_of(range.max), bottom = label_of(range.min);
+  const bool labelled = heatmap.height >= kLabelledHeight;
+  const uint32_t label_width = labelled ? kGapWidth + uint32_t(std::max(text_width(top), text_width(bottom))) + 1 : 0;
+  const uint32_t width = heatmap.width + kGapWidth + bar_width + label_width;
   Rgba8Image out{width, heatmap.height, std::vector<uint8_t>(size_t(width) * heatmap.height * 4, kGapColour)};
   for (uint32_t y = 0; y < heatmap.height; ++y) {
     uint8_t* row = &out.rgba[4 * size_t(y) * width];
@@ -97,6 +136,10 @@ Rgba8Image with_colour_bar(const Rgba8Image& heatmap, ColourMap map) {
     std::copy_n(&heatmap.rgba[4 * size_t(y) * heatmap.width], 4 * heatmap.width, row);
     std::copy_n(&bar.rgba[4 * size_t(y) * bar_width], 4 * bar_width, row + 4 * (heatmap.width + kGapWidth));
   }
+  if (!labelled) return out;
+  const int text_x = int(heatmap.width + 2 * kGapWidth + bar_width);
+  draw_text(out, text_x, 1, top);
+  draw_text(out, text_x, int(heatmap.height) - kTextHeight - 1, bottom);
   return out;
 }
 

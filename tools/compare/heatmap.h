@@ -34,8 +34,10 @@ Rgba8Image heatmap_image(const std::vector<float>& values, uint32_t width, uint3
 // A vertical colour bar: the map's top colour (range max) at the top row.
 Rgba8Image colour_bar(ColourMap map, uint32_t width, uint32_t height);
 
-// `heatmap` with a colour bar strip beside it on its right, a dark gap between.
-Rgba8Image with_colour_bar(const Rgba8Image& heatmap, ColourMap map);
+// `heatmap` with a colour bar strip beside it on its right, a dark gap between, and the
+// range's max and min written beside the bar's top and bottom (when the map is at least
+// 20 pixels tall).
+Rgba8Image with_colour_bar(const Rgba8Image& heatmap, ColourMap map, HeatmapRange range);
 
 // A CSS linear-gradient (bottom to top) of the map, for the report page's colour bars.
 std::string css_gradient(ColourMap map);
