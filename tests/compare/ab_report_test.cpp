@@ -4,6 +4,7 @@
 // known colours.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -94,6 +95,7 @@ TEST(AbReportJson, ParsesAndHoldsEveryFigure) {
   EXPECT_EQ(json["width"], 4);
   EXPECT_EQ(json["height"], 2);
   EXPECT_EQ(json["frames"], 3);
+  EXPECT_DOUBLE_EQ(json["display_exposure"].get<double>(), kDisplayKeyValue / (0.7152 * 0.5)) << "from the reference";
   ASSERT_EQ(json["renders"].size(), 3u);
   const Json& a = json["renders"][0];
   EXPECT_EQ(a["label"], "A");
@@ -242,6 +244,17 @@ TEST(AbReportFiles, WithoutAReferenceThereIsNoReferenceImage) {
   std::vector<std::string> names;
   for (const auto& file : ab_report_files(report)) names.push_back(file.first);
   EXPECT_EQ(names, (std::vector<std::string>{"report.json", "report.html", "a.png", "a.pfm", "b.png", "b.pfm", "error_b_vs_a.png"}));
+}
+
+TEST(AbReportFiles, LeavesOutAMapOfTheWrongSize) {
+  AbReport report = sample_report();
+  report.comparisons[0].flip_map.pop_back();
+  std::vector<std::string> names;
+  for (const auto& file : ab_report_files(report)) names.push_back(file.first);
+  EXPECT_EQ(std::count(names.begin(), names.end(), "flip_a_vs_reference.png"), 0);
+  EXPECT_EQ(std::count(names.begin(), names.end(), "error_a_vs_reference.png"), 1);
+  EXPECT_FALSE(Json::parse(ab_report_json(report))["comparisons"][0]["heatmaps"].contains("flip"));
+  EXPECT_EQ(ab_report_html(report).find("data-layer=\"flip-a-vs-reference\""), std::string::npos);
 }
 
 TEST(DisplayImage, ThePercentileLuminanceMapsToTheKeyValue) {

@@ -80,6 +80,11 @@ std::string ab_report_html(const AbReport& report);
 // reference when there is one, else from the first render.
 double report_display_exposure(const AbReport& report);
 
+// Whether a comparison's map (abs_error_map, flip_map) is drawn: one value a pixel of the
+// report's images (the first render's size, else width × height). The JSON, the page
+// and the files leave out a map that is not.
+bool heatmap_fits(const std::vector<float>& map, const AbReport& report);
+
 // A label as a file name stem ("A" → "a", "reference" → "reference"): lower case,
 // characters other than letters and digits → '_'.
 std::string report_file_stem(const std::string& label);

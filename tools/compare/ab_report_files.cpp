@@ -23,14 +23,20 @@ std::vector<std::byte> pfm_of(const RgbImage& image) {
   return encode_image(Image{image.width, image.height, rgba_from_rgb(image)}, ImageFormat::pfm);
 }
 
-void add_heatmaps(Files& files, const Comparison& comparison, uint32_t width, uint32_t height) {
+std::pair<uint32_t, uint32_t> image_size(const AbReport& report) {
+  if (report.renders.empty()) return {report.width, report.height};
+  return {report.renders.front().image.width, report.renders.front().image.height};
+}
+
+void add_heatmaps(Files& files, const Comparison& comparison, const AbReport& report) {
+  const auto [width, height] = image_size(report);
   const std::string pair = report_file_stem(comparison.test) + "_vs_" + report_file_stem(comparison.against);
-  if (!comparison.abs_error_map.empty()) {
+  if (heatmap_fits(comparison.abs_error_map, report)) {
     const Rgba8Image map = heatmap_image(comparison.abs_error_map, width, height, ColourMap::viridis,
                                          abs_error_range(comparison.abs_error_map));
     files.emplace_back("error_" + pair + ".png", png_of(with_colour_bar(map, ColourMap::viridis, abs_error_range(comparison.abs_error_map))));
   }
-  if (!comparison.flip_map.empty()) {
+  if (heatmap_fits(comparison.flip_map, report)) {
     const Rgba8Image map = heatmap_image(comparison.flip_map, width, height, ColourMap::magma, kFlipRange);
     files.emplace_back("flip_" + pair + ".png", png_of(with_colour_bar(map, ColourMap::magma, kFlipRange)));
   }
@@ -45,6 +51,11 @@ const Rendered* render_named(const AbReport& report, const std::string& label) {
 }
 
 }  // namespace
+
+bool heatmap_fits(const std::vector<float>& map, const AbReport& report) {
+  const auto [width, height] = image_size(report);
+  return !map.empty() && map.size() == size_t(width) * height;
+}
 
 std::string report_file_stem(const std::string& label) {
   std::string out;
@@ -68,11 +79,7 @@ std::vector<std::pair<std::string, std::vector<std::byte>>> ab_report_files(cons
     files.emplace_back(stem + ".png", png_of(display_image(render.image, exposure)));
     files.emplace_back(stem + ".pfm", pfm_of(render.image));
   }
-  for (const Comparison& comparison : report.comparisons) {
-    const Rendered* test = render_named(report, comparison.test);
-    const uint32_t width = test ? test->image.width : report.width, height = test ? test->image.height : report.height;
-    add_heatmaps(files, comparison, width, height);
-  }
+  for (const Comparison& comparison : report.comparisons) add_heatmaps(files, comparison, report);
   return files;
 }
 

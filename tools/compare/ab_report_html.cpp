@@ -122,21 +122,20 @@ Page page_of(const AbReport& report) {
   for (const Rendered& render : report.renders) {
     page.renders.push_back({layer_key(report_file_stem(render.label)), render.label,
                             png_data_uri(display_image(render.image, exposure))});
-    if (page.width == 0) page.width = render.image.width, page.height = render.image.height;
   }
-  if (page.width == 0) page.width = report.width, page.height = report.height;
+  page.width = report.renders.empty() ? report.width : report.renders.front().image.width;  // heatmap_fits' size
+  page.height = report.renders.empty() ? report.height : report.renders.front().image.height;
   for (const Comparison& comparison : report.comparisons) {
     const std::string pair = report_file_stem(comparison.test) + "_vs_" + report_file_stem(comparison.against);
     const std::string names = comparison.test + " vs " + comparison.against;
     std::vector<Heatmap> maps;
-    const size_t pixels = size_t(page.width) * page.height;
-    if (comparison.abs_error_map.size() == pixels && pixels > 0) {
+    if (heatmap_fits(comparison.abs_error_map, report)) {
       const HeatmapRange range = abs_error_range(comparison.abs_error_map);
       maps.push_back({{layer_key("error_" + pair), "|" + names + "|",
                        png_data_uri(heatmap_image(comparison.abs_error_map, page.width, page.height, ColourMap::viridis, range))},
                       ColourMap::viridis, range, "largest absolute channel error (linear radiance), viridis"});
     }
-    if (comparison.flip_map.size() == pixels && pixels > 0) {
+    if (heatmap_fits(comparison.flip_map, report)) {
       maps.push_back({{layer_key("flip_" + pair), "FLIP " + names,
                        png_data_uri(heatmap_image(comparison.flip_map, page.width, page.height, ColourMap::magma, kFlipRange))},
                       ColourMap::magma, kFlipRange, "HDR-FLIP error (Andersson et al. 2021), magma"});

@@ -62,7 +62,7 @@ Json metrics_json(const ErrorMetrics& m) {
           {"max_abs_error", number(m.max_abs_error)}, {"relative_mean_error", number(m.relative_mean_error)}};
 }
 
-Json comparison_json(const Comparison& comparison) {
+Json comparison_json(const Comparison& comparison, const AbReport& report) {
   const std::string pair = report_file_stem(comparison.test) + "_vs_" + report_file_stem(comparison.against);
   Json masks = Json::array();
   for (const MaskedMetrics& masked : comparison.by_mask) {
@@ -70,10 +70,10 @@ Json comparison_json(const Comparison& comparison) {
   }
   const HeatmapRange abs_range = abs_error_range(comparison.abs_error_map);
   Json heatmaps = Json::object();
-  if (!comparison.abs_error_map.empty()) {
+  if (heatmap_fits(comparison.abs_error_map, report)) {
     heatmaps["abs_error"] = {{"png", "error_" + pair + ".png"}, {"colour_map", "viridis"}, {"min", number(abs_range.min)}, {"max", number(abs_range.max)}};
   }
-  if (!comparison.flip_map.empty()) {
+  if (heatmap_fits(comparison.flip_map, report)) {
     heatmaps["flip"] = {{"png", "flip_" + pair + ".png"}, {"colour_map", "magma"}, {"min", kFlipRange.min}, {"max", kFlipRange.max}};
   }
   return {{"test", comparison.test}, {"against", comparison.against}, {"by_mask", masks}, {"heatmaps", heatmaps}};
@@ -84,7 +84,7 @@ Json comparison_json(const Comparison& comparison) {
 std::string ab_report_json(const AbReport& report) {
   Json renders = Json::array(), comparisons = Json::array();
   for (const Rendered& render : report.renders) renders.push_back(render_json(render));
-  for (const Comparison& comparison : report.comparisons) comparisons.push_back(comparison_json(comparison));
+  for (const Comparison& comparison : report.comparisons) comparisons.push_back(comparison_json(comparison, report));
   const Json out = {{"volgraph_version", report.volgraph_version},
                     {"command_line", report.command_line},
                     {"config", report.config},
