@@ -14,7 +14,7 @@ namespace volgraph::compare {
 
 enum class ColourMap { viridis, magma };
 
-// The map's colour at t (sRGB-encoded, each channel in [0, 1]); t is clamped to [0, 1].
+// The map's colour at t (sRGB-encoded, each channel in [0, 1]); t is clamped to [0, 1], NaN → 1.
 std::array<double, 3> colour_at(ColourMap map, double t);
 
 // Marks the pixels of a heatmap whose value is not finite (a NaN or Inf in the test image).
