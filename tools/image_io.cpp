@@ -40,12 +40,7 @@ std::vector<std::byte> encode_png(const Image& image) {
     const float v = (i % 4 == 3) ? std::clamp(image.rgba[i], 0.0f, 1.0f) : physics::srgb_encode(image.rgba[i]);
     texels[i] = uint8_t(std::lround(v * 255.0f));
   }
-  std::vector<std::byte> out;
-  auto collect = [](void* context, void* data, int size) { append(*static_cast<std::vector<std::byte>*>(context), data, size_t(size)); };
-  if (!stbi_write_png_to_func(collect, &out, int(image.width), int(image.height), 4, texels.data(), int(image.width * 4))) {
-    throw std::runtime_error("the PNG encoder failed");
-  }
-  return out;
+  return encode_png_rgba8(image.width, image.height, texels);
 }
 
 std::vector<std::byte> encode_exr(const Image& image) {
@@ -86,6 +81,16 @@ std::vector<std::byte> encode_pfm(const Image& image) {
 }
 
 }  // namespace
+
+std::vector<std::byte> encode_png_rgba8(uint32_t width, uint32_t height, const std::vector<uint8_t>& rgba) {
+  if (rgba.size() != size_t(width) * height * 4) throw std::invalid_argument("encode_png_rgba8: the texels do not match the size");
+  std::vector<std::byte> out;
+  auto collect = [](void* context, void* data, int size) { append(*static_cast<std::vector<std::byte>*>(context), data, size_t(size)); };
+  if (!stbi_write_png_to_func(collect, &out, int(width), int(height), 4, rgba.data(), int(width * 4))) {
+    throw std::runtime_error("the PNG encoder failed");
+  }
+  return out;
+}
 
 std::optional<ImageFormat> image_format_for(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();

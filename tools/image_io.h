@@ -25,6 +25,11 @@ std::optional<ImageFormat> image_format_for(const std::string& path);
 // The bytes of `image` as a file of `format`.
 std::vector<std::byte> encode_image(const Image& image, ImageFormat format);
 
+// The bytes of a PNG of 8-bit RGBA texels as they are (no transfer function applied):
+// 4 bytes a pixel, row 0 at the top. For pictures already made for display (tone-mapped
+// images, heatmaps). Throws std::invalid_argument when the size does not match.
+std::vector<std::byte> encode_png_rgba8(uint32_t width, uint32_t height, const std::vector<uint8_t>& rgba);
+
 // Writes one image: ConfigError (the path is the user's input, named with `flag`, e.g.
 // "-o") for an unsupported type or a target that cannot take a file; IoError
 // (output_files.h) when the write itself fails. Nothing is left behind on failure.

@@ -62,8 +62,32 @@ struct AbReport {
   std::vector<std::string> notes;         // what the reader must know (timing clock, exclusions)
 };
 
+// report.json: every figure of `report`, keys in the order written here. A number that
+// is not finite (PSNR of identical images is +inf) is written as the string "inf",
+// "-inf" or "nan", so the file stays valid JSON; every other number is a JSON number.
 std::string ab_report_json(const AbReport& report);
+
+// report.html: one self-contained page (images as data: URIs, CSS and script inline).
+// The viewer follows the page's address fragment through the same handlers a click
+// uses: #show=<layer> clicks that toggle button (layers: a, b, reference,
+// error-<test>-vs-<against>, flip-<test>-vs-<against>), #split=<0…1> moves the slider,
+// #left=<layer>&right=<layer> picks the two images of the split, #zoom=<factor>.
+// Once loaded the page logs "report ready viewer=x,y,w,h metrics=x,y,w,h" (CSS pixels
+// in the page) on the console and puts the same boxes in its title.
 std::string ab_report_html(const AbReport& report);
+
+// The exposure every image of the report is shown at (display_image.h): found from the
+// reference when there is one, else from the first render.
+double report_display_exposure(const AbReport& report);
+
+// Whether a comparison's map (abs_error_map, flip_map) is drawn: one value a pixel of the
+// report's images (the first render's size, else width × height). The JSON, the page
+// and the files leave out a map that is not.
+bool heatmap_fits(const std::vector<float>& map, const AbReport& report);
+
+// A label as a file name stem ("A" → "a", "reference" → "reference"): lower case,
+// characters other than letters and digits → '_'.
+std::string report_file_stem(const std::string& label);
 
 // Every file of the report directory: (file name, bytes), report.json and report.html
 // first, then a.png, a.pfm, b.png, b.pfm, reference.png/.pfm and the heatmaps
