@@ -30,7 +30,7 @@ commands:
                                --reference cpu|IMAGE.pfm (default: B against A), --runs N (5), --warmup N (1)
   sweep SPEC -o DIR            every point of a sweep spec (configs/sweeps/): time, error, Pareto front,
                                results.csv/json, report.html; resumes in DIR; --emit-jobs (DIR/jobs.txt for
-                               GNU parallel or tools/sweep_slurm.sh), --point ID (one job), --merge DIR…;
+                               GNU parallel or tools/sweep_slurm.sh), --point ID (one job), --merge DIR (repeatable);
                                --size, --runs, --warmup, --backend, --reference override the spec's
   tune SPEC --max-error X -o DIR  the fastest point with its error (--metric, default the spec's) ≤ X:
                                DIR/tuned.json (a config including the swept one) and the flags
@@ -226,7 +226,7 @@ void sweep_options(CLI::App& app, Args& args) {
   value_option(app, "--point", [&](const std::string& v) { once(c.point, "--point", v); });
   value_option(app, "--reference", [&](const std::string& v) { once(c.reference, "--reference", v); });
   flag(app, "--emit-jobs", [&] { c.emit_jobs = true; });
-  app.add_option("--merge")->expected(1, -1)->each([&](const std::string& v) { c.merge.push_back(v); });
+  value_option(app, "--merge", [&](const std::string& v) { c.merge.push_back(v); });
   value_option(app, "--size", [&](const std::string& v) { args.overrides.size = size_value(v); });
   value_option(app, "--backend", [&](const std::string& v) { c.backend = backend_value(v); });
   value_option(app, "--device", [&](const std::string& v) { args.device = whole_number("--device", v, 0); });

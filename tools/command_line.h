@@ -34,7 +34,7 @@ struct CompareArgs {
   std::optional<int> runs, warmup;  // timed rounds, untimed frames before them (ab: 5 and 1; sweep: the spec's)
   std::string point;             // sweep --point ID: that point alone (an emitted job)
   bool emit_jobs = false;        // sweep --emit-jobs
-  std::vector<std::string> merge;  // sweep --merge DIR…
+  std::vector<std::string> merge;  // sweep --merge DIR, repeated
   std::optional<double> max_error;  // tune --max-error X
   std::string metric;            // tune --metric NAME ("" for the spec's)
   std::string backend;           // sweep/tune --backend ("" for the spec's)

@@ -26,6 +26,7 @@
 #include "tools/compare/tune.h"
 #include "tools/image_io.h"
 #include "tools/output_files.h"
+#include "tools/simulated_fault.h"
 #include "tools/webgpu_backend.h"
 
 namespace volgraph {
@@ -38,12 +39,14 @@ using namespace compare;
 class ComparisonDevice {
  public:
   ComparisonDevice(const std::string& backend, int device_index, bool validation) {
+    const std::optional<SimulatedFault> fault = simulated_fault();
+    if (!fault) throw UsageError("VOLGRAPH_SIMULATE_FAULT must be out_of_memory or device_lost");
     if (backend == "webgpu") {
       if (device_index >= 0) throw UsageError("--device picks a Vulkan device; WebGPU uses Dawn's default adapter");
-      device_ = create_webgpu_device(vulkan::SimulatedFault::none);
+      device_ = create_webgpu_device(*fault);
       return;
     }
-    context_ = vulkan::Context::create({.validation = validation, .device_index = device_index});
+    context_ = vulkan::Context::create({.validation = validation, .device_index = device_index, .simulate = *fault});
     device_ = std::make_unique<vulkan::VulkanDevice>(*context_);
   }
   rhi::Device& device() { return *device_; }
@@ -299,6 +302,8 @@ class SweepRunner {
     mask_ = mask_named(spec.mask, base.config.scene, spec.size.width, spec.size.height);
   }
 
+  // The point rendered, timed and measured; a failure (a device error, a validation
+  // message) is the point's result, with its error, and the sweep goes on.
   PointResult operator()(const SweepPoint& point) {
     const auto start = std::chrono::steady_clock::now();
     PointResult r{point.id, point.series, point.label, point.graph, point.settings};
@@ -309,18 +314,12 @@ class SweepRunner {
     r.device_is_cpu = device_is_cpu(session_.device());
     r.metric = spec_.metric;
     r.command = job_command(args_, spec_, point.id, fs::path(args_.output).string());
-    Overrides o = point.overrides;
-    o.size = spec_.size;
-    o.graph = point.graph;
-    const LoadedConfig loaded = load_linear(spec_.config, registry_, o);
-    const SettingRun run = run_settings(session_.device(), {&loaded}, {point.frames, spec_.warmup, spec_.runs, args_.compile}).front();
-    if (const std::vector<std::string> messages = session_.take_validation_messages(); !messages.empty()) {
-      throw std::runtime_error("validation: " + messages.front());
+    try {
+      measure(point, r);
+      r.ok = true;
+    } catch (const std::exception& e) {
+      r.error = e.what();
     }
-    r.ok = true;
-    r.timing = run.timing;
-    r.memory = run.memory;
-    r.metrics = measure_error(run.image, reference_, mask_);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   }
@@ -336,6 +335,20 @@ class SweepRunner {
   }
 
  private:
+  void measure(const SweepPoint& point, PointResult& r) {
+    Overrides o = point.overrides;
+    o.size = spec_.size;
+    o.graph = point.graph;
+    const LoadedConfig loaded = load_linear(spec_.config, registry_, o);
+    const SettingRun run = run_settings(session_.device(), {&loaded}, {point.frames, spec_.warmup, spec_.runs, args_.compile}).front();
+    if (const std::vector<std::string> messages = session_.take_validation_messages(); !messages.empty()) {
+      throw std::runtime_error("validation: " + messages.front());
+    }
+    r.timing = run.timing;
+    r.memory = run.memory;
+    r.metrics = measure_error(run.image, reference_, mask_);
+  }
+
   // The spec's reference image: its file, or the CPU reference rendered once and kept
   // as DIR/reference.pfm for the points that follow (and a resumed run, and jobs).
   RgbImage sweep_reference(const LoadedConfig& base, const std::string& dir) const {

@@ -26,6 +26,7 @@
 #include "tools/compare_commands.h"
 #include "tools/image_io.h"
 #include "tools/output_files.h"
+#include "tools/simulated_fault.h"
 #include "tools/webgpu_backend.h"
 #include "graph/plan_report.h"
 #include "graph/pooling.h"
@@ -212,20 +213,10 @@ std::vector<Dump> add_dumps(const std::vector<std::string>& requests, Graph& gra
   return dumps;
 }
 
-// VOLGRAPH_SIMULATE_FAULT=out_of_memory|device_lost makes the driver fail (to test how
-// failures are reported); none when unset, nullopt for another value.
-std::optional<vulkan::SimulatedFault> simulated_fault() {
-  const char* value = std::getenv("VOLGRAPH_SIMULATE_FAULT");
-  if (!value || !*value) return vulkan::SimulatedFault::none;
-  if (std::string_view(value) == "out_of_memory") return vulkan::SimulatedFault::out_of_memory;
-  if (std::string_view(value) == "device_lost") return vulkan::SimulatedFault::device_lost;
-  return std::nullopt;
-}
-
 void render_frames(rhi::Device& device, const Args& args, LoadedConfig& loaded);
 
 int render(const Args& args, LoadedConfig loaded) {
-  const std::optional<vulkan::SimulatedFault> fault = simulated_fault();
+  const std::optional<SimulatedFault> fault = simulated_fault();
   if (!fault) return bad_usage("VOLGRAPH_SIMULATE_FAULT must be out_of_memory or device_lost");
   if (args.backend == "webgpu") {
     if (args.device >= 0) return bad_usage("--device picks a Vulkan device; WebGPU uses Dawn's default adapter");
