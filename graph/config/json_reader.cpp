@@ -1,8 +1,11 @@
 #include "graph/config/json_reader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 #include <unistd.h>
@@ -185,6 +188,61 @@ void read(const Node& obj, const char* key, std::string& out) {
   if (auto n = obj.member(key)) {
     if (auto v = n->string()) out = *v;
   }
+}
+
+std::string read_text_file(const std::string& path, std::string& out) {
+  if (std::string problem = file_problem(path); !problem.empty()) return problem;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "cannot open it";
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) return "read error";
+  out = s.str();
+  return "";
+}
+
+namespace {
+
+// nlohmann's message without its "[json.exception.parse_error.101] " prefix.
+std::string json_message(const std::exception& e) {
+  const std::string msg = e.what();
+  const size_t close = msg.find("] ");
+  return close == std::string::npos ? msg : msg.substr(close + 2);
+}
+
+}  // namespace
+
+std::optional<Json> parse_json_document(const std::string& path, const std::string& text, Diagnostics& diags) {
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    diags.error({path, "", line_of_offset(text, nul)}, "a NUL byte at offset " + std::to_string(nul) + "; expected JSON text");
+    return std::nullopt;
+  }
+  if (const std::optional<size_t> deep = too_deep_at(text, kMaxJsonDepth)) {
+    diags.error({path, "", line_of_offset(text, *deep)}, "arrays and objects nest deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    return std::nullopt;
+  }
+  Json json;
+  try {
+    json = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    diags.error({path, "", line_of_offset(text, e.byte > 0 ? e.byte - 1 : 0)}, "invalid JSON: " + json_message(e));
+    return std::nullopt;
+  } catch (const Json::exception& e) {  // e.g. a number too large for a double
+    diags.error({path, "", 0}, "invalid JSON: " + json_message(e));
+    return std::nullopt;
+  }
+  const std::vector<DuplicateKey> duplicates = duplicate_keys(text);
+  for (const DuplicateKey& d : duplicates) {
+    diags.error({path, d.pointer, d.line},
+                "duplicate key \"" + d.key + "\" (first at line " + std::to_string(d.first_line) + "); keys must be unique");
+  }
+  if (!duplicates.empty()) return std::nullopt;
+  return json;
+}
+
+bool valid_name(const std::string& name) {
+  if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
+  return std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 }  // namespace volgraph::config

@@ -64,6 +64,23 @@ class Node {
 // "not a regular file" (a FIFO, a device: never opened, it could block), "permission denied".
 std::string file_problem(const std::string& path);
 
+// Nesting of arrays and objects in one file: far deeper than any config needs, shallow
+// enough that no reader of the document recurses near the stack's end.
+constexpr int kMaxJsonDepth = 256;
+
+// Reads the file at `path` into `out`: "" when it could, else why not (file_problem's
+// words, "cannot open it", "read error").
+std::string read_text_file(const std::string& path, std::string& out);
+
+// `text` (the file `path`) as one JSON document, refused as every volgraph file is: a NUL
+// byte (nlohmann/json would end the input there), nesting deeper than kMaxJsonDepth
+// (checked before parsing), invalid JSON (at its line) and each repeated key (nlohmann
+// keeps the last silently) — one diagnostic each, and nullopt.
+std::optional<Json> parse_json_document(const std::string& path, const std::string& text, Diagnostics& diags);
+
+// A pass or parameter name: a letter or '_', then letters, digits and '_'.
+bool valid_name(const std::string& name);
+
 std::string describe(const Json& j);  // "a string \"x\"", "an object", ... for messages
 std::string range_text(double min, double max);
 

@@ -19,22 +19,15 @@ namespace {
 using config::Json;
 using config::Node;
 using config::Source;
+using config::valid_name;
 
 constexpr uint32_t kMaxTexture2D = 16384;
 constexpr uint32_t kMaxTexture3D = 2048;
 constexpr int kMaxIncludeDepth = 16;
-// Nesting of arrays and objects in one file: far deeper than any config needs, shallow
-// enough that no reader of the document recurses near the stack's end.
-constexpr int kMaxJsonDepth = 256;
 
 const Where kCommandLine{"<command line>", "", 0};
 
 bool integer_format(Format f) { return f == Format::r32_uint; }
-
-bool valid_name(const std::string& s) {
-  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-  return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-}
 
 // Raw JSON into a ParamValue; the parameter's type is checked once the pass type is known.
 std::optional<ParamValue> raw_param(const Node& n) {
@@ -100,13 +93,6 @@ void set_param(PassNode& p, ParamSetting s) {
 // Output size overrides by (pass, slot), parsed once the slot's kind is known.
 using SizeNodes = std::map<std::pair<std::string, std::string>, Node>;
 
-// nlohmann's message without its "[json.exception.parse_error.101] " prefix.
-std::string json_message(const std::exception& e) {
-  const std::string msg = e.what();
-  const size_t close = msg.find("] ");
-  return close == std::string::npos ? msg : msg.substr(close + 2);
-}
-
 class Loader {
  public:
   explicit Loader(Config& config) : config_(config) {}
@@ -126,7 +112,7 @@ class Loader {
     std::string contents;
     if (text) {
       contents = *text;
-    } else if (const std::string problem = read_text(path, contents); !problem.empty()) {
+    } else if (const std::string problem = config::read_text_file(path, contents); !problem.empty()) {
       diags_.error(from.file.empty() ? Where{path, "", 0} : from, "cannot read \"" + path + "\": " + problem);
       return;
     }
@@ -134,19 +120,9 @@ class Loader {
     Source& src = *sources_.back();
     src.file = path;
     src.dir = std::filesystem::path(path).parent_path().string();
-    if (!text_checks_pass(path, contents)) return;
-    Json json;
-    try {
-      json = Json::parse(contents);
-    } catch (const Json::parse_error& e) {
-      diags_.error({path, "", line_of_offset(contents, e.byte > 0 ? e.byte - 1 : 0)}, "invalid JSON: " + json_message(e));
-      return;
-    } catch (const Json::exception& e) {  // e.g. a number too large for a double
-      diags_.error({path, "", 0}, "invalid JSON: " + json_message(e));
-      return;
-    }
-    if (!unique_keys(path, contents)) return;
-    jsons_.push_back(std::make_unique<Json>(std::move(json)));
+    std::optional<Json> json = config::parse_json_document(path, contents, diags_);
+    if (!json) return;
+    jsons_.push_back(std::make_unique<Json>(std::move(*json)));
     src.lines = index_json_lines(contents);
     stack_.push_back(canonical);
     read_document(Node(src, *jsons_.back(), "", diags_), depth);
@@ -156,44 +132,6 @@ class Loader {
   Diagnostics& diagnostics() { return diags_; }
 
  private:
-  // The file's text, or why it cannot be read (config::file_problem).
-  static std::string read_text(const std::string& path, std::string& out) {
-    if (std::string problem = config::file_problem(path); !problem.empty()) return problem;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return "cannot open it";
-    std::ostringstream s;
-    s << in.rdbuf();
-    if (in.bad()) return "read error";
-    out = s.str();
-    return "";
-  }
-
-  // What the JSON parser would let pass or choke on: a NUL byte (nlohmann/json ends the
-  // input there, ignoring the rest) and nesting deeper than kMaxJsonDepth.
-  bool text_checks_pass(const std::string& path, const std::string& contents) {
-    if (const size_t nul = contents.find('\0'); nul != std::string::npos) {
-      diags_.error({path, "", line_of_offset(contents, nul)},
-                   "a NUL byte at offset " + std::to_string(nul) + "; expected JSON text");
-      return false;
-    }
-    if (const std::optional<size_t> deep = too_deep_at(contents, kMaxJsonDepth)) {
-      diags_.error({path, "", line_of_offset(contents, *deep)},
-                   "arrays and objects nest deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-      return false;
-    }
-    return true;
-  }
-
-  // nlohmann/json keeps the last of repeated keys silently; each repeat is an error.
-  bool unique_keys(const std::string& path, const std::string& contents) {
-    const std::vector<DuplicateKey> duplicates = duplicate_keys(contents);
-    for (const DuplicateKey& d : duplicates) {
-      diags_.error({path, d.pointer, d.line},
-                   "duplicate key \"" + d.key + "\" (first at line " + std::to_string(d.first_line) + "); keys must be unique");
-    }
-    return duplicates.empty();
-  }
-
   void read_document(const Node& doc, int depth) {
     if (!doc.object({"description", "include", "output", "scene", "graph"})) return;
     if (auto inc = doc.member("include")) read_includes(*inc, depth);

@@ -11,24 +11,14 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
+#include "tools/compare/figures_json.h"
 #include "tools/output_files.h"
 
 namespace volgraph::compare {
 namespace {
-
-using Json = nlohmann::ordered_json;
-
-// JSON has no infinities or NaN (RFC 8259 §6): those are written as the strings
-// "inf", "-inf" and "nan".
-Json number(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  return value;
-}
 
 // Reads a point file, each failure naming the file and the JSON pointer of the value.
 class Reader {
@@ -80,28 +70,10 @@ class Reader {
   std::string file_;
 };
 
-Json spread_json(const Spread& s) {
-  return Json{{"median", number(s.median)}, {"min", number(s.min)}, {"max", number(s.max)}, {"runs", s.runs}};
-}
-
 Spread read_spread(const Reader& r, const Json& object, const std::string& pointer, const std::string& key) {
   const Json& j = r.member(object, pointer, key);
   const std::string at = pointer + "/" + key;
   return {r.real(j, at, "median"), r.real(j, at, "min"), r.real(j, at, "max"), r.integer(j, at, "runs")};
-}
-
-Json timing_json(const TimingSummary& t) {
-  Json passes = Json::array();
-  for (const PassTimes& p : t.passes) {
-    passes.push_back(
-        Json{{"pass", p.pass}, {"type", p.type}, {"gpu_ms", spread_json(p.gpu_ms)}, {"cpu_ms", spread_json(p.cpu_ms)}});
-  }
-  return Json{{"runs", t.runs},
-              {"warmup", t.warmup},
-              {"frame_wall_ms", spread_json(t.frame_wall_ms)},
-              {"passes", passes},
-              {"gpu_timestamps", t.gpu_timestamps},
-              {"clock", t.clock}};
 }
 
 TimingSummary read_timing(const Reader& r, const Json& j, const std::string& at) {
@@ -121,15 +93,6 @@ TimingSummary read_timing(const Reader& r, const Json& j, const std::string& at)
   return t;
 }
 
-Json memory_json(const MemorySummary& m) {
-  return Json{{"aliased_bytes", m.aliased_bytes},
-              {"unaliased_bytes", m.unaliased_bytes},
-              {"lower_bound_bytes", m.lower_bound_bytes},
-              {"persistent_bytes", m.persistent_bytes},
-              {"passes_run", m.passes_run},
-              {"passes_culled", m.passes_culled}};
-}
-
 MemorySummary read_memory(const Reader& r, const Json& j, const std::string& at) {
   MemorySummary m;
   m.aliased_bytes = r.count(j, at, "aliased_bytes");
@@ -139,19 +102,6 @@ MemorySummary read_memory(const Reader& r, const Json& j, const std::string& at)
   m.passes_run = uint32_t(r.count(j, at, "passes_run"));
   m.passes_culled = uint32_t(r.count(j, at, "passes_culled"));
   return m;
-}
-
-Json metrics_json(const ErrorMetrics& m) {
-  return Json{{"compared_pixels", m.compared_pixels},
-              {"nan_values", m.nan_values},
-              {"inf_values", m.inf_values},
-              {"rmse", number(m.rmse)},
-              {"relative_rmse", number(m.relative_rmse)},
-              {"psnr_db", number(m.psnr_db)},
-              {"ssim", number(m.ssim)},
-              {"flip", number(m.flip)},
-              {"max_abs_error", number(m.max_abs_error)},
-              {"relative_mean_error", number(m.relative_mean_error)}};
 }
 
 ErrorMetrics read_metrics(const Reader& r, const Json& j, const std::string& at) {
@@ -188,7 +138,7 @@ Json point_json(const PointResult& p) {
               {"memory", memory_json(p.memory)},
               {"metrics", metrics_json(p.metrics)},
               {"metric", p.metric},
-              {"seconds", number(p.seconds)},
+              {"seconds", number_json(p.seconds)},
               {"pareto", p.pareto}};
 }
 

@@ -26,9 +26,8 @@ namespace {
 using config::Json;
 using config::Node;
 using config::Source;
+using config::valid_name;
 
-// As the config loader: deeper nesting than any spec needs is refused before parsing.
-constexpr int kMaxJsonDepth = 256;
 constexpr int64_t kMaxSide = 16384;
 // 2^53: the integers of a range stay integers below it (a parameter reads them as doubles too).
 constexpr double kLargestExactInteger = 9007199254740992.0;
@@ -38,31 +37,6 @@ bool integral(const Json& j) { return j.is_number_integer() && std::abs(j.get<do
 
 const std::vector<std::string> kBackends{"vulkan", "webgpu"};
 const std::vector<std::string> kMasks{"all", "fog_only", "surfaces"};
-
-// A PASS or PARAM name as the config loader takes it: a letter or '_', then letters, digits, '_'.
-bool valid_name(const std::string& s) {
-  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-  return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-}
-
-// The file's text, or why it cannot be read.
-std::string read_text(const std::string& path, std::string& out) {
-  if (std::string problem = config::file_problem(path); !problem.empty()) return problem;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "cannot open it";
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) return "read error";
-  out = s.str();
-  return "";
-}
-
-// nlohmann's message without its "[json.exception.parse_error.101] " prefix.
-std::string json_message(const std::exception& e) {
-  const std::string msg = e.what();
-  const size_t close = msg.find("] ");
-  return close == std::string::npos ? msg : msg.substr(close + 2);
-}
 
 // A value rounded to 12 significant digits, so that a range's 0.1 + 2 × 0.1 is 0.3.
 double round_12_digits(double v) {
@@ -137,35 +111,12 @@ class SpecReader {
   std::optional<Json> parse() {
     const std::string& path = source_.file;
     std::string text;
-    if (const std::string problem = read_text(path, text); !problem.empty()) {
+    if (const std::string problem = config::read_text_file(path, text); !problem.empty()) {
       diags_.error({path, "", 0}, "cannot read \"" + path + "\": " + problem);
       return std::nullopt;
     }
-    if (const size_t nul = text.find('\0'); nul != std::string::npos) {
-      diags_.error({path, "", line_of_offset(text, nul)}, "a NUL byte at offset " + std::to_string(nul) + "; expected JSON text");
-      return std::nullopt;
-    }
-    if (const std::optional<size_t> deep = too_deep_at(text, kMaxJsonDepth)) {
-      diags_.error({path, "", line_of_offset(text, *deep)},
-                   "arrays and objects nest deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-      return std::nullopt;
-    }
-    Json json;
-    try {
-      json = Json::parse(text);
-    } catch (const Json::parse_error& e) {
-      diags_.error({path, "", line_of_offset(text, e.byte > 0 ? e.byte - 1 : 0)}, "invalid JSON: " + json_message(e));
-      return std::nullopt;
-    } catch (const Json::exception& e) {
-      diags_.error({path, "", 0}, "invalid JSON: " + json_message(e));
-      return std::nullopt;
-    }
-    const std::vector<DuplicateKey> duplicates = duplicate_keys(text);
-    for (const DuplicateKey& d : duplicates) {
-      diags_.error({path, d.pointer, d.line},
-                   "duplicate key \"" + d.key + "\" (first at line " + std::to_string(d.first_line) + "); keys must be unique");
-    }
-    if (!duplicates.empty()) return std::nullopt;
+    std::optional<Json> json = config::parse_json_document(path, text, diags_);
+    if (!json) return std::nullopt;
     source_.lines = index_json_lines(text);
     return json;
   }
