@@ -324,6 +324,28 @@ TEST(SweepCsv, ColumnsQuotingAndSettingKeys) {
   EXPECT_EQ(lines[3], "cc,s,label cc,gpu,false,\"line one\nline two\",,,,,,,,,,,,,,false,,,");
 }
 
+TEST(SweepMarkdown, OneTableADeviceWithTheRatioToTheFastestAndTheFront) {
+  PointResult fast = point("aa", "gpu", 2, 0.25);
+  PointResult slow = point("bb", "gpu", 5, 0.125);
+  slow.label = "a|b";
+  PointResult failed = point("cc", "gpu", 0, 0);
+  failed.ok = false;
+  failed.error = "line one\nline two";
+  PointResult other = point("dd", "llvmpipe (LLVM 15)", 7, 0.5);
+  std::vector<PointResult> r = {fast, slow, failed, other};
+  mark_pareto(r);
+  SweepSpec spec;
+  spec.metric = "rel_rmse";
+  spec.mask = "fog_only";
+  const std::string md = results_markdown(spec, r);
+  EXPECT_NE(md.find("On gpu, 160x90, median of 5 frames after 1 warm-up; rel_rmse over fog_only pixels"), std::string::npos) << md;
+  EXPECT_NE(md.find("| s | label aa | 2 | 1.8 – 2.4 | 1 | 0.25 | 0 | * |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| s | a\\|b | 5 | 4.5 – 6 | 2.5 | 0.125 | 0 | * |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| s | label cc | failed: line one line two | | | | | |"), std::string::npos) << md;
+  EXPECT_NE(md.find("On llvmpipe (LLVM 15) — lavapipe (CPU)"), std::string::npos) << md;
+  EXPECT_NE(md.find("| s | label dd | 7 | 6.3 – 8.4 | 1 | 0.5 | 0 | * |"), std::string::npos) << "a device's ratio is to its own fastest";
+}
+
 TEST(SweepAggregates, EveryFileWrittenInSpecOrderWithoutTemporaries) {
   TempDir dir;
   const SweepSpec spec = spec_with({"p2", "p1", "p3"});

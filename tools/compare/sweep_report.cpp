@@ -468,6 +468,7 @@ void write_aggregates(const std::string& dir, const SweepSpec& spec, std::vector
   OutputFiles files;
   files.stage((folder / "results.json").string(), "-o", bytes_of(results_json(spec, ordered)));
   files.stage((folder / "results.csv").string(), "-o", bytes_of(results_csv(ordered)));
+  files.stage((folder / "results.md").string(), "-o", bytes_of(results_markdown(spec, ordered)));
   files.stage((folder / "report.html").string(), "-o", bytes_of(sweep_report_html(spec, ordered, svg)));
   files.stage((folder / "pareto.svg").string(), "-o", bytes_of(svg));
   if (!png.empty()) files.stage((folder / "pareto.png").string(), "-o", png);

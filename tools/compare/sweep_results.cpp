@@ -439,4 +439,54 @@ std::string results_csv(const std::vector<PointResult>& ordered) {
   return csv;
 }
 
+namespace {
+
+// Three significant digits (what a table for people needs; the CSV keeps every digit).
+std::string figure_text(double value) {
+  if (!std::isfinite(value)) return std::isnan(value) ? "nan" : value > 0 ? "inf" : "-inf";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", value);
+  return buf;
+}
+
+// A table cell: '|' escaped, line breaks as spaces (a row is one line).
+std::string markdown_cell(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  for (size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2)) text.replace(at, 1, "\\|");
+  return text;
+}
+
+}  // namespace
+
+std::string results_markdown(const SweepSpec& spec, const std::vector<PointResult>& ordered) {
+  std::string md;
+  for (const std::string& device : devices_of(ordered)) {
+    double fastest = std::numeric_limits<double>::infinity();
+    for (const PointResult& p : ordered) {
+      if (p.device == device && p.ok) fastest = std::min(fastest, p.timing.frame_wall_ms.median);
+    }
+    md += "On " + (device.empty() ? std::string("no device") : device) +
+          (device.find("llvmpipe") != std::string::npos ? " — lavapipe (CPU)" : "") + ", " + std::to_string(spec.size.width) + "x" +
+          std::to_string(spec.size.height) + ", median of " + std::to_string(spec.runs) + " frames after " + std::to_string(spec.warmup) +
+          " warm-up; " + spec.metric + " over " + spec.mask + " pixels against the " +
+          (spec.reference == "cpu" ? std::string("CPU reference") : "reference image") + "; * on the Pareto front:\n\n";
+    md += "| series | setting | frame ms | min – max | / fastest | " + spec.metric + " | flip | front |\n";
+    md += "|---|---|---|---|---|---|---|---|\n";
+    for (const PointResult& p : ordered) {
+      if (p.device != device) continue;
+      const Spread& t = p.timing.frame_wall_ms;
+      if (!p.ok) {
+        md += "| " + markdown_cell(p.series) + " | " + markdown_cell(p.label) + " | failed: " + markdown_cell(p.error) + " | | | | | |\n";
+        continue;
+      }
+      md += "| " + markdown_cell(p.series) + " | " + markdown_cell(p.label) + " | " + figure_text(t.median) + " | " + figure_text(t.min) +
+            " – " + figure_text(t.max) + " | " + figure_text(t.median / fastest) + " | " +
+            figure_text(metric_value(p.metrics, spec.metric)) + " | " + figure_text(p.metrics.flip) + " | " + (p.pareto ? "*" : "") + " |\n";
+    }
+    md += "\n";
+  }
+  return md;
+}
+
 }  // namespace volgraph::compare

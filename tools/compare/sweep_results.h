@@ -50,7 +50,7 @@ void save_point(const std::string& dir, const PointResult& result);
 // The same as DIR/points/<stem>.json (merge_results' <id>@<device hash>). The file's
 // pareto is always false: the front depends on the other points (results.json has it).
 void save_point_as(const std::string& dir, const std::string& stem, const PointResult& result);
-// Rewrites results.json, results.csv, report.html, pareto.svg and pareto.png from
+// Rewrites results.json, results.csv, results.md, report.html, pareto.svg and pareto.png from
 // `results` (in the spec's point order where the spec is given), all staged and renamed
 // together. pareto.png needs rsvg-convert (librsvg2-bin): without it no PNG is written
 // (a stale one is removed) and stderr says so.
@@ -70,6 +70,9 @@ std::string results_json(const SweepSpec& spec, const std::vector<PointResult>& 
 // one column a setting key over all points (its value: a JSON string's text, other JSON as
 // written; empty where a point lacks the key). A failed point's figures are empty.
 std::string results_csv(const std::vector<PointResult>& ordered);
+// results.md: a Markdown table per device (series, setting, frame ms median and range, the
+// ratio to the fastest, the spec's metric, FLIP, the front), three significant digits.
+std::string results_markdown(const SweepSpec& spec, const std::vector<PointResult>& ordered);
 // 8 hex digits of the FNV-1a hash of a device name: merge_results names a point done on
 // several devices DIR/points/<id>@<hash>.json.
 std::string device_hash(const std::string& device);
