@@ -466,6 +466,20 @@ int run_sweep_command(const Args& args, const PassRegistry& registry) {
   return summary.failed ? kFailure : kOk;
 }
 
+namespace {
+
+// "; the closest is LABEL at E" over the points that succeeded ("" when none did).
+std::string closest_text(const std::vector<PointResult>& results, const std::string& metric) {
+  const PointResult* closest = nullptr;
+  for (const PointResult& r : results) {
+    if (r.ok && (!closest || metric_value(r.metrics, metric) < metric_value(closest->metrics, metric))) closest = &r;
+  }
+  if (!closest) return "";
+  return "; the closest is \"" + closest->label + "\" (series " + closest->series + ") at " + number_text(metric_value(closest->metrics, metric));
+}
+
+}  // namespace
+
 int run_tune(const Args& args, const PassRegistry& registry) {
   const CompareArgs& c = args.compare;
   if (args.config.empty()) throw UsageError("tune needs a SPEC file (configs/sweeps/*.json)");
@@ -481,10 +495,11 @@ int run_tune(const Args& args, const PassRegistry& registry) {
     SweepRunner runner(args, registry, spec, args.output);
     run_sweep(spec, args.output, std::ref(runner), std::cerr, isatty(STDERR_FILENO));
   }
-  const std::optional<TuneChoice> choice = tune(read_results(args.output), metric, *c.max_error);
+  const std::vector<PointResult> results = read_results(args.output);
+  const std::optional<TuneChoice> choice = tune(results, metric, *c.max_error);
   if (!choice) {
-    std::cerr << "volgraph tune: no point of " << spec.file << " has " << metric << " ≤ " << *c.max_error << " (results in "
-              << args.output << ")\n";
+    std::cerr << "volgraph tune: no point of " << spec.file << " has " << metric << " ≤ " << *c.max_error << closest_text(results, metric)
+              << " (results in " << args.output << ")\n";
     return kFailure;
   }
   const std::string summary = tuned_summary_text(spec, *choice, metric, *c.max_error);

@@ -169,7 +169,8 @@ PY
     "$volgraph" tune "$tmp/tiny.json" --max-error 0.25 -o "$tmp/t" >"$tmp/out" 2>"$tmp/err" || fail "tune exit $?: $(cat "$tmp/err")"
     grep -q -- "--set fog_media.slices=8" "$tmp/out" || fail "budget 0.25 should choose 8 slices: $(cat "$tmp/out")"
     "$volgraph" tune "$tmp/tiny.json" --max-error 0.05 -o "$tmp/t" >"$tmp/out" 2>"$tmp/err"
-    [ $? = 1 ] && grep -q "no point" "$tmp/err" || fail "a budget no point meets should exit 1: $(cat "$tmp/err")"
+    [ $? = 1 ] && grep -q "no point .*; the closest is \"fog_media.slices=16\" (series slices) at 0.1" "$tmp/err" ||
+      fail "a budget no point meets should exit 1 naming the closest: $(cat "$tmp/err")"
     expect_exit 2 "--metric expects an error metric" "$volgraph" tune "$tmp/tiny.json" --max-error 0.1 --metric psnr -o "$tmp/t"
     ;;
   *) fail "unknown mode $mode" ;;
