@@ -4,6 +4,7 @@
 #                                                       report files, figures in report.json, the summary
 #   compare_test.sh VOLGRAPH ab_graphs SOURCE_DIR       ab of whole techniques (--a-graph/--b-graph): the froxel
 #                                                       chain, raymarch_fog and light_volume on one scene
+#   compare_test.sh VOLGRAPH webgpu SOURCE_DIR          ab and a sweep with --backend webgpu (Dawn)
 #   compare_test.sh VOLGRAPH ab_bad SOURCE_DIR          bad ab command lines: exit 2, one message, no report
 #   compare_test.sh VOLGRAPH sweep_resume SOURCE_DIR    a sweep interrupted by SIGINT keeps its finished points
 #                                                       and a second run does only the rest
@@ -77,6 +78,14 @@ PY
       grep -q "graph .*$1.json" "$tmp/$1-$2/report.json" || fail "report.json does not name A's graph $1"
       grep -q "graph .*$2.json" "$tmp/$1-$2/report.json" || fail "report.json does not name B's graph $2"
     done
+    ;;
+  webgpu)
+    "$volgraph" ab "$arg/configs/demo_fog.json" --pass fog_integral --a wronski --b hillaire --reference cpu --size 48x27 \
+      --runs 1 --backend webgpu -o "$tmp/ab" >"$tmp/out" 2>"$tmp/err" || fail "ab on webgpu exit $?: $(cat "$tmp/err")"
+    [ "$(json_value "$tmp/ab/report.json" "j['backend']")" = webgpu ] || fail "report.json does not say webgpu"
+    tiny_spec
+    "$volgraph" sweep "$tmp/tiny.json" --backend webgpu -o "$tmp/s" >"$tmp/out" 2>"$tmp/err" || fail "sweep on webgpu: $(cat "$tmp/err")"
+    grep -q '"backend": "webgpu"' "$tmp"/s/points/*.json || fail "the points do not say webgpu"
     ;;
   ab_bad)
     config="$arg/configs/demo_fog.json"
