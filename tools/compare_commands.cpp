@@ -19,6 +19,7 @@
 #include "passes/linear_output.h"
 #include "tools/compare/ab_report.h"
 #include "tools/compare/flip.h"
+#include "tools/compare/interrupt_guard.h"
 #include "tools/compare/metrics.h"
 #include "tools/compare/render_setting.h"
 #include "tools/compare/sweep_results.h"
@@ -238,6 +239,7 @@ int run_ab(const Args& args, const PassRegistry& registry) {
   compile_loaded(b.loaded, args.compile);
   prepare_output_folder(args.output);
 
+  InterruptGuard interrupt;  // a Ctrl-C while the report is written waits for it: all files or none
   ComparisonDevice session(args.backend, args.device, args.validation);
   rhi::Device& device = session.device();
   const RunSettings run{args.frames, c.warmup.value_or(1), c.runs.value_or(5), args.compile};
@@ -283,7 +285,10 @@ int run_ab(const Args& args, const PassRegistry& registry) {
   }
   const std::vector<std::string> messages = session.take_validation_messages();
   for (const std::string& m : messages) std::cerr << "validation: " << m << "\n";
-  stage_report(args.output, ab_report_files(report));
+  {
+    const std::lock_guard<std::mutex> lock(interrupt.writes());
+    stage_report(args.output, ab_report_files(report));
+  }
   print_ab_summary(report, args.output);
   return messages.empty() ? kOk : kFailure;
 }
@@ -459,8 +464,9 @@ int run_sweep_command(const Args& args, const PassRegistry& registry) {
     return kOk;
   }
   if (!c.point.empty()) return run_one_point(args, registry, spec);
+  InterruptGuard interrupt;  // before the device: its driver's threads inherit the blocked signals
   SweepRunner runner(args, registry, spec, args.output);
-  const SweepSummary summary = run_sweep(spec, args.output, std::ref(runner), std::cerr, isatty(STDERR_FILENO));
+  const SweepSummary summary = run_sweep(spec, args.output, std::ref(runner), std::cerr, isatty(STDERR_FILENO), &interrupt.writes());
   std::cout << "sweep: " << summary.ran << " points run, " << summary.skipped << " already done, " << summary.failed
             << " failed; results in " << args.output << "\n";
   return summary.failed ? kFailure : kOk;
@@ -492,8 +498,9 @@ int run_tune(const Args& args, const PassRegistry& registry) {
   prepare_output_folder(args.output);
   check_sweep_folder(spec, args.output);
   if (read_results(args.output).size() < spec.points.size()) {  // runs what the folder lacks, else reads it
+    InterruptGuard interrupt;
     SweepRunner runner(args, registry, spec, args.output);
-    run_sweep(spec, args.output, std::ref(runner), std::cerr, isatty(STDERR_FILENO));
+    run_sweep(spec, args.output, std::ref(runner), std::cerr, isatty(STDERR_FILENO), &interrupt.writes());
   }
   const std::vector<PointResult> results = read_results(args.output);
   const std::optional<TuneChoice> choice = tune(results, metric, *c.max_error);

@@ -108,9 +108,14 @@ PY
     for _ in $(seq 3000); do [ "$(points_in "$tmp/s")" -ge 1 ] && break; sleep 0.02; done
     kill -INT $pid
     wait $pid
+    code=$?
+    [ $code = 130 ] || fail "an interrupted sweep should exit 130 (128 + SIGINT), got $code: $(cat "$tmp/err")"
+    grep -q "interrupted; every finished point is saved" "$tmp/err" || fail "no interruption message: $(cat "$tmp/err")"
     done_first=$(points_in "$tmp/s")
     [ "$done_first" -ge 1 ] && [ "$done_first" -lt 8 ] || fail "after SIGINT: $done_first points saved (expected 1–7: interrupt too late?)"
     ls -A "$tmp/s/points" | grep -v '\.json$' && fail "temporaries left in points/"
+    ls -A "$tmp/s" | grep -q 'tmp' && fail "temporaries left in the sweep folder: $(ls -A "$tmp/s")"
+    [ "$(json_value "$tmp/s/results.json" "len(j['points'])")" = "$done_first" ] || fail "results.json does not hold the $done_first points saved"
     "$volgraph" sweep "$tmp/tiny.json" -o "$tmp/s" >"$tmp/out" 2>"$tmp/err" || fail "resumed sweep exit $?: $(cat "$tmp/err")"
     grep -q "$((8 - done_first)) points run, $done_first already done" "$tmp/out" || fail "resume: $(cat "$tmp/out")"
     [ "$(points_in "$tmp/s")" = 8 ] || fail "expected 8 points after the resume"

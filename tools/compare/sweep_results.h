@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,8 +86,10 @@ using PointRunner = std::function<PointResult(const SweepPoint&)>;
 struct SweepSummary {
   int ran = 0, skipped = 0, failed = 0;  // ran counts the failed too; skipped: already in DIR/points
 };
+// `writes`, when given, is held while a point's file and the aggregates are written
+// (interrupt_guard.h: a Ctrl-C then waits for them).
 SweepSummary run_sweep(const SweepSpec& spec, const std::string& dir, const PointRunner& runner, std::ostream& progress,
-                       bool terminal);
+                       bool terminal, std::mutex* writes = nullptr);
 
 // --emit-jobs: DIR/jobs.txt (one self-contained shell command a line, `command_for(point)`)
 // and DIR/manifest.json (the spec, each point's id, label and command), for GNU parallel

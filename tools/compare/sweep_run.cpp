@@ -2,6 +2,7 @@
 // the aggregates rewritten after it, with the progress shown as it goes.
 #include <algorithm>
 #include <chrono>
+#include <mutex>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -125,7 +126,7 @@ void stamp(PointResult& result, const SweepPoint& point, const SweepSpec& spec, 
 }  // namespace
 
 SweepSummary run_sweep(const SweepSpec& spec, const std::string& dir, const PointRunner& runner, std::ostream& progress,
-                       bool terminal) {
+                       bool terminal, std::mutex* writes) {
   std::vector<PointResult> results = read_results(dir);
   std::set<std::string> done;
   for (const PointResult& r : results) done.insert(r.id);
@@ -155,9 +156,12 @@ SweepSummary run_sweep(const SweepSpec& spec, const std::string& dir, const Poin
     }
     const auto end = Clock::now();
     stamp(result, *point, spec, std::chrono::duration<double>(end - start).count());
-    save_point(dir, result);
     results.push_back(result);
-    write_aggregates(dir, spec, results, png);
+    {
+      const std::unique_lock<std::mutex> lock = writes ? std::unique_lock<std::mutex>(*writes) : std::unique_lock<std::mutex>();
+      save_point(dir, result);
+      write_aggregates(dir, spec, results, png);
+    }
     ++summary.ran;
     summary.failed += !result.ok;
     shown.finished(point_name(*point, several_series), result, spec.metric,
