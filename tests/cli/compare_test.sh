@@ -19,17 +19,8 @@ set -uo pipefail
 volgraph=$1 mode=$2 arg=${3:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-
-# expect_exit CODE MESSAGE COMMAND…: the command exits CODE with MESSAGE on the first line of stderr.
-expect_exit() {
-  expected_code=$1 expected=$2
-  shift 2
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  code=$?
-  [ "$code" -eq "$expected_code" ] || fail "'$*' exit $code (expected $expected_code); stderr: $(head -c 2000 "$tmp/err")"
-  head -n 1 "$tmp/err" | grep -qF -- "$expected" || fail "'$*': expected '$expected', got: $(head -c 2000 "$tmp/err")"
-}
+# shellcheck source=tests/cli/test_lib.sh
+. "$(dirname "$0")/test_lib.sh"
 
 # json_value FILE EXPR: a Python expression over the parsed JSON `j`, printed.
 json_value() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); print($2)" "$1"; }

@@ -1,6 +1,7 @@
 // A sweep point's file (every field, non-finite figures), the points folder, the
 // Pareto front per device, and the aggregate files (results.json, results.csv, the
 // report and its plot).
+#include "tests/compare/test_files.h"
 #include "tools/compare/sweep_results.h"
 
 #include <gtest/gtest.h>
@@ -21,24 +22,8 @@ namespace {
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-struct TempDir {
-  std::string path;
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "volgraph_sweep_XXXXXX").string();
-    path = mkdtemp(pattern.data());
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-};
-
-std::string read(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test_files::read;
+using test_files::TempDir;
 
 PointResult point(const std::string& id, const std::string& device, double ms, double error,
                   const std::string& series = "s") {

@@ -12,29 +12,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "tests/compare/test_files.h"
 #include "tools/compare/sweep_results.h"
 
 namespace volgraph::compare {
 namespace {
 
-struct TempDir {
-  std::string path;
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "volgraph_sweep_run_XXXXXX").string();
-    path = mkdtemp(pattern.data());
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-};
-
-std::string read(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test_files::read;
+using test_files::TempDir;
 
 SweepSpec spec_of(int points) {
   SweepSpec spec;

@@ -56,7 +56,7 @@ struct AbReport {
   std::string backend, device, driver;
   bool device_is_cpu = false;    // lavapipe: the "GPU" is this CPU; the report says so
   uint32_t width = 0, height = 0;
-  int frames = 1;                // frames rendered before the compared image
+  int frames = 1;                // the compared image is the last of this many frames (1: the first frame)
   std::vector<Rendered> renders;          // A, B, and the reference when there is one
   std::vector<Comparison> comparisons;    // A and B against the reference, or B against A
   std::vector<std::string> notes;         // what the reader must know (timing clock, exclusions)

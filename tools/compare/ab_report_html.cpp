@@ -351,7 +351,7 @@ std::string header_html(const AbReport& report) {
   out << fact("backend", escape(report.backend));
   out << fact("driver", escape(report.driver));
   out << fact("image", std::to_string(report.width) + " × " + std::to_string(report.height));
-  out << fact("frames", std::to_string(report.frames) + " rendered before the compared image");
+  out << fact("frames", report.frames == 1 ? std::string("the compared image is the first frame") : "the compared image is frame " + std::to_string(report.frames));
   out << fact("volgraph", escape(report.volgraph_version));
   out << fact("command", "<code>" + escape(report.command_line) + "</code>");
   out << "</dl>\n</header>\n";

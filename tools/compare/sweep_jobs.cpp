@@ -29,14 +29,6 @@ struct Copy {
   std::string dir;
 };
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path.string() + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::vector<std::filesystem::path> point_files(const std::string& dir) {
   const std::filesystem::path folder = std::filesystem::path(dir) / "points";
   std::vector<std::filesystem::path> files;
@@ -77,7 +69,7 @@ std::vector<Copy> gather(const std::vector<std::string>& inputs) {
   std::map<std::pair<std::string, std::string>, size_t> by_id_device;
   for (const std::string& dir : inputs) {
     for (const auto& file : point_files(dir)) {
-      PointResult result = parse_point_result(read_text(file), file.string());
+      PointResult result = read_point_file(file);
       result.pareto = false;
       Copy copy{result, point_result_json(result), dir};
       const auto key = std::make_pair(result.id, result.device);

@@ -174,14 +174,6 @@ std::span<const std::byte> bytes_of(const std::string& text) {
   return std::as_bytes(std::span(text.data(), text.size()));
 }
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path.string() + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // A point id names its file: it must not leave the points folder.
 void check_id(const std::string& id) {
   const bool safe = !id.empty() && id.front() != '.' && id.find_first_of("/\\\n") == std::string::npos;
@@ -241,6 +233,14 @@ void mark_pareto(std::vector<PointResult>& results) {
   }
 }
 
+PointResult read_point_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path.string() + ": cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_point_result(text.str(), path.string());
+}
+
 std::vector<PointResult> read_results(const std::string& dir) {
   const std::filesystem::path folder = std::filesystem::path(dir) / "points";
   std::vector<PointResult> results;
@@ -251,7 +251,7 @@ std::vector<PointResult> read_results(const std::string& dir) {
     if (is_point_file(entry)) files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
-  for (const auto& file : files) results.push_back(parse_point_result(read_text(file), file.string()));
+  for (const auto& file : files) results.push_back(read_point_file(file));
   std::stable_sort(results.begin(), results.end(), [](const PointResult& a, const PointResult& b) {
     return std::tie(a.id, a.device) < std::tie(b.id, b.device);
   });

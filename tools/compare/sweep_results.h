@@ -6,6 +6,7 @@
 // pareto.png beside it.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <iosfwd>
 #include <mutex>
@@ -39,6 +40,9 @@ struct PointResult {
 std::string point_result_json(const PointResult& result);
 // Throws std::runtime_error naming `file` when the text is not a point result.
 PointResult parse_point_result(const std::string& text, const std::string& file);
+// The point result in the file at `path` (parse_point_result of its text); throws
+// std::runtime_error naming it when it cannot be read.
+PointResult read_point_file(const std::filesystem::path& path);
 
 // Marks, within each device, the points no other point of that device beats in both
 // frame time (median) and the metric; failed points are never on the front.
