@@ -107,6 +107,52 @@ struct Media {
   std::vector<MediumVolume> volumes;
 };
 
+// One layer of an atmosphere's density profile (Bruneton 2017, DensityProfileLayer): at
+// altitude h (m) inside the layer, density = exp_term · e^(exp_scale · h) + linear_term · h
+// + constant_term, clamped to [0, 1].
+struct DensityLayer {
+  double width = 0;  // m: the layer's thickness (the upper layer's is ignored: it goes to the top)
+  double exp_term = 0;
+  double exp_scale = 0;      // 1/m
+  double linear_term = 0;    // 1/m
+  double constant_term = 0;
+};
+
+// Two layers: `lower` from the ground to its width, `upper` above it (Bruneton 2017).
+struct DensityProfile {
+  DensityLayer lower, upper;
+};
+
+enum class MiePhase : uint8_t { henyey_greenstein, cornette_shanks };
+
+// A planet's atmosphere (Bruneton 2017's model, as Hillaire 2020 uses it): a spherical
+// ground of `bottom_radius`, air up to `top_radius`, Rayleigh scattering, Mie scattering
+// and absorption, and an absorbing (ozone) layer, each a coefficient at density 1 times its
+// profile. Its sun is the scene's directional light `sun_light`: that light's direction,
+// and its irradiance as it arrives at the top of the atmosphere. The scene's y = 0 is
+// `origin_altitude` above the ground, straight above the planet's centre: the camera's
+// altitude is origin_altitude + its y. The defaults are the `earth` preset (Bruneton 2017's
+// demo constants, which Hillaire 2020 uses).
+struct Atmosphere {
+  std::string preset = "earth";  // "earth", "mars" or "custom": what the values started from
+  double bottom_radius = 6360e3;  // m
+  double top_radius = 6420e3;     // m
+  Vec3 rayleigh_scattering{5.802e-6, 13.558e-6, 33.1e-6};  // 1/m at density 1
+  DensityProfile rayleigh_density{{}, {0, 1, -1.0 / 8000, 0, 0}};  // e^(−h / 8 km)
+  Vec3 mie_scattering{3.996e-6, 3.996e-6, 3.996e-6};  // 1/m
+  Vec3 mie_extinction{4.44e-6, 4.44e-6, 4.44e-6};     // 1/m (scattering + absorption)
+  DensityProfile mie_density{{}, {0, 1, -1.0 / 1200, 0, 0}};  // e^(−h / 1.2 km)
+  double mie_g = 0.8;
+  MiePhase mie_phase = MiePhase::cornette_shanks;
+  Vec3 absorption_extinction{0.650e-6, 1.881e-6, 0.085e-6};  // 1/m (ozone)
+  DensityProfile absorption_density{{25e3, 0, 0, 1.0 / 15e3, -2.0 / 3}, {0, 0, 0, -1.0 / 15e3, 8.0 / 3}};  // tent 10–25–40 km
+  Vec3 ground_albedo{0.3, 0.3, 0.3};
+  double origin_altitude = 0;        // m: the scene's y = 0 above the ground
+  int sun_light = -1;                // index into Scene::lights (a directional light); -1: none
+  double sun_angular_radius = 0.004675;  // rad
+  Where where;
+};
+
 struct Scene {
   Camera camera;
   Vec3 background{0, 0, 0};  // radiance
