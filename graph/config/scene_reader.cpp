@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "physics/atmosphere.h"  // the atmosphere's presets
 #include "physics/media.h"  // header-only: sigma from a transmittance colour
 #include "physics/lighting.h"  // header-only: the light limit
 #include "physics/noise.h"  // header-only: the octave limit
+#include "physics/sun_position.h"  // header-only: the sun from the time of day
 
 namespace volgraph::config {
 namespace {
@@ -297,10 +299,301 @@ void read_media(const Node& n, Media& media) {
   }
 }
 
+// The atmosphere (scene.h Atmosphere). A planet's radius in [1 m, 1e9 m]: a 1 km planet
+// is the smallest the atmosphere passes are tested on, 1e9 m the loader's extent of any
+// scene.
+constexpr double kMinPlanetRadius = 1;
+constexpr double kMaxPlanetRadius = kHuge;
+constexpr double kMaxSunAngularRadius = 0.5;  // rad: the disk's radius; the sun seen from 1 AU is 0.004675
+
+// An interval whose ends may be open, with the unit its messages name.
+struct Interval {
+  double min, max;
+  bool min_open = false, max_open = false;
+  const char* unit = "";
+};
+
+std::string full_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", v);
+  return text;
+}
+
+std::string interval_text(const Interval& r) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%s%.9g, %.9g%s%s", r.min_open ? "(" : "[", r.min, r.max, r.max_open ? ")" : "]", r.unit);
+  return text;
+}
+
+bool inside(double v, const Interval& r) {
+  return std::isfinite(v) && (r.min_open ? v > r.min : v >= r.min) && (r.max_open ? v < r.max : v <= r.max);
+}
+
+// Member `key` (when present) into `out` when it is a number inside `range`; false when
+// it is present and is not (one message: the interval and what was there).
+bool read_in(const Node& obj, const char* key, double& out, const Interval& range) {
+  const auto m = obj.member(key);
+  if (!m) return true;
+  const Json& j = m->json();
+  if (j.is_number() && inside(j.get<double>(), range)) {
+    out = j.get<double>();
+    return true;
+  }
+  m->error("expected a number in " + interval_text(range) + ", got " + (j.is_number() ? j.dump() : describe(j)));
+  return false;
+}
+
+// The first of `keys` the object has, else the object itself: where a message about
+// values that belong together points.
+Node first_member(const Node& n, std::initializer_list<const char*> keys) {
+  for (const char* key : keys) {
+    if (auto m = n.member(key)) return *m;
+  }
+  return n;
+}
+
+// One layer of a profile (Bruneton 2017's DensityProfileLayer); keys left out are 0. Its
+// exponential may only decay with altitude: e^(exp_scale · h) with exp_scale > 0 grows
+// past float's range (e^88.7) within the atmosphere of any planet at 1/m scales.
+void read_layer(const Node& n, DensityLayer& layer, bool upper) {
+  if (!n.object({"width", "exp_term", "exp_scale", "linear_term", "constant_term"})) return;
+  layer = DensityLayer{};
+  if (auto w = n.member("width"); w && upper) {
+    w->error("the upper layer reaches the top of the atmosphere: it has no \"width\"");
+  } else {
+    read(n, "width", layer.width, 0, kHuge);
+  }
+  read(n, "exp_term", layer.exp_term, -kHuge, kHuge);
+  read(n, "linear_term", layer.linear_term, -kHuge, kHuge);
+  read(n, "constant_term", layer.constant_term, -kHuge, kHuge);
+  if (auto e = n.member("exp_scale")) {
+    const auto v = e->number(-kHuge, kHuge);
+    if (v && *v > 0) {
+      e->error("exp_scale is " + full_number(*v) + " 1/m; expected at most 0 (a layer's exponential may only decay with altitude)");
+    } else if (v) {
+      layer.exp_scale = *v;
+    }
+  }
+}
+
+// A profile `{"lower": layer, "upper": layer}`: it replaces the preset's, a layer left out
+// is 0 (the upper alone is a profile from the ground up).
+void read_profile(const Node& n, DensityProfile& profile) {
+  if (!n.object({"lower", "upper"})) return;
+  profile = DensityProfile{};
+  if (auto l = n.member("lower")) read_layer(*l, profile.lower, false);
+  if (auto u = n.member("upper")) read_layer(*u, profile.upper, true);
+}
+
+// `<x>_density` (a profile) or the shorthand `<x>_scale_height` H (m): e^(−h / H) from the
+// ground up (Bruneton 2017's exponential layer: exp_term 1, exp_scale −1/H).
+void read_density(const Node& n, const std::string& name, DensityProfile& profile) {
+  const std::string profile_key = name + "_density", height_key = name + "_scale_height";
+  const auto given = n.member(profile_key.c_str());
+  const auto height = n.member(height_key.c_str());
+  if (given && height) {
+    height->error("give one of \"" + profile_key + "\" or \"" + height_key + "\"");
+    return;
+  }
+  if (given) read_profile(*given, profile);
+  double h = 0;
+  if (height && read_in(n, height_key.c_str(), h, {0, kHuge, true, false, " m"})) {
+    profile = DensityProfile{{}, {0, 1, -1 / h, 0, 0}};
+  }
+}
+
+// The starting point: a preset (physics/atmosphere.h), or "custom": every coefficient and
+// density 0, the rest as the earth's, the radii required.
+std::optional<Atmosphere> atmosphere_start(const Node& n) {
+  const std::vector<std::string> names = {"earth", "mars", "custom"};
+  std::string name = "earth";
+  if (auto p = n.member("preset")) {
+    const auto text = p->string();
+    if (!text) return std::nullopt;
+    if (std::find(names.begin(), names.end(), *text) == names.end()) {
+      p->error("unknown preset \"" + *text + "\"" + did_you_mean(*text, names) + "; expected " + one_of(names));
+      return std::nullopt;
+    }
+    name = *text;
+  }
+  if (name != "custom") {
+    std::optional<Atmosphere> preset = physics::atmosphere_preset(name);
+    if (!preset) n.error("the atmosphere preset \"" + name + "\" is not available");
+    return preset;
+  }
+  std::vector<std::string> missing;
+  for (const char* key : {"bottom_radius", "top_radius"}) {
+    if (!n.member(key)) missing.push_back(std::string("\"") + key + "\"");
+  }
+  if (!missing.empty()) {
+    n.error("a \"custom\" atmosphere needs " + missing[0] + (missing.size() > 1 ? " and " + missing[1] : "") +
+            " (it starts from no preset)");
+    return std::nullopt;
+  }
+  Atmosphere a;
+  a.preset = "custom";
+  a.rayleigh_scattering = a.mie_scattering = a.mie_extinction = a.absorption_extinction = Vec3{0, 0, 0};
+  a.rayleigh_density = a.mie_density = a.absorption_density = DensityProfile{};
+  return a;
+}
+
+// In a custom atmosphere a coefficient given without its density scatters nowhere (the
+// densities start at 0): one message names the first such pair.
+void check_custom_densities(const Node& n) {
+  const std::pair<const char*, const char*> pairs[] = {{"rayleigh_scattering", "rayleigh"},
+                                                       {"mie_scattering", "mie"},
+                                                       {"mie_extinction", "mie"},
+                                                       {"absorption_extinction", "absorption"}};
+  for (const auto& [coefficient, name] : pairs) {
+    const std::string density = std::string(name) + "_density", height = std::string(name) + "_scale_height";
+    if (!n.member(coefficient) || n.member(density.c_str()) || n.member(height.c_str())) continue;
+    const std::string alternative = std::string(name) == "absorption" ? "" : " or \"" + height + "\"";
+    n.member(coefficient)->error("\"" + std::string(coefficient) + "\" needs \"" + density + "\"" + alternative +
+                                 " beside it: a custom atmosphere's densities start at 0");
+    return;
+  }
+}
+
+// The radii: positive, within [1 m, 1e9 m], the top above the ground; the scene's origin
+// at or above the ground and below the top.
+void check_radii(const Node& n, const Atmosphere& a, bool radii_read, bool origin_read) {
+  if (!radii_read) return;
+  if (a.top_radius <= a.bottom_radius) {
+    first_member(n, {"top_radius", "bottom_radius"}).error("top_radius (" + full_number(a.top_radius) + " m) must exceed bottom_radius (" +
+             full_number(a.bottom_radius) + " m)");
+    return;
+  }
+  if (origin_read && a.origin_altitude >= a.top_radius - a.bottom_radius) {
+    first_member(n, {"origin_altitude"}).error("origin_altitude (" + full_number(a.origin_altitude) +
+                                       " m) must be below the top of the atmosphere (top_radius − bottom_radius = " +
+                                       full_number(a.top_radius - a.bottom_radius) + " m)");
+  }
+}
+
+// Mie scattering cannot exceed Mie extinction (extinction = scattering + absorption).
+void check_mie(const Node& n, const Atmosphere& a) {
+  for (size_t c = 0; c < 3; ++c) {
+    if (a.mie_scattering[c] <= a.mie_extinction[c]) continue;
+    first_member(n, {"mie_scattering", "mie_extinction"}).error("mie_scattering (" + full_number(a.mie_scattering[c]) + " 1/m in channel " + std::to_string(c) +
+             ") exceeds mie_extinction (" + full_number(a.mie_extinction[c]) +
+             "); expected scattering ≤ extinction (extinction = scattering + absorption)");
+    return;
+  }
+}
+
+std::string light_type_name(LightType t) {
+  switch (t) {
+    case LightType::directional: return "directional";
+    case LightType::point: return "point";
+    case LightType::spot: return "spot";
+  }
+  return "";
+}
+
+// The sun light's index: the light named by "light", else the first directional light.
+std::optional<int> find_sun_light(const Node& atmosphere, const std::optional<Node>& light, const std::vector<Light>& lights) {
+  if (!light) {
+    for (size_t i = 0; i < lights.size(); ++i) {
+      if (lights[i].type == LightType::directional) return int(i);
+    }
+    atmosphere.error("the atmosphere's sun is the scene's first directional light, and the scene has none; expected a "
+                     "directional light in \"lights\" (or \"sun\": {\"light\": NAME})");
+    return std::nullopt;
+  }
+  const auto name = light->string();
+  if (!name) return std::nullopt;
+  std::vector<std::string> names;
+  for (size_t i = 0; i < lights.size(); ++i) {
+    if (lights[i].name != *name) {
+      if (!lights[i].name.empty()) names.push_back(lights[i].name);
+      continue;
+    }
+    if (lights[i].type == LightType::directional) return int(i);
+    light->error("the light \"" + *name + "\" is a " + light_type_name(lights[i].type) +
+                 " light; the atmosphere's sun must be a directional light");
+    return std::nullopt;
+  }
+  light->error("unknown light \"" + *name + "\"" + did_you_mean(*name, names) +
+               (names.empty() ? "; the scene has no named lights" : "; expected " + one_of(names)));
+  return std::nullopt;
+}
+
+// The sun's position from "time_of_day" (true solar time, hours in [0, 24)),
+// "latitude_deg" and "day_of_year", all three together: they set the sun light's
+// direction (physics/sun_position.h; below the horizon is night, and allowed).
+void read_sun_position(const Node& sun, Light& light) {
+  const char* keys[] = {"time_of_day", "latitude_deg", "day_of_year"};
+  std::vector<std::string> given, missing;
+  for (const char* key : keys) (sun.member(key) ? given : missing).push_back(key);
+  if (given.empty()) return;
+  if (!missing.empty()) {
+    std::string list;
+    for (const std::string& m : missing) list += (list.empty() ? "\"" : ", \"") + m + "\"";
+    sun.error("the sun's \"" + given[0] + "\" needs " + list +
+              " beside it: time_of_day, latitude_deg and day_of_year set the sun light's direction together");
+    return;
+  }
+  double hours = 0, latitude = 0;
+  const bool hours_read = read_in(sun, "time_of_day", hours, {0, 24, false, true, " h"});
+  const bool latitude_read = read_in(sun, "latitude_deg", latitude, {-90, 90, false, false, "°"});
+  const auto day = sun.member("day_of_year")->integer(1, 366);
+  if (!hours_read || !latitude_read || !day) return;
+  const Vec3 toward_sun = physics::sun_direction(hours, latitude, int(*day));
+  light.direction = physics::scaled(toward_sun, -1);  // the light travels away from the sun
+}
+
+// "sun": which directional light, its angular radius, and optionally its position by time.
+void read_sun(const Node& atmosphere, Scene& scene, Atmosphere& a) {
+  const auto sun = atmosphere.member("sun");
+  if (sun && !sun->object({"light", "angular_radius", "time_of_day", "latitude_deg", "day_of_year"})) return;
+  if (sun) read_in(*sun, "angular_radius", a.sun_angular_radius, {0, kMaxSunAngularRadius, true, false, " rad"});
+  const auto index = find_sun_light(atmosphere, sun ? sun->member("light") : std::nullopt, scene.lights);
+  if (!index) return;
+  a.sun_light = *index;
+  if (sun) read_sun_position(*sun, scene.lights[size_t(*index)]);
+}
+
+void read_atmosphere(const Node& n, Scene& scene) {
+  if (!n.object({"preset", "bottom_radius", "top_radius", "rayleigh_scattering", "rayleigh_density",
+                 "rayleigh_scale_height", "mie_scattering", "mie_extinction", "mie_density", "mie_scale_height",
+                 "mie_g", "mie_phase", "absorption_extinction", "absorption_density", "ground_albedo",
+                 "origin_altitude", "sun"})) {
+    return;
+  }
+  std::optional<Atmosphere> start = atmosphere_start(n);
+  if (!start) return;
+  Atmosphere a = *start;
+  a.where = n.where();
+  const Interval radius{kMinPlanetRadius, kMaxPlanetRadius, false, false, " m"};
+  const bool bottom_read = read_in(n, "bottom_radius", a.bottom_radius, radius);
+  const bool top_read = read_in(n, "top_radius", a.top_radius, radius);
+  read(n, "rayleigh_scattering", a.rayleigh_scattering, 0, kMaxCoefficient);
+  read_density(n, "rayleigh", a.rayleigh_density);
+  read(n, "mie_scattering", a.mie_scattering, 0, kMaxCoefficient);
+  read(n, "mie_extinction", a.mie_extinction, 0, kMaxCoefficient);
+  read_density(n, "mie", a.mie_density);
+  read(n, "mie_g", a.mie_g, -0.999, 0.999);
+  if (auto p = n.member("mie_phase")) {
+    if (auto phase = choice<MiePhase>(*p, {{"henyey_greenstein", MiePhase::henyey_greenstein},
+                                           {"cornette_shanks", MiePhase::cornette_shanks}})) {
+      a.mie_phase = *phase;
+    }
+  }
+  read(n, "absorption_extinction", a.absorption_extinction, 0, kMaxCoefficient);
+  if (auto d = n.member("absorption_density")) read_profile(*d, a.absorption_density);
+  read(n, "ground_albedo", a.ground_albedo, 0, 1);
+  const bool origin_read = read_in(n, "origin_altitude", a.origin_altitude, {0, kHuge, false, false, " m"});
+  if (a.preset == "custom") check_custom_densities(n);
+  check_radii(n, a, bottom_read && top_read, origin_read);
+  check_mie(n, a);
+  read_sun(n, scene, a);
+  scene.atmosphere = a;
+}
+
 }  // namespace
 
 void read_scene(const Node& n, Scene& scene) {
-  if (!n.object({"camera", "background", "materials", "objects", "lights", "media"})) return;
+  if (!n.object({"camera", "background", "materials", "objects", "lights", "media", "atmosphere"})) return;
   if (auto c = n.member("camera")) {
     Camera camera;
     read_camera(*c, camera);
@@ -342,6 +635,10 @@ void read_scene(const Node& n, Scene& scene) {
   if (auto media = n.member("media")) {
     scene.media = Media{};
     read_media(*media, scene.media);
+  }
+  if (auto atmosphere = n.member("atmosphere")) {  // after the lights: its sun is one of them
+    scene.atmosphere.reset();
+    read_atmosphere(*atmosphere, scene);
   }
 }
 

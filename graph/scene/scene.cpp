@@ -34,6 +34,7 @@ SceneFeatures Scene::features() const {
     const Material* m = find_material(o.material);
     if (m && m->transmission > 0) f |= feature_bit(SceneFeature::translucent_objects);
   }
+  if (atmosphere) f |= feature_bit(SceneFeature::atmosphere);
   return f;
 }
 
@@ -63,6 +64,17 @@ class SceneHasher {
     add(t.translate);
     add(t.rotate_deg);
     add(t.scale);
+  }
+  void add(const DensityLayer& l) {
+    add(l.width);
+    add(l.exp_term);
+    add(l.exp_scale);
+    add(l.linear_term);
+    add(l.constant_term);
+  }
+  void add(const DensityProfile& p) {
+    add(p.lower);
+    add(p.upper);
   }
   void add(const Medium& m) {
     add(m.sigma_s);
@@ -141,6 +153,33 @@ void hash_geometry(SceneHasher& h, const Scene& scene) {
   }
 }
 
+// The atmosphere's values (its preset's name excluded: the values are what it gave) and
+// its sun: the light's direction and irradiance, which the sky's LUTs depend on.
+void hash_atmosphere(SceneHasher& h, const std::optional<Atmosphere>& atmosphere, const std::vector<Light>& lights) {
+  h.add(atmosphere.has_value());
+  if (!atmosphere) return;
+  const Atmosphere& a = *atmosphere;
+  h.add(a.bottom_radius);
+  h.add(a.top_radius);
+  h.add(a.rayleigh_scattering);
+  h.add(a.rayleigh_density);
+  h.add(a.mie_scattering);
+  h.add(a.mie_extinction);
+  h.add(a.mie_density);
+  h.add(a.mie_g);
+  h.add(int64_t(a.mie_phase));
+  h.add(a.absorption_extinction);
+  h.add(a.absorption_density);
+  h.add(a.ground_albedo);
+  h.add(a.origin_altitude);
+  h.add(a.sun_angular_radius);
+  const bool has_sun = a.sun_light >= 0 && size_t(a.sun_light) < lights.size();
+  h.add(has_sun);
+  if (!has_sun) return;
+  h.add(lights[size_t(a.sun_light)].direction);
+  h.add(lights[size_t(a.sun_light)].irradiance);
+}
+
 }  // namespace
 
 uint64_t Scene::hash(ScenePartMask parts) const {
@@ -151,6 +190,7 @@ uint64_t Scene::hash(ScenePartMask parts) const {
   if (parts & part_bit(ScenePart::media)) hash_media(h, media);
   if (parts & part_bit(ScenePart::geometry)) hash_geometry(h, *this);
   if (parts & part_bit(ScenePart::background)) h.add(background);
+  if (parts & part_bit(ScenePart::atmosphere)) hash_atmosphere(h, atmosphere, lights);
   return h.value();
 }
 

@@ -160,6 +160,7 @@ struct Scene {
   std::vector<Object> objects;
   std::vector<Light> lights;
   Media media;
+  std::optional<Atmosphere> atmosphere;  // none: no sky, no aerial perspective
 
   SceneFeatures features() const;
   // A hash of the parts named (every value in them): equal scenes give equal hashes, and
