@@ -163,7 +163,8 @@ Graph GraphBuilder::finish() { return std::move(graph_); }
 
 namespace {
 
-Extent extent_of(const SizeSpec& size, ResourceKind kind, Extent output_size, int64_t size_param, int64_t divisor, int64_t depth) {
+Extent extent_of(const SizeSpec& size, ResourceKind kind, Extent output_size, int64_t size_param, int64_t divisor, int64_t depth,
+                 int64_t height) {
   Extent e{};
   switch (size.mode) {
     case SizeSpec::Mode::absolute:
@@ -180,8 +181,9 @@ Extent extent_of(const SizeSpec& size, ResourceKind kind, Extent output_size, in
     }
     case SizeSpec::Mode::square_param: {
       const uint32_t side = static_cast<uint32_t>(std::max<int64_t>(1, size_param));
+      const uint32_t high = size.height_param.empty() ? side : static_cast<uint32_t>(std::max<int64_t>(1, height));
       const int64_t layers = size.depth_param.empty() ? int64_t{size.absolute.depth} : depth;
-      e = {side, side, uint32_t(std::max<int64_t>(1, layers))};
+      e = {side, high, uint32_t(std::max<int64_t>(1, layers))};
       break;
     }
   }
@@ -192,12 +194,12 @@ Extent extent_of(const SizeSpec& size, ResourceKind kind, Extent output_size, in
 }  // namespace
 
 ResourceDesc resolve_slot(const PassDecl& decl, const SlotDecl& slot, Extent output_size, int64_t size_param, int64_t divisor,
-                          int64_t depth) {
+                          int64_t depth, int64_t height) {
   ResourceDesc d;
   d.kind = slot.kind;
   d.format = slot.format;
   d.persistent = slot.persistent || decl.cached;  // a cached pass keeps its outputs across frames
-  d.extent = extent_of(slot.size, slot.kind, output_size, size_param, divisor, depth);
+  d.extent = extent_of(slot.size, slot.kind, output_size, size_param, divisor, depth, height);
   if (slot.size.mode == SizeSpec::Mode::absolute) d.buffer_bytes = slot.size.buffer_bytes;
   return d;
 }
@@ -211,7 +213,7 @@ void resize(Graph& graph, Extent output_size) {
     } else if (r.previous_of != kNone) {
       r.desc.extent = graph.resources[r.previous_of].desc.extent;
     } else if (rule.set) {
-      r.desc.extent = extent_of(rule.size, r.desc.kind, output_size, rule.side, rule.divisor, rule.depth);
+      r.desc.extent = extent_of(rule.size, r.desc.kind, output_size, rule.side, rule.divisor, rule.depth, rule.height);
     }
   }
   // A history is made after the output it follows, but an output shaped like a history

@@ -54,7 +54,7 @@ struct GraphPass {
 struct SizeRule {
   bool set = false;  // false: the extent is fixed (buffers, graphs built by hand)
   SizeSpec size{};
-  int64_t side = 0, divisor = 1, depth = 1;  // the values of the size's parameters (resolve_slot)
+  int64_t side = 0, divisor = 1, depth = 1, height = 0;  // the values of the size's parameters (resolve_slot)
   uint32_t like = kNone;  // shaped like this resource (an output_like slot's input)
 };
 
@@ -120,8 +120,9 @@ void resize(Graph& graph, Extent output_size);
 // (size_param: the value of a square_param size, 0 when unused).
 // `size_param`: the value of the slot's size parameter (SizeSpec::param), `divisor`: of
 // its divisor parameter (SizeSpec::divisor_param), `depth`: of its depth parameter
-// (SizeSpec::depth_param), when it has them.
+// (SizeSpec::depth_param), `height`: of its height parameter (SizeSpec::height_param), when
+// it has them.
 ResourceDesc resolve_slot(const PassDecl& decl, const SlotDecl& slot, Extent output_size, int64_t size_param,
-                          int64_t divisor = 1, int64_t depth = 1);
+                          int64_t divisor = 1, int64_t depth = 1, int64_t height = 0);
 
 }  // namespace volgraph

@@ -87,6 +87,12 @@ SizeSpec SizeSpec::square_layers_of(std::string side_param, std::string depth_pa
   return s;
 }
 
+SizeSpec SizeSpec::rect_of(std::string width_param, std::string height_param) {
+  SizeSpec s = square_of(std::move(width_param));
+  s.height_param = std::move(height_param);
+  return s;
+}
+
 SizeSpec SizeSpec::bytes(uint64_t n) {
   SizeSpec s;
   s.mode = Mode::absolute;

@@ -23,6 +23,7 @@ struct SizeSpec {
   std::string param;             // square_param: the side; relative: the depth, when set
   std::string divisor_param;     // relative: x and y are also divided by this parameter, when set
   std::string depth_param;       // square_param: the depth (layers), when set
+  std::string height_param;      // square_param: the height, when set (a rectangle `param` wide)
   // divisor_param a choice parameter: each value's divisor (full resolution 1, half 2)
   std::vector<std::pair<std::string, int64_t>> divisor_choices;
   uint64_t buffer_bytes = 0;     // buffers: absolute size in bytes
@@ -37,6 +38,8 @@ struct SizeSpec {
   static SizeSpec square_of(std::string param_name);
   // A volume: square slices of side `side_param`, `depth_param` of them (light-space layers).
   static SizeSpec square_layers_of(std::string side_param, std::string depth_param);
+  // A rectangle: `width_param` wide, `height_param` high (lookup tables: 256 × 64).
+  static SizeSpec rect_of(std::string width_param, std::string height_param);
   static SizeSpec bytes(uint64_t n);
 };
 

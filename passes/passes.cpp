@@ -1,5 +1,6 @@
 #include "passes/passes.h"
 
+#include "passes/atmosphere/atmosphere_passes.h"
 #include "passes/fog/fog_passes.h"
 
 namespace volgraph {
@@ -24,6 +25,7 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(analytic_fog_pass());
   registry.add(opacity_shadow_map_pass());
   registry.add(light_volume_pass());
+  registry.add(atmosphere_transmittance_lut_pass());
 }
 
 }  // namespace volgraph

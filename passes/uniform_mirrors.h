@@ -53,6 +53,12 @@ struct GpuIntegrateParams {
   static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuIntegrateParams, method)}; }
 };
 
+// The atmosphere LUT passes' Params (shaders/atmosphere_*_lut.comp).
+struct GpuAtmosphereLutParams {
+  int32_t panels[4];  // x: Gauss–Legendre panels along each ray
+  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuAtmosphereLutParams, panels)}; }
+};
+
 // opacity_shadow_map.comp's Params.
 struct GpuOpacityParams {
   int32_t steps[4];    // x per layer, y toward the light from the column's start

@@ -63,7 +63,7 @@ std::string size_text(const SlotDecl& s) {
       if (!s.size.divisor_param.empty()) out += " / " + s.size.divisor_param;
       break;
     case SizeSpec::Mode::square_param:
-      out = s.size.param + "²";
+      out = s.size.height_param.empty() ? s.size.param + "²" : s.size.param + " × " + s.size.height_param;
       break;
   }
   if (s.kind != ResourceKind::texture3d) return out;

@@ -760,8 +760,9 @@ class Wiring {
 
   ResourceDesc output_desc(uint32_t p, const SlotDecl& slot, SizeRule* rule) {
     const PassDecl& decl = *decls_[p];
-    int64_t side = 0, divisor = 1, depth = 1;
+    int64_t side = 0, divisor = 1, depth = 1, height = 0;
     if (!slot.size.param.empty()) side = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.param))]);
+    if (!slot.size.height_param.empty()) height = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.height_param))]);
     if (!slot.size.depth_param.empty()) depth = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.depth_param))]);
     if (!slot.size.divisor_param.empty()) divisor = divisor_of(slot.size, params_[p][size_t(decl.param_index(slot.size.divisor_param))]);
     SlotDecl effective = slot;
@@ -770,8 +771,8 @@ class Wiring {
       const auto it = sizes_resolved_.find({config_.passes[p].name, slot.name});
       if (it != sizes_resolved_.end()) effective.size = it->second;
     }
-    *rule = {effective.kind != ResourceKind::buffer, effective.size, side, divisor, depth, kNone};
-    return resolve_slot(decl, effective, config_.output_size, side, divisor, depth);
+    *rule = {effective.kind != ResourceKind::buffer, effective.size, side, divisor, depth, height, kNone};
+    return resolve_slot(decl, effective, config_.output_size, side, divisor, depth, height);
   }
 
   const Config& config_;

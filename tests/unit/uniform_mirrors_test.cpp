@@ -31,6 +31,7 @@
 #include "passes/plumbing/scene_geometry.h"
 #include "passes/plumbing/shadow_view.h"
 #include "passes/uniform_mirrors.h"
+#include "physics/atmosphere.h"
 #include "physics/media_field.h"
 #include "shaders/shader_library.h"
 
@@ -224,6 +225,7 @@ TEST(UniformMirrors, PassBlocksMatchTheirShaders) {
   EXPECT_EQ(mirror_error<GpuDepthFogParams>("depth_fog.comp", 0, 5, "GpuDepthFogParams"), "");
   EXPECT_EQ(mirror_error<GpuIntegrateParams>("scatter_integrate.comp", 0, 7, "GpuIntegrateParams"), "");
   EXPECT_EQ(mirror_error<GpuOpacityParams>("opacity_shadow_map.comp", 0, 3, "GpuOpacityParams"), "");
+  EXPECT_EQ(mirror_error<GpuAtmosphereLutParams>("atmosphere_transmittance_lut.comp", 0, 1, "GpuAtmosphereLutParams"), "");
   for (const char* shader : {"fog_apply_transmittance.frag", "fog_apply_scattering.frag", "fog_apply_transmittance_depth_aware.frag",
                              "fog_apply_scattering_depth_aware.frag"}) {
     EXPECT_EQ(mirror_error<GpuFogApplyFrame>(shader, 0, 3, "GpuFogApplyFrame"), "") << shader;
@@ -254,6 +256,10 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
            {"light_volume_faces.frag", 4}, {"light_volume_resolve.frag", 3}}) {
     EXPECT_EQ(wrapped_error<fog::GpuFogFrame>(at.shader, 0, at.binding, "GpuFogFrame"), "") << at.shader;
   }
+}
+
+TEST(UniformMirrors, AtmosphereBlocksMatch) {
+  EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>("atmosphere_transmittance_lut.comp", 0, 0, "GpuAtmosphere"), "");
 }
 
 TEST(UniformMirrors, ShadowViewBlocksMatch) {

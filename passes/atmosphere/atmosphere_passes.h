@@ -1,0 +1,11 @@
+// The atmosphere's passes (a planet's sky and aerial perspective: graph/scene/scene.h
+// Atmosphere): the lookup tables first, each cached until the atmosphere or its sun changes.
+#pragma once
+
+#include "graph/pass_decl.h"
+
+namespace volgraph {
+
+PassDecl atmosphere_transmittance_lut_pass();
+
+}  // namespace volgraph
