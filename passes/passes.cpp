@@ -26,6 +26,7 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(opacity_shadow_map_pass());
   registry.add(light_volume_pass());
   registry.add(atmosphere_transmittance_lut_pass());
+  registry.add(atmosphere_multiscattering_lut_pass());
 }
 
 }  // namespace volgraph

@@ -59,6 +59,12 @@ struct GpuAtmosphereLutParams {
   static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuAtmosphereLutParams, panels)}; }
 };
 
+// atmosphere_multiscattering_lut.comp's Params.
+struct GpuMultiscatteringLutParams {
+  int32_t sampling[4];  // x: directions per axis (x² in all), y: steps a ray
+  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuMultiscatteringLutParams, sampling)}; }
+};
+
 // opacity_shadow_map.comp's Params.
 struct GpuOpacityParams {
   int32_t steps[4];    // x per layer, y toward the light from the column's start

@@ -226,6 +226,7 @@ TEST(UniformMirrors, PassBlocksMatchTheirShaders) {
   EXPECT_EQ(mirror_error<GpuIntegrateParams>("scatter_integrate.comp", 0, 7, "GpuIntegrateParams"), "");
   EXPECT_EQ(mirror_error<GpuOpacityParams>("opacity_shadow_map.comp", 0, 3, "GpuOpacityParams"), "");
   EXPECT_EQ(mirror_error<GpuAtmosphereLutParams>("atmosphere_transmittance_lut.comp", 0, 1, "GpuAtmosphereLutParams"), "");
+  EXPECT_EQ(mirror_error<GpuMultiscatteringLutParams>("atmosphere_multiscattering_lut.comp", 0, 1, "GpuMultiscatteringLutParams"), "");
   for (const char* shader : {"fog_apply_transmittance.frag", "fog_apply_scattering.frag", "fog_apply_transmittance_depth_aware.frag",
                              "fog_apply_scattering_depth_aware.frag"}) {
     EXPECT_EQ(mirror_error<GpuFogApplyFrame>(shader, 0, 3, "GpuFogApplyFrame"), "") << shader;
@@ -259,7 +260,9 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
 }
 
 TEST(UniformMirrors, AtmosphereBlocksMatch) {
-  EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>("atmosphere_transmittance_lut.comp", 0, 0, "GpuAtmosphere"), "");
+  for (const char* shader : {"atmosphere_transmittance_lut.comp", "atmosphere_multiscattering_lut.comp"}) {
+    EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>(shader, 0, 0, "GpuAtmosphere"), "") << shader;
+  }
 }
 
 TEST(UniformMirrors, ShadowViewBlocksMatch) {

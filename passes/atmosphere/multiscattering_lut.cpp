@@ -1,0 +1,80 @@
+// atmosphere_multiscattering_lut (Hillaire 2020 §5.5): Ψ_ms, the contribution of every
+// scattering order past the first for a sun of unit illuminance, taken as isotropic and
+// independent of the view, by altitude (v) and the sun's zenith cosine (u), both linear
+// (physics/atmosphere_lut.h). Each texel integrates L_2nd and f_ms over `directions`²
+// directions uniform on the sphere, `steps` steps a ray, reading the sun's transmittance
+// from the transmittance LUT (physics/atmosphere_multiscattering.h has the equations and
+// the CPU twin). The sky and the aerial perspective add σs · Ψ_ms · E at each sample.
+// 32 × 32 rgba16f as Hillaire 2020 (filtered when read). Cached with the atmosphere.
+// Shader: shaders/atmosphere_multiscattering_lut.comp.
+#include "graph/execute/pass_execution.h"
+#include "graph/scene/scene.h"
+#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/plumbing/programs.h"
+#include "passes/uniform_mirrors.h"
+#include "physics/atmosphere.h"
+
+namespace volgraph {
+namespace {
+
+struct MultiscatteringLutTable : PassTable {
+  MultiscatteringLutTable()
+      : PassTable("atmosphere_multiscattering_lut", PassKind::compute,
+                  "Hillaire 2020's isotropic multiple-scattering term Ψ_ms by altitude and sun zenith cosine.") {
+    decl.needs = feature_bit(SceneFeature::atmosphere);
+    decl.cached = true;
+    decl.frame_invariant = true;
+    decl.reads_scene = part_bit(ScenePart::atmosphere);
+  }
+  // Variants.
+  VariantHandle hillaire = variant("hillaire", "second order over a sphere of directions, 1/(1 − f_ms) for the rest (Hillaire 2020 eq. 5–10)");
+  // Parameters.
+  ParamHandle<int64_t> width = integer("width", 32, 2, 1024, "texels", "sun zenith cosines");
+  ParamHandle<int64_t> height = integer("height", 32, 2, 1024, "texels", "altitudes");
+  ParamHandle<int64_t> directions = integer("directions", 8, 1, 64, "", "directions per axis (their square in all: 64)");
+  ParamHandle<int64_t> steps = integer("steps", 20, 1, 512, "", "steps along each direction");
+  // Slots.
+  SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
+                                   "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
+  SlotHandle multiscattering = output("multiscattering", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
+                                      SizeSpec::rect_of("width", "height"), "Ψ_ms rgb for a sun of unit illuminance",
+                                      {.format_overridable = true});
+};
+
+class MultiscatteringLutExecution final : public PassExecution {
+ public:
+  explicit MultiscatteringLutExecution(const MultiscatteringLutTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    program_ = plumbing::create_compute_program(s.device, "atmosphere_multiscattering_lut.comp");
+    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(program_, 0, 0, s.name() + " atmosphere");
+    atmosphere_ = s.device.create_buffer(
+        {s.name() + " atmosphere", sizeof(physics::GpuAtmosphere), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    const GpuMultiscatteringLutParams params{{int32_t(s.param(t_.directions)), int32_t(s.param(t_.steps)), 0, 0}};
+    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 1, s.name() + " params", params);
+  }
+
+  void record(PassContext& c) override {
+    using rhi::BindGroupEntry;
+    const physics::GpuAtmosphere atmosphere = physics::pack_atmosphere(*c.scene->atmosphere);
+    c.device.write_buffer(atmosphere_, 0, std::as_bytes(std::span(&atmosphere, 1)));
+    const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
+    const rhi::BindGroupId group =
+        c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, atmosphere_), BindGroupEntry::of(1, params_),
+                                           BindGroupEntry::of(2, c.view(t_.transmittance)), BindGroupEntry::of(3, nearest),
+                                           BindGroupEntry::of(4, c.view(t_.multiscattering))});
+    const Extent size = c.extent(t_.multiscattering);
+    plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, 1});
+  }
+
+ private:
+  const MultiscatteringLutTable& t_;
+  plumbing::ComputeProgram program_;
+  rhi::BufferId atmosphere_, params_;
+};
+
+}  // namespace
+
+PassDecl atmosphere_multiscattering_lut_pass() { return pass_type<MultiscatteringLutTable, MultiscatteringLutExecution>(); }
+
+}  // namespace volgraph
