@@ -65,6 +65,13 @@ struct GpuMultiscatteringLutParams {
   static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuMultiscatteringLutParams, sampling)}; }
 };
 
+// atmosphere_skyview_lut.comp's Params.
+struct GpuSkyViewLutParams {
+  float camera[4];    // x: the camera's radius (m, at most the top's), y: the sun's zenith cosine there
+  float sampling[4];  // min and max samples a ray, the length (m) from which rays take the max, multiple scattering (1) or not (0)
+  static constexpr std::array<uint64_t, 2> offsets() { return {offsetof(GpuSkyViewLutParams, camera), offsetof(GpuSkyViewLutParams, sampling)}; }
+};
+
 // opacity_shadow_map.comp's Params.
 struct GpuOpacityParams {
   int32_t steps[4];    // x per layer, y toward the light from the column's start

@@ -9,8 +9,11 @@
 //   20 steps) against its double twin (physics/atmosphere_multiscattering.h, the sun's
 //   transmittance exact where the pass reads the LUT): every third texel within 5e-3 of the
 //   table's largest value (measured 7.1e-4: the LUT's bilinear lookup, float, fp16);
+// - atmosphere_skyview_lut (Hillaire 2020 §5.3, 192 × 108 rgba16f) against its double twin
+//   (physics/atmosphere_sky.h): single scattering alone within 5e-3 of the table's largest
+//   value (measured 6.4e-4), with Ψ_ms within 1e-2 (2.1e-3);
 // - cached: a second frame with the same atmosphere runs no LUT pass, a changed atmosphere
-//   runs it again;
+//   runs them again, a camera that climbs reruns the sky view alone;
 // - no atmosphere in the scene: the pass is culled.
 #include <algorithm>
 #include <cmath>
@@ -25,6 +28,7 @@
 #include "physics/atmosphere.h"
 #include "physics/atmosphere_lut.h"
 #include "physics/atmosphere_multiscattering.h"
+#include "physics/atmosphere_sky.h"
 #include "tests/gpu/backends.h"
 
 namespace volgraph::testing {
@@ -36,8 +40,10 @@ std::string lut_config(const std::string& atmosphere) {
              "lights": [ { "name": "sun", "type": "directional", "direction": [0, -1, -1], "irradiance": [1, 1, 1] } ],
              )" + atmosphere + R"( },
   "graph": { "passes": [ { "name": "lut", "type": "atmosphere_transmittance_lut" },
-                         { "name": "ms", "type": "atmosphere_multiscattering_lut", "inputs": { "transmittance": "lut.transmittance" } } ],
-             "outputs": ["lut.transmittance", "ms.multiscattering"] } })";
+                         { "name": "ms", "type": "atmosphere_multiscattering_lut", "inputs": { "transmittance": "lut.transmittance" } },
+                         { "name": "sky", "type": "atmosphere_skyview_lut",
+                           "inputs": { "transmittance": "lut.transmittance", "multiscattering": "ms.multiscattering" } } ],
+             "outputs": ["lut.transmittance", "ms.multiscattering", "sky.sky_view"] } })";
 }
 
 class AtmosphereLut : public OnEachBackend<> {
@@ -99,13 +105,18 @@ TEST_P(AtmosphereLut, AnUnchangedAtmosphereRunsNoLutPassAChangedOneRunsItAgain) 
   LoadedConfig config = load(R"("atmosphere": { "preset": "earth" })");
   Executor executor(device(), config.graph, &config.config.scene, {});
   executor.run_frame();
-  ASSERT_EQ(executor.timings().size(), 2u);
+  ASSERT_EQ(executor.timings().size(), 3u);
   for (const PassTiming& t : executor.timings()) EXPECT_FALSE(t.cached) << t.pass << ": the first frame fills the tables";
   executor.run_frame();
   for (const PassTiming& t : executor.timings()) EXPECT_TRUE(t.cached) << t.pass << ": an unchanged atmosphere keeps last frame's table";
   config.config.scene.atmosphere->mie_extinction = {8e-6, 8e-6, 8e-6};
   executor.run_frame();
   for (const PassTiming& t : executor.timings()) EXPECT_FALSE(t.cached) << t.pass << ": a changed atmosphere fills it again";
+  config.config.scene.camera.position[1] += 1000;
+  executor.run_frame();
+  for (const PassTiming& t : executor.timings()) {
+    EXPECT_EQ(t.cached, t.pass != "sky") << t.pass << ": a camera 1 km higher changes the sky view alone";
+  }
   const LutErrors e = transmittance_errors(executor.read_output(0), *config.config.scene.atmosphere);
   EXPECT_LT(e.zenith, 1e-4) << "the table is the changed atmosphere's";
 }
@@ -114,7 +125,7 @@ TEST_P(AtmosphereLut, NoAtmosphereNoLutPass) {
   const LoadedConfig config = load(R"("background": { "radiance": [0, 0, 0] })");
   const Plan plan = compile_loaded(config);
   EXPECT_TRUE(plan.order.empty());
-  EXPECT_EQ(plan.culled.size(), 2u);
+  EXPECT_EQ(plan.culled.size(), 3u);
 }
 
 // Ψ_ms against its double twin (the same method with the exact sun transmittance): what
@@ -144,6 +155,56 @@ TEST_P(AtmosphereLut, MultiscatteringMatchesTheDoubleTwin) {
               worst / largest, largest);
   EXPECT_GT(largest, 0);
   EXPECT_LT(worst, 5e-3 * largest);
+}
+
+// The sky-view LUT against its double twin (physics/atmosphere_sky.h with the exact sun
+// transmittance, and Ψ_ms exact where the pass reads the multiple-scattering LUT), every
+// 9th texel: single scattering alone, then with Ψ_ms on a few texels (the twin's Ψ_ms is slow).
+double sky_view_error(const Texels& lut, const Atmosphere& atmosphere, const physics::AtmosphereView& view, int stride,
+                      const physics::MultiscatteringTerm& psi, double* largest) {
+  const physics::SkyViewLutSize size{int(lut.width), int(lut.height)};
+  double worst = 0;
+  for (uint32_t j = 0; j < lut.height; j += stride) {
+    for (uint32_t i = 0; i < lut.width; i += stride) {
+      const physics::SkyViewDirection d =
+          physics::sky_view_lut_direction(atmosphere, view.r, {(i + 0.5) / lut.width, (j + 0.5) / lut.height}, size);
+      const double nu = physics::view_sun_cosine(d.mu, d.cos_azimuth, view.mu_s);
+      const Vec3 want = physics::sky_scattering(atmosphere, view.r, d.mu, view.mu_s, nu, psi);
+      for (size_t c = 0; c < 3; ++c) {
+        const double got = lut.rgba[4 * (size_t(j) * lut.width + i) + c];
+        EXPECT_TRUE(std::isfinite(got)) << "texel " << i << ", " << j;
+        *largest = std::max(*largest, want[c]);
+        worst = std::max(worst, std::abs(got - want[c]));
+      }
+    }
+  }
+  return worst;
+}
+
+TEST_P(AtmosphereLut, SkyViewMatchesTheDoubleTwin) {
+  const Atmosphere earth;
+  {
+    const LoadedConfig config = load_config_text("x.json", lut_config(R"("atmosphere": { "preset": "earth" })"), registry_,
+                                                 {.sets = {"sky.multiscattering=false"}});
+    Executor executor(device(), config.graph, &config.config.scene, {});
+    executor.run_frame();
+    const physics::AtmosphereView view = physics::atmosphere_view(config.config.scene);
+    ASSERT_NEAR(view.mu_s, std::sqrt(0.5), 1e-6);
+    double largest = 0;
+    const double worst = sky_view_error(executor.read_output(2), earth, view, 9, {}, &largest);
+    std::printf("sky-view LUT 192x108, single scattering, against the double twin: %.3g of its largest value %.3g\n", worst / largest,
+                largest);
+    EXPECT_LT(worst, 5e-3 * largest);
+  }
+  const LoadedConfig config = load(R"("atmosphere": { "preset": "earth" })");
+  Executor executor(device(), config.graph, &config.config.scene, {});
+  executor.run_frame();
+  const physics::AtmosphereView view = physics::atmosphere_view(config.config.scene);
+  double largest = 0;
+  const auto psi = [&](double r, double mu_s) { return physics::multiscattering(earth, r, mu_s); };
+  const double worst = sky_view_error(executor.read_output(2), earth, view, 37, psi, &largest);
+  std::printf("sky-view LUT with Ψ_ms against the double twin: %.3g of its largest value %.3g\n", worst / largest, largest);
+  EXPECT_LT(worst, 1e-2 * largest);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, AtmosphereLut, ::testing::ValuesIn(gpu_backends()), backend_test_name);

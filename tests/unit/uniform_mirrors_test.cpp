@@ -227,6 +227,7 @@ TEST(UniformMirrors, PassBlocksMatchTheirShaders) {
   EXPECT_EQ(mirror_error<GpuOpacityParams>("opacity_shadow_map.comp", 0, 3, "GpuOpacityParams"), "");
   EXPECT_EQ(mirror_error<GpuAtmosphereLutParams>("atmosphere_transmittance_lut.comp", 0, 1, "GpuAtmosphereLutParams"), "");
   EXPECT_EQ(mirror_error<GpuMultiscatteringLutParams>("atmosphere_multiscattering_lut.comp", 0, 1, "GpuMultiscatteringLutParams"), "");
+  EXPECT_EQ(mirror_error<GpuSkyViewLutParams>("atmosphere_skyview_lut.comp", 0, 1, "GpuSkyViewLutParams"), "");
   for (const char* shader : {"fog_apply_transmittance.frag", "fog_apply_scattering.frag", "fog_apply_transmittance_depth_aware.frag",
                              "fog_apply_scattering_depth_aware.frag"}) {
     EXPECT_EQ(mirror_error<GpuFogApplyFrame>(shader, 0, 3, "GpuFogApplyFrame"), "") << shader;
@@ -260,7 +261,7 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
 }
 
 TEST(UniformMirrors, AtmosphereBlocksMatch) {
-  for (const char* shader : {"atmosphere_transmittance_lut.comp", "atmosphere_multiscattering_lut.comp"}) {
+  for (const char* shader : {"atmosphere_transmittance_lut.comp", "atmosphere_multiscattering_lut.comp", "atmosphere_skyview_lut.comp"}) {
     EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>(shader, 0, 0, "GpuAtmosphere"), "") << shader;
   }
 }

@@ -1,0 +1,93 @@
+// atmosphere_skyview_lut (Hillaire 2020 §5.3): the sky's radiance around the camera for a
+// sun of unit illuminance, by the view's latitude (v, non-linear either side of the horizon
+// so that it stays sharp) and its azimuth from the sun (u) — physics/atmosphere_lut.h — the
+// single scattering of Rayleigh and Mie plus σs · Ψ_ms (the multiple-scattering LUT)
+// integrated along each ray (physics/atmosphere_sky.h has the integral and its sampling;
+// the sun's transmittance from the transmittance LUT). A sky pass reads it for every pixel
+// that sees the sky, times the sun's irradiance. 192 × 108 rgba16f as Hillaire 2020.
+// Depends on the atmosphere, the sun and the camera's altitude: cached on those. A camera
+// above the atmosphere is placed at its top here (the view from space comes with the sky
+// pass). Shader: shaders/atmosphere_skyview_lut.comp.
+#include <algorithm>
+
+#include "graph/execute/pass_execution.h"
+#include "graph/scene/scene.h"
+#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/plumbing/programs.h"
+#include "passes/uniform_mirrors.h"
+#include "physics/atmosphere.h"
+#include "physics/atmosphere_sky.h"
+
+namespace volgraph {
+namespace {
+
+struct SkyViewLutTable : PassTable {
+  SkyViewLutTable()
+      : PassTable("atmosphere_skyview_lut", PassKind::compute,
+                  "Hillaire 2020's sky-view LUT: the sky's radiance around the camera by latitude and azimuth from the sun.") {
+    decl.needs = feature_bit(SceneFeature::atmosphere);
+    decl.cached = true;
+    decl.frame_invariant = true;
+    decl.reads_scene = part_bit(ScenePart::atmosphere) | part_bit(ScenePart::camera);
+  }
+  // Variants.
+  VariantHandle hillaire = variant("hillaire", "single scattering plus Ψ_ms along each ray, 4 to 14 quadratically spaced samples (Hillaire 2020)");
+  // Parameters.
+  ParamHandle<int64_t> width = integer("width", 192, 2, 4096, "texels", "azimuths from the sun");
+  ParamHandle<int64_t> height = integer("height", 108, 2, 4096, "texels", "latitudes");
+  ParamHandle<double> min_samples = number("min_samples", 4, 1, 512, "", "samples along the shortest rays");
+  ParamHandle<double> max_samples = number("max_samples", 14, 1, 512, "", "samples along rays of 100 km and longer");
+  ParamHandle<bool> multiscattering_term = flag("multiscattering", true, "add σs · Ψ_ms (off: single scattering alone)");
+  // Slots.
+  SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
+                                   "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
+  SlotHandle multiscattering = input("multiscattering", ResourceKind::texture2d, Usage::sampled,
+                                     "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering)");
+  SlotHandle sky_view = output("sky_view", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
+                               SizeSpec::rect_of("width", "height"), "sky radiance rgb for a sun of unit illuminance",
+                               {.format_overridable = true});
+};
+
+class SkyViewLutExecution final : public PassExecution {
+ public:
+  explicit SkyViewLutExecution(const SkyViewLutTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    program_ = plumbing::create_compute_program(s.device, "atmosphere_skyview_lut.comp");
+    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(program_, 0, 0, s.name() + " atmosphere");
+    plumbing::check_uniform_mirror<GpuSkyViewLutParams>(program_, 0, 1, s.name() + " params");
+    atmosphere_ = s.device.create_buffer(
+        {s.name() + " atmosphere", sizeof(physics::GpuAtmosphere), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    params_ = s.device.create_buffer({s.name() + " params", sizeof(GpuSkyViewLutParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+  }
+
+  void record(PassContext& c) override {
+    using rhi::BindGroupEntry;
+    const Atmosphere& a = *c.scene->atmosphere;
+    const physics::GpuAtmosphere atmosphere = physics::pack_atmosphere(a);
+    c.device.write_buffer(atmosphere_, 0, std::as_bytes(std::span(&atmosphere, 1)));
+    const physics::AtmosphereView view = physics::atmosphere_view(*c.scene);
+    const GpuSkyViewLutParams params{{float(std::min(view.r, a.top_radius)), float(view.mu_s), view.has_sun ? 1.0f : 0.0f, 0},
+                                     {float(c.param(t_.min_samples)), float(c.param(t_.max_samples)), 100e3f,
+                                      c.param(t_.multiscattering_term) ? 1.0f : 0.0f}};
+    c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
+    const rhi::BindGroupId group = c.bind_group(
+        program_.layouts[0],
+        {BindGroupEntry::of(0, atmosphere_), BindGroupEntry::of(1, params_), BindGroupEntry::of(2, c.view(t_.transmittance)),
+         BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(4, c.view(t_.multiscattering)),
+         BindGroupEntry::of(5, c.sampler(rhi::StockSampler::linear_clamp)), BindGroupEntry::of(6, c.view(t_.sky_view))});
+    const Extent size = c.extent(t_.sky_view);
+    plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, 1});
+  }
+
+ private:
+  const SkyViewLutTable& t_;
+  plumbing::ComputeProgram program_;
+  rhi::BufferId atmosphere_, params_;
+};
+
+}  // namespace
+
+PassDecl atmosphere_skyview_lut_pass() { return pass_type<SkyViewLutTable, SkyViewLutExecution>(); }
+
+}  // namespace volgraph

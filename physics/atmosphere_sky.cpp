@@ -1,0 +1,79 @@
+#include "physics/atmosphere_sky.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/atmosphere.h"
+#include "physics/phase.h"
+
+namespace volgraph::physics {
+namespace {
+
+// The sun's zenith cosine d along the ray (Bruneton 2017: (r mu_s + d nu) / r_d).
+double sun_mu_at(double r, double mu, double mu_s, double nu, double d) {
+  const double rd = radius_at(r, mu, d);
+  return rd > 0 ? std::clamp((r * mu_s + d * nu) / rd, -1.0, 1.0) : mu_s;
+}
+
+}  // namespace
+
+AtmosphereView atmosphere_view(const Scene& scene) {
+  AtmosphereView view;
+  if (!scene.atmosphere) return view;
+  const Atmosphere& a = *scene.atmosphere;
+  const Vec3& p = scene.camera.position;
+  const Vec3 from_centre{p[0], p[1] + a.bottom_radius + a.origin_altitude, p[2]};
+  view.r = std::sqrt(from_centre[0] * from_centre[0] + from_centre[1] * from_centre[1] + from_centre[2] * from_centre[2]);
+  if (view.r > 0) view.up = {from_centre[0] / view.r, from_centre[1] / view.r, from_centre[2] / view.r};
+  if (a.sun_light < 0 || size_t(a.sun_light) >= scene.lights.size()) return view;
+  const Vec3& d = scene.lights[size_t(a.sun_light)].direction;
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(length > 0)) return view;
+  view.toward_sun = {-d[0] / length, -d[1] / length, -d[2] / length};
+  view.mu_s = std::clamp(view.up[0] * view.toward_sun[0] + view.up[1] * view.toward_sun[1] + view.up[2] * view.toward_sun[2], -1.0, 1.0);
+  view.has_sun = true;
+  return view;
+}
+
+double view_sun_cosine(double mu, double cos_azimuth, double mu_s) {
+  const double sin_view = std::sqrt(std::max(0.0, 1 - mu * mu)), sin_sun = std::sqrt(std::max(0.0, 1 - mu_s * mu_s));
+  return std::clamp(sin_view * sin_sun * cos_azimuth + mu * mu_s, -1.0, 1.0);
+}
+
+Vec3 sky_scattering(const Atmosphere& a, double r, double mu, double mu_s, double nu, const MultiscatteringTerm& multiscattering,
+                    SkySampling sampling) {
+  Vec3 radiance{0, 0, 0};
+  const double length = distance_to_boundary(a, r, mu);
+  if (!(length > 0)) return radiance;
+  // Hillaire 2020, IntegrateScatteredLuminance: a fractional sample count, the whole
+  // samples over the part of the ray they cover, the last step stretched to its end.
+  const double count = sampling.min_samples + (sampling.max_samples - sampling.min_samples) * std::clamp(length / sampling.full_samples_length, 0.0, 1.0);
+  const double whole = std::max(1.0, std::floor(count));
+  const double covered = length * whole / count;
+  const double rayleigh_phase = phase_rayleigh(nu), mie = mie_phase(a, nu);
+  Vec3 throughput{1, 1, 1};
+  double t = 0;
+  for (int s = 0; s < int(whole); ++s) {
+    const double t0 = covered * (s / whole) * (s / whole);
+    double t1 = covered * ((s + 1) / whole) * ((s + 1) / whole);
+    if (s + 1 == int(whole)) t1 = length;
+    const double dt = t1 - t0;
+    t = t0 + 0.3 * dt;
+    const double rd = radius_at(r, mu, t), altitude = altitude_at(a, r, mu, t);
+    const double sun_mu = sun_mu_at(r, mu, mu_s, nu, t);
+    const Vec3 rayleigh = rayleigh_scattering_at(a, altitude), mie_s = mie_scattering_at(a, altitude);
+    const Vec3 extinction = extinction_at(a, altitude);
+    const Vec3 sun = sun_transmittance(a, rd, sun_mu);
+    const Vec3 psi = multiscattering ? multiscattering(rd, sun_mu) : Vec3{0, 0, 0};
+    for (size_t c = 0; c < 3; ++c) {
+      const double source = (rayleigh[c] * rayleigh_phase + mie_s[c] * mie) * sun[c] + (rayleigh[c] + mie_s[c]) * psi[c];
+      const double step_transmittance = std::exp(-extinction[c] * dt);
+      // Hillaire 2020 §5.3: the source integrated over the step against its extinction.
+      radiance[c] += throughput[c] * (extinction[c] > 0 ? source * (1 - step_transmittance) / extinction[c] : source * dt);
+      throughput[c] *= step_transmittance;
+    }
+  }
+  return radiance;
+}
+
+}  // namespace volgraph::physics

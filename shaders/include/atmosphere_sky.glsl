@@ -1,0 +1,58 @@
+// The light the atmosphere scatters toward a viewer along a ray, the sun's transmittance
+// and Ψ_ms read from their LUTs (Hillaire 2020 §5.3). CPU twin: physics/atmosphere_sky.h
+// (the integral, its sampling and its sources are documented there) — change both together.
+#ifndef VOLGRAPH_ATMOSPHERE_SKY_GLSL
+#define VOLGRAPH_ATMOSPHERE_SKY_GLSL
+
+#include "atmosphere_transmittance_lookup.glsl"
+
+struct SkySampling {
+  float min_samples, max_samples, full_samples_length;  // Hillaire 2020: 4, 14, 100 km
+  bool multiscattering;                                 // false: single scattering alone
+};
+
+float sky_sun_mu_at(float r, float mu, float mu_s, float nu, float d) {
+  const float rd = radius_at(r, mu, d);
+  return rd > 0.0 ? clamp((r * mu_s + d * nu) / rd, -1.0, 1.0) : mu_s;
+}
+
+float view_sun_cosine(float mu, float cos_azimuth, float mu_s) {
+  return clamp(sqrt(max(0.0, 1.0 - mu * mu)) * sqrt(max(0.0, 1.0 - mu_s * mu_s)) * cos_azimuth + mu * mu_s, -1.0, 1.0);
+}
+
+vec3 sky_scattering(AtmosphereParameters a, texture2D transmittance_lut, sampler nearest, texture2D multiscattering_lut,
+                    sampler linear, float r, float mu, float mu_s, float nu, SkySampling sampling) {
+  vec3 radiance = vec3(0.0);
+  const float len = distance_to_boundary(a, r, mu);
+  if (!(len > 0.0)) return radiance;
+  const float count = mix(sampling.min_samples, sampling.max_samples, clamp(len / sampling.full_samples_length, 0.0, 1.0));
+  const float whole = max(1.0, floor(count));
+  const float covered = len * whole / count;
+  const float rayleigh_phase = phase_rayleigh(nu), mie = mie_phase(a, nu);
+  const ivec2 ms_size = textureSize(sampler2D(multiscattering_lut, linear), 0);
+  vec3 throughput = vec3(1.0);
+  const int samples = int(whole);
+  for (int s = 0; s < samples; ++s) {
+    const float t0 = covered * (float(s) / whole) * (float(s) / whole);
+    const float t1 = s + 1 == samples ? len : covered * (float(s + 1) / whole) * (float(s + 1) / whole);
+    const float dt = t1 - t0;
+    const float t = t0 + 0.3 * dt;
+    const float rd = radius_at(r, mu, t), altitude = altitude_at(a, r, mu, t);
+    const float sun_mu = sky_sun_mu_at(r, mu, mu_s, nu, t);
+    const vec3 rayleigh = rayleigh_scattering_at(a, altitude), mie_s = mie_scattering_at(a, altitude);
+    const vec3 extinction = extinction_at(a, altitude);
+    const vec3 sun = sun_transmittance_lookup(a, transmittance_lut, nearest, rd, sun_mu);
+    vec3 psi = vec3(0.0);
+    if (sampling.multiscattering) {
+      psi = texture(sampler2D(multiscattering_lut, linear), multiscattering_lut_uv(a, rd, sun_mu, ms_size)).rgb;
+    }
+    const vec3 source = (rayleigh * rayleigh_phase + mie_s * mie) * sun + (rayleigh + mie_s) * psi;
+    const vec3 step_transmittance = exp(-extinction * dt);
+    radiance += throughput * mix(source * dt, source * (1.0 - step_transmittance) / max(extinction, vec3(1e-30)),
+                                 greaterThan(extinction, vec3(0.0)));
+    throughput *= step_transmittance;
+  }
+  return radiance;
+}
+
+#endif
