@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "passes/fog/fog_frame.h"
 #include "passes/plumbing/light_list.h"
 #include "physics/media_field.h"
 
@@ -70,6 +71,19 @@ struct GpuSkyViewLutParams {
   float camera[4];    // x: the camera's radius (m, at most the top's), y: the sun's zenith cosine there
   float sampling[4];  // min and max samples a ray, the length (m) from which rays take the max, multiple scattering (1) or not (0)
   static constexpr std::array<uint64_t, 2> offsets() { return {offsetof(GpuSkyViewLutParams, camera), offsetof(GpuSkyViewLutParams, sampling)}; }
+};
+
+// atmosphere_sky.comp's Frame.
+struct GpuSkyFrame {
+  fog::GpuViewRays view;
+  float planet_up[4];     // xyz: the camera's local zenith; w: its radius (m, at most the top's)
+  float toward_sun[4];    // xyz: unit, toward the sun; w: the sun's zenith cosine at the camera
+  float sun[4];           // rgb: E at the top of the atmosphere; w: 1 when there is a sun
+  float sun_disk[4];      // x: the sun's angular radius (rad), y: 1 to draw its disk
+  static constexpr std::array<uint64_t, 5> offsets() {
+    return {offsetof(GpuSkyFrame, view), offsetof(GpuSkyFrame, planet_up), offsetof(GpuSkyFrame, toward_sun), offsetof(GpuSkyFrame, sun),
+            offsetof(GpuSkyFrame, sun_disk)};
+  }
 };
 
 // opacity_shadow_map.comp's Params.

@@ -35,6 +35,28 @@ AtmosphereView atmosphere_view(const Scene& scene) {
   return view;
 }
 
+SkyViewDirection sky_view_direction(const AtmosphereView& view, const Vec3& direction) {
+  const Vec3& up = view.up;
+  const double mu = std::clamp(direction[0] * up[0] + direction[1] * up[1] + direction[2] * up[2], -1.0, 1.0);
+  const Vec3 across{direction[0] - mu * up[0], direction[1] - mu * up[1], direction[2] - mu * up[2]};
+  const Vec3 sun_across{view.toward_sun[0] - view.mu_s * up[0], view.toward_sun[1] - view.mu_s * up[1], view.toward_sun[2] - view.mu_s * up[2]};
+  const double lengths = std::sqrt((across[0] * across[0] + across[1] * across[1] + across[2] * across[2]) *
+                                   (sun_across[0] * sun_across[0] + sun_across[1] * sun_across[1] + sun_across[2] * sun_across[2]));
+  const double dot = across[0] * sun_across[0] + across[1] * sun_across[1] + across[2] * sun_across[2];
+  return {mu, lengths > 1e-12 ? std::clamp(dot / lengths, -1.0, 1.0) : 1.0};
+}
+
+Vec3 sun_disk_radiance(const Atmosphere& atmosphere, const AtmosphereView& view, const Vec3& direction) {
+  const double cosine = direction[0] * view.toward_sun[0] + direction[1] * view.toward_sun[1] + direction[2] * view.toward_sun[2];
+  if (!view.has_sun || cosine < std::cos(atmosphere.sun_angular_radius)) return {0, 0, 0};
+  const double r = std::min(view.r, atmosphere.top_radius);
+  const double mu = direction[0] * view.up[0] + direction[1] * view.up[1] + direction[2] * view.up[2];
+  if (ray_hits_ground(atmosphere, r, mu)) return {0, 0, 0};
+  const Vec3 t = transmittance_to_top(atmosphere, r, mu);
+  const double disk = 1 / (3.14159265358979323846 * atmosphere.sun_angular_radius * atmosphere.sun_angular_radius);
+  return {t[0] * disk, t[1] * disk, t[2] * disk};
+}
+
 double view_sun_cosine(double mu, double cos_azimuth, double mu_s) {
   const double sin_view = std::sqrt(std::max(0.0, 1 - mu * mu)), sin_sun = std::sqrt(std::max(0.0, 1 - mu_s * mu_s));
   return std::clamp(sin_view * sin_sun * cos_azimuth + mu * mu_s, -1.0, 1.0);

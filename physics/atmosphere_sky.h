@@ -14,6 +14,7 @@
 #include <functional>
 
 #include "graph/scene/scene.h"
+#include "physics/atmosphere_lut.h"
 
 namespace volgraph::physics {
 
@@ -44,5 +45,14 @@ struct AtmosphereView {
   bool has_sun = false;
 };
 AtmosphereView atmosphere_view(const Scene& scene);
+
+// A world direction as the sky-view LUT holds it around the camera: its zenith cosine and
+// the cosine of its azimuth from the sun's (1 where either is vertical).
+SkyViewDirection sky_view_direction(const AtmosphereView& view, const Vec3& direction);
+
+// The sun's disk per unit E in a unit world `direction`: 1 / (π α²) within its angular
+// radius α (a uniform disk of that radius gives irradiance E), times the transmittance
+// toward it from the camera; 0 outside the disk or where the ground is in the way.
+Vec3 sun_disk_radiance(const Atmosphere& atmosphere, const AtmosphereView& view, const Vec3& direction);
 
 }  // namespace volgraph::physics
