@@ -299,11 +299,13 @@ void read_media(const Node& n, Media& media) {
   }
 }
 
-// The atmosphere (scene.h Atmosphere). A planet's radius in [1 m, 1e9 m]: a 1 km planet
-// is the smallest the atmosphere passes are tested on, 1e9 m the loader's extent of any
-// scene.
+// The atmosphere (scene.h Atmosphere). A planet's radius in [1 m, 1e9 m] (the loader's
+// extent of any scene).
 constexpr double kMinPlanetRadius = 1;
 constexpr double kMaxPlanetRadius = kHuge;
+// A scale height H of at least 1 mm keeps exp_scale = −1/H within float's range: the GPU
+// multiplies it by altitudes down to 0, and −inf · 0 is NaN.
+constexpr double kMinScaleHeight = 1e-3;
 constexpr double kMaxSunAngularRadius = 0.5;  // rad: the disk's radius; the sun seen from 1 AU is 0.004675
 
 // An interval whose ends may be open, with the unit its messages name.
@@ -353,8 +355,9 @@ Node first_member(const Node& n, std::initializer_list<const char*> keys) {
 }
 
 // One layer of a profile (Bruneton 2017's DensityProfileLayer); keys left out are 0. Its
-// exponential may only decay with altitude: e^(exp_scale · h) with exp_scale > 0 grows
-// past float's range (e^88.7) within the atmosphere of any planet at 1/m scales.
+// exponential may only decay with altitude: with exp_scale > 0, e^(exp_scale · h) leaves
+// float's range once exp_scale · h > 88.7 (and times an exp_term of 0 gives NaN), and
+// none of the model's layers (Rayleigh, Mie, the ozone tent) grows.
 void read_layer(const Node& n, DensityLayer& layer, bool upper) {
   if (!n.object({"width", "exp_term", "exp_scale", "linear_term", "constant_term"})) return;
   layer = DensityLayer{};
@@ -397,7 +400,7 @@ void read_density(const Node& n, const std::string& name, DensityProfile& profil
   }
   if (given) read_profile(*given, profile);
   double h = 0;
-  if (height && read_in(n, height_key.c_str(), h, {0, kHuge, true, false, " m"})) {
+  if (height && read_in(n, height_key.c_str(), h, {kMinScaleHeight, kHuge, false, false, " m"})) {
     profile = DensityProfile{{}, {0, 1, -1 / h, 0, 0}};
   }
 }

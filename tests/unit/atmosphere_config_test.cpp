@@ -211,7 +211,7 @@ TEST_F(AtmosphereConfig, EachBadValueGetsOneClearError) {
        "/scene/atmosphere/mie_density/upper/exp_scal: unknown key \"exp_scal\" (did you mean \"exp_scale\"?); expected one of "
        "width, exp_term, exp_scale, linear_term, constant_term"},
       {R"({ "rayleigh_scale_height": 0 })",
-       "/scene/atmosphere/rayleigh_scale_height: expected a number in (0, 1e+09] m, got 0"},
+       "/scene/atmosphere/rayleigh_scale_height: expected a number in [0.001, 1e+09] m, got 0"},
       {R"({ "mie_scale_height": 1200, "mie_density": { "upper": { "exp_term": 1 } } })",
        "/scene/atmosphere/mie_scale_height: give one of \"mie_density\" or \"mie_scale_height\""},
       {R"({ "mie_g": 1 })", "/scene/atmosphere/mie_g: expected a number in [-0.999, 0.999], got 1"},
