@@ -1,0 +1,448 @@
+#include "reference/atmosphere_reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "physics/atmosphere.h"
+#include "physics/camera.h"
+#include "physics/phase.h"
+
+namespace volgraph::reference {
+namespace {
+
+using physics::add;
+using physics::dot;
+using physics::normalize;
+using physics::scaled;
+
+constexpr double kPi = 3.14159265358979323846;
+
+double largest(const Vec3& v) { return std::max({v[0], v[1], v[2]}); }
+Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
+Vec3 exp_minus(const Vec3& tau) { return {std::exp(-tau[0]), std::exp(-tau[1]), std::exp(-tau[2])}; }
+double length_of(const Vec3& v) { return std::sqrt(dot(v, v)); }
+
+// The sun's disk of angular radius α as a uniform emitter: E = L·π·sin²α exactly (the
+// irradiance of a uniform disk on a surface facing it).
+Vec3 sun_radiance(const AtmosphereSun& sun) {
+  const double s = std::sin(sun.angular_radius);
+  return scaled(sun.irradiance, 1.0 / (kPi * s * s));
+}
+
+double altitude_of(const Atmosphere& a, const Vec3& p) { return std::max(0.0, length_of(p) - a.bottom_radius); }
+
+// The largest extinction over the atmosphere's altitudes, per channel, with a margin: the
+// profiles are sums of exponentials and linear terms, clamped, sampled at 8192 altitudes
+// and at every layer's edge; 1 % above it bounds what lies between (their curvature over
+// 7 m steps is far below it).
+Vec3 extinction_majorant(const Atmosphere& a) {
+  const double height = a.top_radius - a.bottom_radius;
+  std::vector<double> altitudes{0, height, a.rayleigh_density.lower.width, a.mie_density.lower.width,
+                                a.absorption_density.lower.width};
+  constexpr int kSteps = 8192;
+  for (int i = 0; i <= kSteps; ++i) altitudes.push_back(height * i / kSteps);
+  Vec3 m{0, 0, 0};
+  for (double h : altitudes) {
+    const Vec3 e = physics::extinction_at(a, std::clamp(h, 0.0, height));
+    for (int c = 0; c < 3; ++c) m[c] = std::max(m[c], e[c]);
+  }
+  return scaled(m, 1.01);
+}
+
+// Deterministic random numbers: splitmix64 (Steele, Lea, Flood 2014) seeds an mt19937_64
+// whose 53 high bits make a double in [0, 1) (std's distributions differ between libraries).
+uint64_t splitmix64(uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+class Random {
+ public:
+  explicit Random(uint64_t seed) : engine_(seed) {}
+  double uniform() { return double(engine_() >> 11) * 0x1.0p-53; }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+// A unit vector at cosine `cos_theta` from unit `axis`, at azimuth φ about it.
+Vec3 around(const Vec3& axis, double cos_theta, double phi) {
+  const Vec3 helper = std::abs(axis[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  const Vec3 b1 = normalize(physics::cross(axis, helper));
+  const Vec3 b2 = physics::cross(axis, b1);
+  const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
+  return normalize(add(scaled(axis, cos_theta),
+                       add(scaled(b1, sin_theta * std::cos(phi)), scaled(b2, sin_theta * std::sin(phi)))));
+}
+
+// Inverse CDF of the Rayleigh phase's cosine, p(μ) ∝ 1 + μ²: the root of μ³ + 3μ = 8ξ − 4
+// by Cardano's formula.
+double sample_rayleigh_cosine(double xi) {
+  const double z = 4 * xi - 2, root = std::sqrt(z * z + 1);
+  return std::clamp(std::cbrt(z + root) + std::cbrt(z - root), -1.0, 1.0);
+}
+
+// Inverse CDF of Henyey–Greenstein's cosine (Henyey & Greenstein 1941; e.g. Pharr, Jakob,
+// Humphreys, PBRT 4th ed. §11.3.1), uniform for |g| < 1e-3.
+double sample_hg_cosine(double g, double xi) {
+  if (std::abs(g) < 1e-3) return 2 * xi - 1;
+  const double s = (1 - g * g) / (1 - g + 2 * g * xi);
+  return std::clamp((1 + g * g - s * s) / (2 * g), -1.0, 1.0);
+}
+
+// Where a ray from `p` along unit `d` ends (the ground or the top), the atmosphere's
+// parameters at p.
+struct RayEnd {
+  double length = 0;
+  bool ground = false;
+};
+
+RayEnd ray_end(const Atmosphere& a, const Vec3& p, const Vec3& d) {
+  const double r = std::min(length_of(p), a.top_radius), mu = dot(p, d) / length_of(p);
+  const bool ground = physics::ray_hits_ground(a, r, mu);
+  return {physics::distance_to_boundary(a, r, mu), ground};
+}
+
+// No scattering (a ray that misses the atmosphere): order 1, zero.
+ScatteringOrders no_scattering() {
+  return {{{0, 0, 0}}, {{0, 0, 0}}, 1, {0, 0, 0}, {0, 0, 0}};
+}
+
+// One sample's per-order tallies of one channel.
+using OrderTally = std::vector<double>;
+
+}  // namespace
+
+std::optional<AtmosphereSun> scene_sun(const Atmosphere& a, const std::vector<Light>& lights) {
+  if (a.sun_light < 0 || size_t(a.sun_light) >= lights.size()) return std::nullopt;
+  const Light& light = lights[size_t(a.sun_light)];
+  return AtmosphereSun{normalize(scaled(light.direction, -1)), light.irradiance, a.sun_angular_radius};
+}
+
+Vec3 planet_position(const Atmosphere& atmosphere, const Vec3& scene_point) {
+  return add(scene_point, {0, atmosphere.bottom_radius + atmosphere.origin_altitude, 0});
+}
+
+AtmosphereReference::AtmosphereReference(const Atmosphere& atmosphere, const AtmosphereSun& sun,
+                                         const AtmosphereReferenceSettings& settings)
+    : atmosphere_(atmosphere), sun_(sun), settings_(settings), majorant_(extinction_majorant(atmosphere)) {
+  sun_.direction = normalize(sun_.direction);
+}
+
+Vec3 AtmosphereReference::transmittance(double r, double mu) const {
+  return physics::transmittance_to_boundary(atmosphere_, r, mu);
+}
+
+// J(x) = (σ_R P_R(ν) + σ_M P_M(ν)) E T_sun(x): the sun's light scattered once toward the
+// viewer at x (Bruneton 2017, eq. 4's integrand without the view transmittance).
+Vec3 AtmosphereReference::in_scattering(const Vec3& point, const Vec3& direction, const Vec3& sun) const {
+  const double r = std::max(length_of(point), atmosphere_.bottom_radius);
+  const double h = r - atmosphere_.bottom_radius;
+  const double mu_s = std::clamp(dot(point, sun) / length_of(point), -1.0, 1.0);
+  const Vec3 t_sun = physics::sun_transmittance(atmosphere_, std::min(r, atmosphere_.top_radius), mu_s);
+  const double nu = std::clamp(dot(direction, sun), -1.0, 1.0);
+  const Vec3 rayleigh = scaled(physics::rayleigh_scattering_at(atmosphere_, h), physics::phase_rayleigh(nu));
+  const Vec3 mie = scaled(physics::mie_scattering_at(atmosphere_, h), physics::mie_phase(atmosphere_, nu));
+  return times(times(add(rayleigh, mie), t_sun), sun_.irradiance);
+}
+
+// ∫₀^D T(0,t) J(t) dt by adaptive Simpson (Lyness 1969), T from physics' optical depth.
+Vec3 AtmosphereReference::single_scattering_along(const Vec3& position, const Vec3& direction, double length,
+                                                  const Vec3& sun) const {
+  if (length <= 0) return {0, 0, 0};
+  const double r = length_of(position), mu = std::clamp(dot(position, direction) / r, -1.0, 1.0);
+  const auto f = [&](double t) {
+    const Vec3 tau = physics::optical_depth(atmosphere_, r, mu, t);
+    return times(exp_minus(tau), in_scattering(add(position, scaled(direction, t)), direction, sun));
+  };
+  const auto simpson = [](double a, double b, const Vec3& fa, const Vec3& fm, const Vec3& fb) {
+    Vec3 s;
+    for (int c = 0; c < 3; ++c) s[c] = (b - a) / 6 * (fa[c] + 4 * fm[c] + fb[c]);
+    return s;
+  };
+  struct Panel {
+    double a, b;
+    Vec3 fa, fm, fb, whole;
+    uint32_t depth;
+  };
+  const uint32_t n = std::max(1u, settings_.initial_panels);
+  std::vector<Panel> panels;
+  Vec3 estimate{0, 0, 0};
+  Vec3 f_left = f(0);
+  for (uint32_t i = 0; i < n; ++i) {
+    const double a = length * i / n, b = length * (i + 1) / n;
+    const Vec3 fm = f(0.5 * (a + b)), fb = f(b);
+    const Vec3 whole = simpson(a, b, f_left, fm, fb);
+    estimate = add(estimate, whole);
+    panels.push_back({a, b, f_left, fm, fb, whole, 0});
+    f_left = fb;
+  }
+  const double tolerance_per_metre = settings_.relative_tolerance * largest(estimate) / length;
+  Vec3 sum{0, 0, 0};
+  while (!panels.empty()) {
+    const Panel p = panels.back();
+    panels.pop_back();
+    const double m = 0.5 * (p.a + p.b);
+    const Vec3 fl = f(0.5 * (p.a + m)), fr = f(0.5 * (m + p.b));
+    const Vec3 left = simpson(p.a, m, p.fa, fl, p.fm), right = simpson(m, p.b, p.fm, fr, p.fb);
+    double error = 0;
+    Vec3 refined;
+    for (int c = 0; c < 3; ++c) {
+      const double s2 = left[c] + right[c];
+      error = std::max(error, std::abs(s2 - p.whole[c]) / 15);
+      refined[c] = s2 + (s2 - p.whole[c]) / 15;  // Richardson
+    }
+    if (error <= tolerance_per_metre * (p.b - p.a) || p.depth >= settings_.max_depth) {
+      sum = add(sum, refined);
+      continue;
+    }
+    panels.push_back({p.a, m, p.fa, fl, p.fm, left, p.depth + 1});
+    panels.push_back({m, p.b, p.fm, fr, p.fb, right, p.depth + 1});
+  }
+  for (double& c : sum) c = std::max(0.0, c);
+  return sum;
+}
+
+Vec3 AtmosphereReference::single_scattering(double r, double mu, double mu_s, double nu) const {
+  const double sin_v = std::sqrt(std::max(0.0, 1 - mu * mu));
+  const Vec3 position{0, r, 0}, direction{sin_v, mu, 0};
+  // The sun at zenith cosine mu_s and at cosine nu from the view (its x from s·v = nu).
+  const double sx = sin_v > 1e-12 ? std::clamp((nu - mu * mu_s) / sin_v, -1.0, 1.0) : 0.0;
+  const Vec3 sun{sx, mu_s, std::sqrt(std::max(0.0, 1 - mu_s * mu_s - sx * sx))};
+  return single_scattering_along(position, direction, physics::distance_to_boundary(atmosphere_, r, mu),
+                                 normalize(sun));
+}
+
+Vec3 AtmosphereReference::single_scattering(const Vec3& position, const Vec3& direction, double length) const {
+  return single_scattering_along(position, direction, length, sun_.direction);
+}
+
+// The sun's light reflected once by the Lambertian ground toward the viewer:
+// albedo/π · E · T_sun · max(μ_s, 0) (Bruneton 2017's ground radiance, its sun term).
+Vec3 AtmosphereReference::ground_direct(const Vec3& ground_point) const {
+  const double mu_s = std::clamp(dot(ground_point, sun_.direction) / length_of(ground_point), -1.0, 1.0);
+  if (mu_s <= 0) return {0, 0, 0};
+  const Vec3 t_sun = physics::sun_transmittance(atmosphere_, atmosphere_.bottom_radius, mu_s);
+  return scaled(times(times(atmosphere_.ground_albedo, sun_.irradiance), t_sun), mu_s / kPi);
+}
+
+ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& direction, double length,
+                                              bool ends_on_ground, uint64_t key) const {
+  const Atmosphere& a = atmosphere_;
+  const uint32_t max_orders = std::max(2u, settings_.max_orders);
+  ScatteringOrders out;
+  out.radiance.assign(max_orders, {0, 0, 0});
+  out.standard_error.assign(max_orders, {0, 0, 0});
+  const double r0 = length_of(position), mu0 = std::clamp(dot(position, direction) / r0, -1.0, 1.0);
+  const Vec3 ground_point = add(position, scaled(direction, length));
+  const Vec3 view_transmittance_to_end = exp_minus(physics::optical_depth(a, r0, mu0, length));
+
+  // Order 1: deterministic.
+  out.radiance[0] = single_scattering_along(position, direction, length, sun_.direction);
+  if (ends_on_ground) out.radiance[0] = add(out.radiance[0], times(view_transmittance_to_end, ground_direct(ground_point)));
+
+  // Orders ≥ 2, channel by channel.
+  const double g = a.mie_g;
+  std::vector<double> sum(max_orders * 3, 0.0), sum_sq(max_orders * 3, 0.0);
+  const uint32_t samples = settings_.samples;
+  for (uint32_t s = 0; s < samples && length > 0; ++s) {
+    for (int c = 0; c < 3; ++c) {
+      Random random(splitmix64(splitmix64(splitmix64(settings_.seed) ^ key) ^ (uint64_t(s) * 3 + uint64_t(c))));
+      OrderTally tally(max_orders, 0.0);
+      const double sigma_bar = majorant_[c];
+
+      // NEE toward the sun at an air vertex (throughput β, the path's direction d arriving
+      // there: toward the viewer is −d, the phase's cosine s·d).
+      const auto air_nee = [&](const Vec3& y, const Vec3& d) {
+        const double h = altitude_of(a, y), r = std::clamp(length_of(y), a.bottom_radius, a.top_radius);
+        const double mu_s = std::clamp(dot(y, sun_.direction) / length_of(y), -1.0, 1.0);
+        const double cos_theta = std::clamp(dot(sun_.direction, d), -1.0, 1.0);
+        const double sigma = physics::rayleigh_scattering_at(a, h)[c] * physics::phase_rayleigh(cos_theta) +
+                             physics::mie_scattering_at(a, h)[c] * physics::mie_phase(a, cos_theta);
+        return sigma * sun_.irradiance[c] * physics::sun_transmittance(a, r, mu_s)[c];
+      };
+      const auto ground_nee = [&](const Vec3& y) { return ground_direct(y)[c]; };
+      // A new direction after scattering at y from direction d: the lobe by σ_lobe/σ_s, its
+      // cosine from that lobe (Mie from HG, weighted by P_M / P_HG); the throughput × σ_s.
+      const auto scatter_direction = [&](const Vec3& y, const Vec3& d, double& beta) {
+        const double h = altitude_of(a, y);
+        const double rayleigh = physics::rayleigh_scattering_at(a, h)[c], mie = physics::mie_scattering_at(a, h)[c];
+        const double total = rayleigh + mie;
+        double cos_theta;
+        if (random.uniform() * total < rayleigh) {
+          cos_theta = sample_rayleigh_cosine(random.uniform());
+        } else {
+          cos_theta = sample_hg_cosine(g, random.uniform());
+          beta *= physics::mie_phase(a, cos_theta) / physics::phase_hg(g, cos_theta);
+        }
+        beta *= total;
+        return around(d, cos_theta, 2 * kPi * random.uniform());
+      };
+      // Cosine-weighted about the ground's normal; throughput × albedo.
+      const auto reflect = [&](const Vec3& y, double& beta) {
+        beta *= a.ground_albedo[c];
+        const double xi = random.uniform();
+        return around(normalize(y), std::sqrt(xi), 2 * kPi * random.uniform());
+      };
+
+      // Continues a path from vertex `order` at y along d with throughput β (already
+      // including the vertex's scattering), tallying NEE at orders ≥ 2.
+      const auto walk = [&](Vec3 y, Vec3 d, double beta, uint32_t order) {
+        while (order < max_orders && beta > 0) {
+          const RayEnd end = ray_end(a, y, d);
+          double t = 0;
+          bool collided = false;
+          while (true) {  // delta tracking (Woodcock 1965)
+            t -= std::log(1 - random.uniform()) / sigma_bar;
+            if (t >= end.length) break;
+            const Vec3 x = add(y, scaled(d, t));
+            if (random.uniform() * sigma_bar < physics::extinction_at(a, altitude_of(a, x))[c]) {
+              collided = true;
+              break;
+            }
+          }
+          ++order;
+          if (collided) {
+            y = add(y, scaled(d, t));
+            const double h = altitude_of(a, y);
+            beta /= physics::extinction_at(a, h)[c];
+            tally[order - 1] += beta * air_nee(y, d);
+            d = scatter_direction(y, d, beta);
+            continue;
+          }
+          if (!end.ground) return;
+          y = add(y, scaled(d, end.length));
+          y = scaled(normalize(y), a.bottom_radius);
+          tally[order - 1] += beta * ground_nee(y);
+          d = reflect(y, beta);
+        }
+      };
+
+      // Vertex 1 in the air: t from ½ truncated exponential (σ̄) + ½ uniform on [0, D].
+      {
+        const double u = random.uniform(), xi = random.uniform();
+        const double mass = -std::expm1(-sigma_bar * length);
+        const double t = u < 0.5 ? -std::log1p(-xi * mass) / sigma_bar : xi * length;
+        const double pdf = 0.5 * sigma_bar * std::exp(-sigma_bar * t) / mass + 0.5 / length;
+        const Vec3 y = add(position, scaled(direction, t));
+        double beta = std::exp(-physics::optical_depth(a, r0, mu0, t)[c]) / pdf;
+        const Vec3 d = scatter_direction(y, direction, beta);
+        walk(y, d, beta, 1);
+      }
+      // Vertex 1 on the ground, by its exact transmittance.
+      if (ends_on_ground) {
+        double beta = view_transmittance_to_end[c];
+        const Vec3 y = scaled(normalize(ground_point), a.bottom_radius);
+        const Vec3 d = reflect(y, beta);
+        walk(y, d, beta, 1);
+      }
+      for (uint32_t k = 1; k < max_orders; ++k) {
+        sum[k * 3 + c] += tally[k];
+        sum_sq[k * 3 + c] += tally[k] * tally[k];
+      }
+    }
+  }
+  for (uint32_t k = 1; k < max_orders && samples > 0; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      const double mean = sum[k * 3 + c] / samples;
+      const double variance = samples > 1 ? std::max(0.0, (sum_sq[k * 3 + c] / samples - mean * mean)) * samples / (samples - 1) : 0.0;
+      out.radiance[k][c] = mean;
+      out.standard_error[k][c] = std::sqrt(variance / samples);
+    }
+  }
+  // N: the first order ≥ 2 whose contribution, its estimate plus 2 standard errors, is
+  // below order_threshold of orders 1…N.
+  out.orders = max_orders;
+  Vec3 running = out.radiance[0];
+  for (uint32_t k = 1; k < max_orders; ++k) {
+    running = add(running, out.radiance[k]);
+    const Vec3 upper = add(out.radiance[k], scaled(out.standard_error[k], 2));
+    if (largest(upper) <= settings_.order_threshold * largest(running)) {
+      out.orders = k + 1;
+      break;
+    }
+  }
+  for (uint32_t k = 0; k < max_orders; ++k) {
+    Vec3& part = k < out.orders ? out.total : out.residual;
+    part = add(part, out.radiance[k]);
+  }
+  return out;
+}
+
+SkySample AtmosphereReference::sky(const Vec3& position, const Vec3& direction_in, uint64_t key) const {
+  const Atmosphere& a = atmosphere_;
+  const Vec3 direction = normalize(direction_in);
+  SkySample out;
+  Vec3 p = position;
+  double r = length_of(p);
+  if (r > a.top_radius) {  // from space: enter at the top, or see the sun unattenuated
+    const std::optional<double> entry = physics::distance_to_sphere(r, dot(p, direction) / r, a.top_radius);
+    if (!entry) {
+      if (dot(direction, sun_.direction) >= std::cos(sun_.angular_radius)) out.sun_disk = sun_radiance(sun_);
+      out.radiance = out.sun_disk;
+      out.scattering = no_scattering();
+      return out;
+    }
+    p = scaled(normalize(add(p, scaled(direction, *entry))), a.top_radius);
+    r = a.top_radius;
+  }
+  const double mu = std::clamp(dot(p, direction) / r, -1.0, 1.0);
+  out.hits_ground = physics::ray_hits_ground(a, r, mu);
+  const double length = physics::distance_to_boundary(a, r, mu);
+  out.transmittance = exp_minus(physics::optical_depth(a, r, mu, length));
+  if (!out.hits_ground && dot(direction, sun_.direction) >= std::cos(sun_.angular_radius))
+    out.sun_disk = times(sun_radiance(sun_), out.transmittance);
+  out.scattering = scatter(p, direction, length, out.hits_ground, key);
+  out.radiance = add(out.scattering.total, out.sun_disk);
+  return out;
+}
+
+AerialPerspectiveSample AtmosphereReference::aerial_perspective(const Vec3& position, const Vec3& direction_in,
+                                                                double distance, uint64_t key) const {
+  const Atmosphere& a = atmosphere_;
+  const Vec3 direction = normalize(direction_in);
+  AerialPerspectiveSample out;
+  Vec3 p = position;
+  double r = length_of(p), d = distance;
+  if (r > a.top_radius) {
+    const std::optional<double> entry = physics::distance_to_sphere(r, dot(p, direction) / r, a.top_radius);
+    if (!entry || *entry >= distance) {
+      out.scattering = no_scattering();
+      return out;
+    }
+    p = scaled(normalize(add(p, scaled(direction, *entry))), a.top_radius);
+    r = a.top_radius;
+    d -= *entry;
+  }
+  const double mu = std::clamp(dot(p, direction) / r, -1.0, 1.0);
+  d = std::min(d, physics::distance_to_boundary(a, r, mu));
+  out.transmittance = exp_minus(physics::optical_depth(a, r, mu, d));
+  out.scattering = scatter(p, direction, d, false, key);
+  out.in_scattered = out.scattering.total;
+  return out;
+}
+
+SkyImage render_sky_image(const AtmosphereReference& reference, const Camera& camera, const RenderSettings& settings) {
+  const Vec3 eye = planet_position(reference.atmosphere(), camera.position);
+  std::vector<uint32_t> orders(size_t(settings.width) * settings.height, 0);
+  std::vector<double> residuals(orders.size(), 0.0);
+  SkyImage out;
+  out.image = render_pixels(
+      [&](uint32_t i, uint32_t j) {
+        const uint64_t key = uint64_t(j) * settings.width + i;
+        const SkySample s = reference.sky(eye, physics::pixel_ray(camera, settings.width, settings.height, i, j), key);
+        orders[key] = s.scattering.orders;
+        const double total = largest(s.scattering.total);
+        residuals[key] = total > 0 ? largest(s.scattering.residual) / total : 0.0;
+        return s.radiance;
+      },
+      settings);
+  out.max_orders = *std::max_element(orders.begin(), orders.end());
+  out.max_relative_residual = *std::max_element(residuals.begin(), residuals.end());
+  return out;
+}
+
+}  // namespace volgraph::reference

@@ -1,0 +1,144 @@
+// The CPU reference of a planet's atmosphere (graph/scene/scene.h Atmosphere, Bruneton
+// 2017's model) in double precision, with the physics of physics/atmosphere.h: the sky's
+// radiance along a ray, the sun's disk, the ground, and aerial perspective.
+//
+// Frame: the planet's, its centre at the origin, +Y up above the scene's origin (the
+// scene's axes; a scene point p is p + (0, bottom_radius + origin_altitude, 0) here).
+//
+// Scattering is split by order (the number of scattering events, a ground reflection
+// counting as one, as in Bruneton 2017's iterated orders):
+// - order 1 (single scattering, and the sun's light reflected once by the ground) is
+//   deterministic: adaptive Simpson quadrature along the ray (Lyness 1969) held below
+//   `relative_tolerance` of the integral, the view ray's transmittance from physics'
+//   optical_depth at every node, the sun's from physics' sun_transmittance;
+// - orders 2…N by Monte Carlo path tracing with next-event estimation toward the sun,
+//   tallied per order, a fixed seed per (ray key, sample, channel), so a pixel's value is
+//   the same on every run and with any number of threads. Each channel is its own grey
+//   random walk (free paths by delta tracking, Woodcock 1965, under a majorant of the
+//   extinction), so no spectral weighting is needed. The first vertex along the view
+//   ray is drawn from a mixture of a truncated exponential and a uniform density on the
+//   ray and weighted by the exact transmittance; the ground (Lambertian, ground_albedo)
+//   is a vertex of its own, drawn by its exact transmittance.
+// Why Monte Carlo for the higher orders: it shares no discretisation with the LUT
+// techniques it measures (Hillaire 2020's isotropic multiple-scattering approximation,
+// Bruneton 2017's 4D tables of iterated orders), its only approximation is the sample
+// count, and its error is stated: the standard error of each order's estimate.
+// The order count N is the first order ≥ 2 whose contribution (its estimate plus two
+// standard errors, largest channel) falls below `order_threshold` of the sum of orders
+// 1…N; the paths are traced up to `max_orders` vertices and what orders N+1… add is the
+// stated residual (orders past max_orders are not traced: with the earth preset they are
+// below 1e-9 of the sky).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "graph/scene/scene.h"
+#include "reference/image_render.h"
+
+namespace volgraph::reference {
+
+struct AtmosphereSun {
+  Vec3 direction{0, 1, 0};   // unit, toward the sun (planet frame)
+  Vec3 irradiance{1, 1, 1};  // E at the top of the atmosphere, W/m² per channel, on a surface facing it
+  double angular_radius = 0.004675;  // rad
+};
+
+// The atmosphere's sun: the scene's directional light `sun_light` (E, the opposite of its
+// direction of travel) and the atmosphere's angular radius; nullopt without one.
+std::optional<AtmosphereSun> scene_sun(const Atmosphere& atmosphere, const std::vector<Light>& lights);
+
+struct AtmosphereReferenceSettings {
+  // Single scattering: each panel's Richardson error estimate |S₂ − S₁|/15 (largest
+  // channel) is held below relative_tolerance × (the ray's integral) × (panel length /
+  // ray length), from `initial_panels` equal panels bisected at most `max_depth` times.
+  double relative_tolerance = 1e-6;
+  uint32_t initial_panels = 64;
+  uint32_t max_depth = 30;
+  // Orders ≥ 2: paths per channel and ray, their length cap, the convergence threshold.
+  uint32_t samples = 64;
+  uint32_t max_orders = 64;
+  double order_threshold = 1e-3;
+  uint64_t seed = 1;
+};
+
+// Radiance by scattering order along one ray: radiance[k] is order k + 1.
+struct ScatteringOrders {
+  std::vector<Vec3> radiance;
+  std::vector<Vec3> standard_error;  // of each order's estimate (0 for the deterministic order 1)
+  uint32_t orders = 0;               // N: orders 1…N make `total`
+  Vec3 total{0, 0, 0};               // Σ orders 1…N
+  Vec3 residual{0, 0, 0};            // Σ orders N+1…max_orders (as traced)
+};
+
+struct SkySample {
+  Vec3 radiance{0, 0, 0};       // scattering (orders 1…N, ground included) + the sun's disk
+  Vec3 sun_disk{0, 0, 0};       // the sun's radiance times the transmittance, inside its disk
+  Vec3 transmittance{1, 1, 1};  // from the camera to the end of the ray (the ground or space)
+  bool hits_ground = false;
+  ScatteringOrders scattering;
+};
+
+struct AerialPerspectiveSample {
+  Vec3 in_scattered{0, 0, 0};   // orders 1…N scattered toward the camera on [0, d]
+  Vec3 transmittance{1, 1, 1};  // from the camera to distance d
+  ScatteringOrders scattering;
+};
+
+class AtmosphereReference {
+ public:
+  AtmosphereReference(const Atmosphere& atmosphere, const AtmosphereSun& sun,
+                      const AtmosphereReferenceSettings& settings = {});
+
+  // e^(−τ) from (r, mu) to the ray's end (the ground or the top).
+  Vec3 transmittance(double r, double mu) const;
+  // Single scattering (Rayleigh + Mie) toward the viewer at (r, mu) from its ray to the
+  // boundary, the sun at zenith cosine mu_s and at cosine nu from the view direction
+  // (Bruneton 2017's parameters; the sun's irradiance is this reference's).
+  Vec3 single_scattering(double r, double mu, double mu_s, double nu) const;
+  // The same from `position` along unit `direction` over [0, length] (inside the atmosphere).
+  Vec3 single_scattering(const Vec3& position, const Vec3& direction, double length) const;
+
+  // The radiance of a camera ray from `position` (anywhere: above the top it enters the
+  // atmosphere first) along unit `direction`: every order, the ground, the sun's disk.
+  // `key` seeds the ray's paths (a pixel index).
+  SkySample sky(const Vec3& position, const Vec3& direction, uint64_t key) const;
+  // Aerial perspective of a segment from `position` to distance `distance` along unit
+  // `direction`: the light scattered toward the camera on it and its transmittance.
+  AerialPerspectiveSample aerial_perspective(const Vec3& position, const Vec3& direction, double distance,
+                                             uint64_t key) const;
+
+  const Atmosphere& atmosphere() const { return atmosphere_; }
+  const AtmosphereSun& sun() const { return sun_; }
+  const AtmosphereReferenceSettings& settings() const { return settings_; }
+
+ private:
+  Vec3 single_scattering_along(const Vec3& position, const Vec3& direction, double length, const Vec3& sun) const;
+  Vec3 in_scattering(const Vec3& point, const Vec3& direction, const Vec3& sun) const;
+  Vec3 ground_direct(const Vec3& ground_point) const;
+  ScatteringOrders scatter(const Vec3& position, const Vec3& direction, double length, bool ends_on_ground,
+                           uint64_t key) const;
+
+  Atmosphere atmosphere_;
+  AtmosphereSun sun_;
+  AtmosphereReferenceSettings settings_;
+  Vec3 majorant_{0, 0, 0};  // ≥ the extinction at every altitude, per channel
+};
+
+// A scene point in the planet's frame: p + (0, bottom_radius + origin_altitude, 0).
+Vec3 planet_position(const Atmosphere& atmosphere, const Vec3& scene_point);
+
+struct SkyImage {
+  ReferenceImage image;
+  uint32_t max_orders = 0;            // the largest N over the pixels
+  double max_relative_residual = 0;   // the largest residual / total (largest channel) over the pixels
+};
+
+// The sky seen by `camera` (scene frame, DESIGN.md's pixel convention, one ray through
+// each pixel's centre: settings.samples_per_axis is ignored), threaded as render_image;
+// pixel (i, j) seeds its paths with the key j·width + i.
+SkyImage render_sky_image(const AtmosphereReference& reference, const Camera& camera, const RenderSettings& settings);
+
+}  // namespace volgraph::reference
