@@ -36,6 +36,18 @@ Real phase_hg(Real g, Real cos_theta) {
   return kInvFourPi<Real> * one_minus_g * (Real(1) + g) / denominator;
 }
 
+// Cornette & Shanks 1992 ("Physically reasonable analytic expression for the
+// single-scattering phase function", Applied Optics 31, eq. 4), as Bruneton 2017's
+// MiePhaseFunction: 3/(8π) (1 − g²)(1 + cos²θ) / ((2 + g²)(1 + g² − 2g cosθ)^1.5); the
+// denominator's base written as in phase_hg.
+template <typename Real>
+Real phase_cornette_shanks(Real g, Real cos_theta) {
+  const Real one_minus_g = Real(1) - g;
+  const Real base = one_minus_g * one_minus_g + Real(2) * g * (Real(1) - cos_theta);
+  const Real denominator = std::max((Real(2) + g * g) * base * std::sqrt(base), Real(1e-30));
+  return Real(1.5) * kInvFourPi<Real> * one_minus_g * (Real(1) + g) * (Real(1) + cos_theta * cos_theta) / denominator;
+}
+
 // Above this |g| the forward peak of HG (1 + g)/(4π(1 − g)²) exceeds fp16's largest
 // value (65504): passes that store phase-weighted values in rgba16f clamp g to it.
 template <typename Real>

@@ -19,6 +19,14 @@ float phase_hg(float g, float cos_theta) {
   return INV_FOUR_PI * one_minus_g * (1.0 + g) / max(base * sqrt(base), 1e-30);
 }
 
+// Cornette & Shanks 1992 (Applied Optics 31, eq. 4), as Bruneton 2017's MiePhaseFunction.
+float phase_cornette_shanks(float g, float cos_theta) {
+  const float one_minus_g = 1.0 - g;
+  const float base = one_minus_g * one_minus_g + 2.0 * g * (1.0 - cos_theta);
+  const float denominator = max((2.0 + g * g) * base * sqrt(base), 1e-30);
+  return 1.5 * INV_FOUR_PI * one_minus_g * (1.0 + g) * (1.0 + cos_theta * cos_theta) / denominator;
+}
+
 // Schlick (Blasi, Le Saëc, Schlick 1993): k ≈ 1.55g − 0.55g³, clamped inside (−1, 1).
 float schlick_k(float g) { return clamp(1.55 * g - 0.55 * g * g * g, -SCHLICK_MAX_K, SCHLICK_MAX_K); }
 

@@ -96,5 +96,17 @@ TEST(Phase, NoNanOrInfAnywhereInFloat) {
   }
 }
 
+TEST(Phase, CornetteShanksIntegratesToOneAndIsRayleighAtGZero) {
+  for (double g : {0.0, 0.5, 0.8, 0.9, 0.99}) {
+    EXPECT_NEAR(sphere_integral([g](double mu) { return phase_cornette_shanks(g, mu); }), 1.0, 1e-8) << "g " << g;
+  }
+  for (double mu : {-1.0, -0.3, 0.0, 0.7, 1.0}) EXPECT_NEAR(phase_cornette_shanks(0.0, mu), phase_rayleigh(mu), 1e-15);
+  // 3/(8π)(1 − g²)(1 + cos²θ) / ((2 + g²)(1 + g² − 2g cosθ)^1.5) written out at g = 0.8, cos θ = 0.3.
+  const double g = 0.8, c = 0.3;
+  const double textbook = 3 / (8 * M_PI) * (1 - g * g) * (1 + c * c) / ((2 + g * g) * std::pow(1 + g * g - 2 * g * c, 1.5));
+  EXPECT_NEAR(phase_cornette_shanks(g, c), textbook, 1e-15);
+  EXPECT_NEAR(phase_cornette_shanks(0.8f, 0.3f), float(textbook), 1e-6f);
+}
+
 }  // namespace
 }  // namespace volgraph::physics

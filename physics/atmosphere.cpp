@@ -1,0 +1,330 @@
+// A planet's atmosphere (Bruneton 2017's model): see atmosphere.h.
+#include "physics/atmosphere.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "physics/phase.h"
+
+namespace volgraph::physics {
+namespace {
+
+Vec3 scaled(const Vec3& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }
+Vec3 sum(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Vec3 exp_negative(const Vec3& v) { return {std::exp(-v[0]), std::exp(-v[1]), std::exp(-v[2])}; }
+
+// The layer of `profile` that holds altitude h (Bruneton 2017, GetProfileDensity).
+const DensityLayer& layer_at(const DensityProfile& profile, double altitude) {
+  return altitude < profile.lower.width ? profile.lower : profile.upper;
+}
+
+// A layer's density before the clamp to [0, 1].
+double unclamped_density(const DensityLayer& layer, double altitude) {
+  return layer.exp_term * std::exp(layer.exp_scale * altitude) + layer.linear_term * altitude + layer.constant_term;
+}
+
+// ∫ unclamped density dh over [a, b], exactly: exponential and linear terms
+// (the exponential's written with expm1 so it keeps its precision as exp_scale → 0).
+double unclamped_integral(const DensityLayer& layer, double a, double b) {
+  const double width = b - a;
+  double exponential = layer.exp_term * width;
+  if (layer.exp_scale != 0) exponential = layer.exp_term * std::exp(layer.exp_scale * a) * std::expm1(layer.exp_scale * width) / layer.exp_scale;
+  return exponential + layer.linear_term * 0.5 * (b * b - a * a) + layer.constant_term * width;
+}
+
+// A root of f(h) = level in [a, b] where f − level changes sign (bisection; f monotonic there).
+double bisect_level(const DensityLayer& layer, double level, double a, double b) {
+  const bool rising = unclamped_density(layer, b) > unclamped_density(layer, a);
+  for (int i = 0; i < 100 && b - a > 1e-9 * std::max(1.0, std::abs(a)); ++i) {
+    const double mid = 0.5 * (a + b);
+    if ((unclamped_density(layer, mid) < level) == rising) a = mid; else b = mid;
+  }
+  return 0.5 * (a + b);
+}
+
+// Where a layer's unclamped density crosses 0 or 1 inside (a, b): exp + linear is convex
+// or concave, so split at its extremum (f' = 0) and bisect each monotonic piece.
+void add_clamp_crossings(const DensityLayer& layer, double a, double b, std::vector<double>& out) {
+  std::vector<double> pieces{a};
+  if (layer.exp_term != 0 && layer.exp_scale != 0 && layer.linear_term != 0) {
+    const double ratio = -layer.linear_term / (layer.exp_term * layer.exp_scale);
+    if (ratio > 0) {
+      const double extremum = std::log(ratio) / layer.exp_scale;
+      if (extremum > a && extremum < b) pieces.push_back(extremum);
+    }
+  }
+  pieces.push_back(b);
+  for (size_t i = 0; i + 1 < pieces.size(); ++i) {
+    for (double level : {0.0, 1.0}) {
+      const double fa = unclamped_density(layer, pieces[i]) - level, fb = unclamped_density(layer, pieces[i + 1]) - level;
+      if (fa * fb < 0) out.push_back(bisect_level(layer, level, pieces[i], pieces[i + 1]));
+    }
+  }
+}
+
+// The altitudes in (0, top) where a profile's density has a kink: the layer boundary and
+// where a layer clamps at 0 or 1.
+void add_profile_kinks(const DensityProfile& profile, double top, std::vector<double>& out) {
+  const double boundary = std::clamp(profile.lower.width, 0.0, top);
+  if (boundary > 0 && boundary < top) out.push_back(boundary);
+  if (boundary > 0) add_clamp_crossings(profile.lower, 0, boundary, out);
+  add_clamp_crossings(profile.upper, boundary, top, out);
+}
+
+std::vector<double> kink_altitudes(const Atmosphere& atmosphere) {
+  const double top = atmosphere.top_radius - atmosphere.bottom_radius;
+  std::vector<double> kinks;
+  for (const DensityProfile* p : {&atmosphere.rayleigh_density, &atmosphere.mie_density, &atmosphere.absorption_density})
+    add_profile_kinks(*p, top, kinks);
+  return kinks;
+}
+
+// The smallest scale height 1/|exp_scale| among the layers with an exponential term (the
+// atmosphere's thickness when there is none).
+double smallest_scale_height(const Atmosphere& atmosphere) {
+  double smallest = atmosphere.top_radius - atmosphere.bottom_radius;
+  for (const DensityProfile* p : {&atmosphere.rayleigh_density, &atmosphere.mie_density, &atmosphere.absorption_density})
+    for (const DensityLayer* layer : {&p->lower, &p->upper})
+      if (layer->exp_term != 0 && layer->exp_scale != 0) smallest = std::min(smallest, 1.0 / std::abs(layer->exp_scale));
+  return std::max(smallest, 1e-3);
+}
+
+// 8-point Gauss–Legendre nodes and weights on [−1, 1] (Abramowitz & Stegun, Table 25.4).
+constexpr std::array<double, 4> kGaussNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+constexpr std::array<double, 4> kGaussWeights{0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+
+Vec3 extinction_along(const Atmosphere& atmosphere, double r, double mu, double d) {
+  return extinction_at(atmosphere, radius_at(r, mu, d) - atmosphere.bottom_radius);
+}
+
+// ∫ extinction over [d0, d1] of the ray in `panels` equal 8-point Gauss–Legendre panels.
+Vec3 gauss_legendre(const Atmosphere& atmosphere, double r, double mu, double d0, double d1, int panels) {
+  Vec3 total{0, 0, 0};
+  const double width = (d1 - d0) / panels;
+  for (int p = 0; p < panels; ++p) {
+    const double centre = d0 + (p + 0.5) * width, half = 0.5 * width;
+    for (size_t i = 0; i < kGaussNodes.size(); ++i) {
+      const Vec3 sides = sum(extinction_along(atmosphere, r, mu, centre - half * kGaussNodes[i]),
+                             extinction_along(atmosphere, r, mu, centre + half * kGaussNodes[i]));
+      total = sum(total, scaled(sides, kGaussWeights[i] * half));
+    }
+  }
+  return total;
+}
+
+// The distances in (0, length) where the ray crosses a sphere at one of the kink
+// altitudes, and its lowest point (d = −r·mu): between them the density is smooth and the
+// altitude monotonic.
+std::vector<double> ray_breaks(const Atmosphere& atmosphere, double r, double mu, double length) {
+  std::vector<double> breaks{0.0, length};
+  const double b = r * mu;
+  if (-b > 0 && -b < length) breaks.push_back(-b);
+  for (double kink : kink_altitudes(atmosphere)) {
+    const double c = sphere_constant_term(r, atmosphere.bottom_radius + kink);
+    if (b * b - c < 0) continue;
+    for (double d : {sphere_near_root(b, c), sphere_far_root(b, c)})
+      if (d > 0 && d < length) breaks.push_back(d);
+  }
+  std::sort(breaks.begin(), breaks.end());
+  return breaks;
+}
+
+}  // namespace
+
+double layer_density(const DensityLayer& layer, double altitude) {
+  return std::clamp(unclamped_density(layer, altitude), 0.0, 1.0);
+}
+
+double profile_density(const DensityProfile& profile, double altitude) {
+  return layer_density(layer_at(profile, altitude), altitude);
+}
+
+// Bruneton 2017, ComputeOpticalLengthToTopAtmosphereBoundary's integrand: coefficient × density.
+Vec3 rayleigh_scattering_at(const Atmosphere& atmosphere, double altitude) {
+  return scaled(atmosphere.rayleigh_scattering, profile_density(atmosphere.rayleigh_density, altitude));
+}
+
+Vec3 mie_scattering_at(const Atmosphere& atmosphere, double altitude) {
+  return scaled(atmosphere.mie_scattering, profile_density(atmosphere.mie_density, altitude));
+}
+
+Vec3 mie_extinction_at(const Atmosphere& atmosphere, double altitude) {
+  return scaled(atmosphere.mie_extinction, profile_density(atmosphere.mie_density, altitude));
+}
+
+Vec3 absorption_at(const Atmosphere& atmosphere, double altitude) {
+  return scaled(atmosphere.absorption_extinction, profile_density(atmosphere.absorption_density, altitude));
+}
+
+// Bruneton 2017, ComputeTransmittanceToTopAtmosphereBoundary: Rayleigh + Mie extinction + absorption.
+Vec3 extinction_at(const Atmosphere& atmosphere, double altitude) {
+  return sum(sum(rayleigh_scattering_at(atmosphere, altitude), mie_extinction_at(atmosphere, altitude)), absorption_at(atmosphere, altitude));
+}
+
+double distance_to_top(const Atmosphere& atmosphere, double r, double mu) {
+  const double c = sphere_constant_term(r, atmosphere.top_radius);
+  return std::max(sphere_far_root(r * mu, c), 0.0);
+}
+
+bool ray_hits_ground(const Atmosphere& atmosphere, double r, double mu) {
+  const double b = r * mu, c = sphere_constant_term(r, atmosphere.bottom_radius);
+  return mu < 0 && b * b - c >= 0;
+}
+
+std::optional<double> distance_to_ground(const Atmosphere& atmosphere, double r, double mu) {
+  if (!ray_hits_ground(atmosphere, r, mu)) return std::nullopt;
+  return std::max(sphere_near_root(r * mu, sphere_constant_term(r, atmosphere.bottom_radius)), 0.0);
+}
+
+double distance_to_boundary(const Atmosphere& atmosphere, double r, double mu) {
+  return distance_to_ground(atmosphere, r, mu).value_or(distance_to_top(atmosphere, r, mu));
+}
+
+std::optional<double> enter_atmosphere(const Atmosphere& atmosphere, double r, double mu) {
+  if (r <= atmosphere.top_radius) return 0.0;
+  return distance_to_sphere(r, mu, atmosphere.top_radius);
+}
+
+// Law of cosines: r_d² = r² + d(d + 2r·mu); r_d − r = d(d + 2r·mu) / (r + r_d).
+double radius_at(double r, double mu, double d) {
+  const double growth = d * (d + 2 * r * mu);
+  const double r_d = std::sqrt(std::max(r * r + growth, 0.0));
+  if (r + r_d <= 0) return 0;
+  return std::max(r + growth / (r + r_d), 0.0);
+}
+
+// Bruneton 2017, ComputeSingleScatteringIntegrand: mu_d = (r·mu + d) / r_d.
+double mu_at(double r, double mu, double d) {
+  const double r_d = radius_at(r, mu, d);
+  if (r_d <= 0) return mu;
+  return std::clamp((r * mu + d) / r_d, -1.0, 1.0);
+}
+
+Vec3 optical_depth(const Atmosphere& atmosphere, double r, double mu, double length) {
+  Vec3 total{0, 0, 0};
+  if (!(length > 0)) return total;
+  const std::vector<double> breaks = ray_breaks(atmosphere, r, mu, length);
+  const double scale_height = smallest_scale_height(atmosphere);
+  for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+    const double d0 = breaks[i], d1 = breaks[i + 1];
+    if (d1 <= d0) continue;
+    const double altitude_span = std::abs(radius_at(r, mu, d1) - radius_at(r, mu, d0));
+    const int panels = int(std::clamp(std::ceil(altitude_span / scale_height), 1.0, 4096.0));
+    total = sum(total, gauss_legendre(atmosphere, r, mu, d0, d1, panels));
+  }
+  return total;
+}
+
+Vec3 optical_depth_to_boundary(const Atmosphere& atmosphere, double r, double mu) {
+  return optical_depth(atmosphere, r, mu, distance_to_boundary(atmosphere, r, mu));
+}
+
+double profile_integral(const DensityProfile& profile, double from, double to) {
+  if (!(to > from)) return 0;
+  std::vector<double> cuts{from, to};
+  add_profile_kinks(profile, to, cuts);
+  std::sort(cuts.begin(), cuts.end());
+  double total = 0;
+  for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const double a = std::max(cuts[i], from), b = cuts[i + 1];
+    if (b <= a) continue;
+    const DensityLayer& layer = layer_at(profile, 0.5 * (a + b));
+    const double middle = unclamped_density(layer, 0.5 * (a + b));
+    if (middle <= 0) continue;
+    total += middle >= 1 ? b - a : unclamped_integral(layer, a, b);
+  }
+  return total;
+}
+
+// ∫ extinction from h to the top: each coefficient times its profile's exact integral.
+Vec3 zenith_optical_depth(const Atmosphere& atmosphere, double altitude) {
+  const double top = atmosphere.top_radius - atmosphere.bottom_radius;
+  const Vec3 rayleigh = scaled(atmosphere.rayleigh_scattering, profile_integral(atmosphere.rayleigh_density, altitude, top));
+  const Vec3 mie = scaled(atmosphere.mie_extinction, profile_integral(atmosphere.mie_density, altitude, top));
+  const Vec3 ozone = scaled(atmosphere.absorption_extinction, profile_integral(atmosphere.absorption_density, altitude, top));
+  return sum(sum(rayleigh, mie), ozone);
+}
+
+Vec3 transmittance_to_boundary(const Atmosphere& atmosphere, double r, double mu) {
+  return exp_negative(optical_depth_to_boundary(atmosphere, r, mu));
+}
+
+// Below the horizon Bruneton 2017's texture has no row (its lookup clamps to the horizon's):
+// the same here, so the ray never passes through the planet.
+Vec3 transmittance_to_top(const Atmosphere& atmosphere, double r, double mu) {
+  mu = std::max(mu, mu_horizon(atmosphere, r));
+  return exp_negative(optical_depth(atmosphere, r, mu, distance_to_top(atmosphere, r, mu)));
+}
+
+// −√(1 − (R/r)²) = −√(h(2R + h)) / r, from the altitude h = r − R.
+double mu_horizon(const Atmosphere& atmosphere, double r) {
+  if (r <= 0) return 0;
+  return -std::sqrt(std::max(sphere_constant_term(r, atmosphere.bottom_radius), 0.0)) / r;
+}
+
+// Bruneton 2017, GetTransmittanceToSun: smoothstep(−sin θ_h·α, sin θ_h·α, mu_s − cos θ_h).
+double sun_visible_fraction(const Atmosphere& atmosphere, double r, double mu_s) {
+  const double sin_theta_h = std::min(atmosphere.bottom_radius / std::max(r, atmosphere.bottom_radius), 1.0);
+  const double half_width = sin_theta_h * atmosphere.sun_angular_radius;
+  const double x = mu_s - mu_horizon(atmosphere, r);
+  if (half_width <= 0) return x >= 0 ? 1.0 : 0.0;
+  const double t = std::clamp((x + half_width) / (2 * half_width), 0.0, 1.0);
+  return t * t * (3 - 2 * t);
+}
+
+Vec3 sun_transmittance(const Atmosphere& atmosphere, double r, double mu_s) {
+  const double fraction = sun_visible_fraction(atmosphere, r, mu_s);
+  if (fraction <= 0) return {0, 0, 0};
+  return scaled(transmittance_to_top(atmosphere, r, mu_s), fraction);
+}
+
+double mie_phase(const Atmosphere& atmosphere, double cos_theta) {
+  if (atmosphere.mie_phase == MiePhase::henyey_greenstein) return phase_hg(atmosphere.mie_g, cos_theta);
+  return phase_cornette_shanks(atmosphere.mie_g, cos_theta);
+}
+
+namespace {
+
+// Mars. No published preset with every constant was found; the values are derived:
+// - radius 3389.5 km (IAU mean radius), the air to 80 km (OpenSpace's Mars asset uses ~77 km);
+// - Rayleigh of CO₂: Bruneton 2017's earth coefficients × the number density ratio
+//   (610 Pa at 210 K vs 101325 Pa at 288 K: 0.0083) × CO₂'s cross-section over air's (≈ 2.4,
+//   Sneep & Ubachs 2005), scale height 11.1 km (Mars' ≈ 11 km);
+// - dust (Mie): extinction = optical depth 0.5 (a typical clear-season dust τ) / 11.1 km,
+//   single-scattering albedo 0.97 red, 0.93 green, 0.85 blue (dust absorbs blue), g 0.65;
+// - no ozone; ground albedo 0.25 (Mars' Bond albedo); the sun's angular radius
+//   0.004675 rad / 1.524 AU.
+Atmosphere mars_preset() {
+  constexpr double kMarsOverEarthRayleigh = 0.0083 * 2.4;
+  constexpr double kScaleHeight = 11.1e3;
+  constexpr double kDustExtinction = 0.5 / kScaleHeight;
+  Atmosphere mars;
+  mars.preset = "mars";
+  mars.bottom_radius = 3389.5e3;
+  mars.top_radius = 3389.5e3 + 80e3;
+  mars.rayleigh_scattering = scaled(Atmosphere{}.rayleigh_scattering, kMarsOverEarthRayleigh);
+  mars.rayleigh_density = {{}, {0, 1, -1.0 / kScaleHeight, 0, 0}};
+  mars.mie_extinction = {kDustExtinction, kDustExtinction, kDustExtinction};
+  mars.mie_scattering = {0.97 * kDustExtinction, 0.93 * kDustExtinction, 0.85 * kDustExtinction};
+  mars.mie_density = {{}, {0, 1, -1.0 / kScaleHeight, 0, 0}};
+  mars.mie_g = 0.65;
+  mars.absorption_extinction = {0, 0, 0};
+  mars.absorption_density = {};
+  mars.ground_albedo = {0.25, 0.25, 0.25};
+  mars.sun_angular_radius = 0.004675 / 1.524;
+  return mars;
+}
+
+}  // namespace
+
+// earth: Bruneton 2017's demo (demo/demo.cc) constants, which Hillaire 2020 uses: the
+// defaults of graph/scene/scene.h's Atmosphere.
+std::optional<Atmosphere> atmosphere_preset(const std::string& name) {
+  if (name == "earth") return Atmosphere{};
+  if (name == "mars") return mars_preset();
+  return std::nullopt;
+}
+
+}  // namespace volgraph::physics
