@@ -379,7 +379,7 @@ SkySample AtmosphereReference::sky(const Vec3& position, const Vec3& direction_i
   Vec3 p = position;
   double r = length_of(p);
   if (r > a.top_radius) {  // from space: enter at the top, or see the sun unattenuated
-    const std::optional<double> entry = physics::distance_to_sphere(r, dot(p, direction) / r, a.top_radius);
+    const std::optional<double> entry = physics::enter_atmosphere(a, r, dot(p, direction) / r);
     if (!entry) {
       if (dot(direction, sun_.direction) >= std::cos(sun_.angular_radius)) out.sun_disk = sun_radiance(sun_);
       out.radiance = out.sun_disk;
@@ -408,7 +408,7 @@ AerialPerspectiveSample AtmosphereReference::aerial_perspective(const Vec3& posi
   Vec3 p = position;
   double r = length_of(p), d = distance;
   if (r > a.top_radius) {
-    const std::optional<double> entry = physics::distance_to_sphere(r, dot(p, direction) / r, a.top_radius);
+    const std::optional<double> entry = physics::enter_atmosphere(a, r, dot(p, direction) / r);
     if (!entry || *entry >= distance) {
       out.scattering = no_scattering();
       return out;
