@@ -32,24 +32,6 @@ Vec3 sun_radiance(const AtmosphereSun& sun) {
 
 double altitude_of(const Atmosphere& a, const Vec3& p) { return std::max(0.0, length_of(p) - a.bottom_radius); }
 
-// The largest extinction over the atmosphere's altitudes, per channel, with a margin: the
-// profiles are sums of exponentials and linear terms, clamped, sampled at 8192 altitudes
-// and at every layer's edge; 1 % above it bounds what lies between (their curvature over
-// 7 m steps is far below it).
-Vec3 extinction_majorant(const Atmosphere& a) {
-  const double height = a.top_radius - a.bottom_radius;
-  std::vector<double> altitudes{0, height, a.rayleigh_density.lower.width, a.mie_density.lower.width,
-                                a.absorption_density.lower.width};
-  constexpr int kSteps = 8192;
-  for (int i = 0; i <= kSteps; ++i) altitudes.push_back(height * i / kSteps);
-  Vec3 m{0, 0, 0};
-  for (double h : altitudes) {
-    const Vec3 e = physics::extinction_at(a, std::clamp(h, 0.0, height));
-    for (int c = 0; c < 3; ++c) m[c] = std::max(m[c], e[c]);
-  }
-  return scaled(m, 1.01);
-}
-
 // Deterministic random numbers: splitmix64 (Steele, Lea, Flood 2014) seeds an mt19937_64
 // whose 53 high bits make a double in [0, 1) (std's distributions differ between libraries).
 uint64_t splitmix64(uint64_t x) {
@@ -106,6 +88,53 @@ RayEnd ray_end(const Atmosphere& a, const Vec3& p, const Vec3& d) {
   return {physics::distance_to_boundary(a, r, mu), ground};
 }
 
+// One channel's optical depth along a segment, tabulated for drawing distances: τ̃ at
+// kNodes + 1 equally spaced points by the trapezoid rule (only the sampling density comes
+// from it; the weights use physics' optical depth).
+struct SegmentTable {
+  static constexpr int kNodes = 128;
+  double length = 0;
+  std::vector<double> tau;
+};
+
+SegmentTable tabulate(const Atmosphere& a, const Vec3& y, const Vec3& d, double length, int c) {
+  SegmentTable table{length, std::vector<double>(SegmentTable::kNodes + 1, 0.0)};
+  const double h = length / SegmentTable::kNodes;
+  double previous = physics::extinction_at(a, altitude_of(a, y))[c];
+  for (int i = 1; i <= SegmentTable::kNodes; ++i) {
+    const double e = physics::extinction_at(a, altitude_of(a, add(y, scaled(d, i * h))))[c];
+    table.tau[size_t(i)] = table.tau[size_t(i - 1)] + 0.5 * (previous + e) * h;
+    previous = e;
+  }
+  return table;
+}
+
+struct Draw {
+  double t = 0, pdf = 0;
+};
+
+// A distance on [0, length] from 0.9 × the table's density σ̃ e^(−τ̃) / (1 − e^(−τ̃(length)))
+// + 0.1 × uniform (uniform alone where the table has no extinction), and its density.
+Draw draw_distance(const SegmentTable& table, Random& random) {
+  constexpr int n = SegmentTable::kNodes;
+  const double h = table.length / n, mass = -std::expm1(-table.tau.back());
+  if (!(mass > 0)) return {random.uniform() * table.length, 1 / table.length};
+  const auto bin_of = [&](double t) { return std::clamp(int(t / h), 0, n - 1); };
+  double t;
+  if (random.uniform() < 0.1) {
+    t = random.uniform() * table.length;
+  } else {
+    const double target = -std::log1p(-random.uniform() * mass);
+    const int i = std::clamp(int(std::upper_bound(table.tau.begin(), table.tau.end(), target) - table.tau.begin()) - 1, 0, n - 1);
+    const double slope = (table.tau[size_t(i + 1)] - table.tau[size_t(i)]) / h;
+    t = std::clamp(i * h + (slope > 0 ? (target - table.tau[size_t(i)]) / slope : 0.0), 0.0, table.length);
+  }
+  const int i = bin_of(t);
+  const double slope = (table.tau[size_t(i + 1)] - table.tau[size_t(i)]) / h;
+  const double tau = table.tau[size_t(i)] + slope * (t - i * h);
+  return {t, 0.9 * slope * std::exp(-tau) / mass + 0.1 / table.length};
+}
+
 // No scattering (a ray that misses the atmosphere): order 1, zero.
 ScatteringOrders no_scattering() {
   return {{{0, 0, 0}}, {{0, 0, 0}}, 1, {0, 0, 0}, {0, 0, 0}};
@@ -128,7 +157,7 @@ Vec3 planet_position(const Atmosphere& atmosphere, const Vec3& scene_point) {
 
 AtmosphereReference::AtmosphereReference(const Atmosphere& atmosphere, const AtmosphereSun& sun,
                                          const AtmosphereReferenceSettings& settings)
-    : atmosphere_(atmosphere), sun_(sun), settings_(settings), majorant_(extinction_majorant(atmosphere)) {
+    : atmosphere_(atmosphere), sun_(sun), settings_(settings) {
   sun_.direction = normalize(sun_.direction);
 }
 
@@ -252,7 +281,6 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
     for (int c = 0; c < 3; ++c) {
       Random random(splitmix64(splitmix64(splitmix64(settings_.seed) ^ key) ^ (uint64_t(s) * 3 + uint64_t(c))));
       OrderTally tally(max_orders, 0.0);
-      const double sigma_bar = majorant_[c];
 
       // NEE toward the sun at an air vertex (throughput β, the path's direction d arriving
       // there: toward the viewer is −d, the phase's cosine s·d).
@@ -288,47 +316,50 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
         return around(normalize(y), std::sqrt(xi), 2 * kPi * random.uniform());
       };
 
+      // Exact transmittance from y along d for t.
+      const auto transmittance_along = [&](const Vec3& y, const Vec3& d, double t) {
+        const double r = std::clamp(length_of(y), a.bottom_radius, a.top_radius);
+        return std::exp(-physics::optical_depth(a, r, std::clamp(dot(y, d) / length_of(y), -1.0, 1.0), t)[c]);
+      };
       // Continues a path from vertex `order` at y along d with throughput β (already
-      // including the vertex's scattering), tallying NEE at orders ≥ 2.
+      // including the vertex's scattering), tallying NEE at orders ≥ 2. Each segment's
+      // next vertex is in the air (a forced collision, drawn by draw_distance) or, where
+      // the segment ends on the ground, on the ground, chosen with probability q = 1 − T̃
+      // (clamped to [0.1, 0.9]) against 1 − q; Russian roulette (survival ≥ 0.05, β over
+      // its value at vertex 1) ends the paths.
       const auto walk = [&](Vec3 y, Vec3 d, double beta, uint32_t order) {
+        const double beta_first = beta;
         while (order < max_orders && beta > 0) {
-          const RayEnd end = ray_end(a, y, d);
-          double t = 0;
-          bool collided = false;
-          while (true) {  // delta tracking (Woodcock 1965)
-            t -= std::log(1 - random.uniform()) / sigma_bar;
-            if (t >= end.length) break;
-            const Vec3 x = add(y, scaled(d, t));
-            if (random.uniform() * sigma_bar < physics::extinction_at(a, altitude_of(a, x))[c]) {
-              collided = true;
-              break;
-            }
+          if (order >= 3) {
+            const double survival = std::clamp(beta / beta_first, 0.05, 1.0);
+            if (random.uniform() >= survival) return;
+            beta /= survival;
           }
+          const RayEnd end = ray_end(a, y, d);
+          if (!(end.length > 0)) return;
+          const SegmentTable table = tabulate(a, y, d, end.length, c);
+          const double q = end.ground ? std::clamp(-std::expm1(-table.tau.back()), 0.1, 0.9) : 1.0;
           ++order;
-          if (collided) {
-            y = add(y, scaled(d, t));
-            const double h = altitude_of(a, y);
-            beta /= physics::extinction_at(a, h)[c];
+          if (random.uniform() < q) {
+            const Draw draw = draw_distance(table, random);
+            beta *= transmittance_along(y, d, draw.t) / (draw.pdf * q);
+            y = add(y, scaled(d, draw.t));
             tally[order - 1] += beta * air_nee(y, d);
             d = scatter_direction(y, d, beta);
             continue;
           }
-          if (!end.ground) return;
-          y = add(y, scaled(d, end.length));
-          y = scaled(normalize(y), a.bottom_radius);
+          beta *= transmittance_along(y, d, end.length) / (1 - q);
+          y = scaled(normalize(add(y, scaled(d, end.length))), a.bottom_radius);
           tally[order - 1] += beta * ground_nee(y);
           d = reflect(y, beta);
         }
       };
 
-      // Vertex 1 in the air: t from ½ truncated exponential (σ̄) + ½ uniform on [0, D].
+      // Vertex 1 in the air, drawn as the others, weighted by the exact transmittance.
       {
-        const double u = random.uniform(), xi = random.uniform();
-        const double mass = -std::expm1(-sigma_bar * length);
-        const double t = u < 0.5 ? -std::log1p(-xi * mass) / sigma_bar : xi * length;
-        const double pdf = 0.5 * sigma_bar * std::exp(-sigma_bar * t) / mass + 0.5 / length;
-        const Vec3 y = add(position, scaled(direction, t));
-        double beta = std::exp(-physics::optical_depth(a, r0, mu0, t)[c]) / pdf;
+        const Draw draw = draw_distance(tabulate(a, position, direction, length, c), random);
+        const Vec3 y = add(position, scaled(direction, draw.t));
+        double beta = std::exp(-physics::optical_depth(a, r0, mu0, draw.t)[c]) / draw.pdf;
         const Vec3 d = scatter_direction(y, direction, beta);
         walk(y, d, beta, 1);
       }

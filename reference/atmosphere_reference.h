@@ -14,11 +14,13 @@
 // - orders 2…N by Monte Carlo path tracing with next-event estimation toward the sun,
 //   tallied per order, a fixed seed per (ray key, sample, channel), so a pixel's value is
 //   the same on every run and with any number of threads. Each channel is its own grey
-//   random walk (free paths by delta tracking, Woodcock 1965, under a majorant of the
-//   extinction), so no spectral weighting is needed. The first vertex along the view
-//   ray is drawn from a mixture of a truncated exponential and a uniform density on the
-//   ray and weighted by the exact transmittance; the ground (Lambertian, ground_albedo)
-//   is a vertex of its own, drawn by its exact transmittance.
+//   random walk, so no spectral weighting is needed. Every vertex is a forced collision:
+//   its distance drawn from the segment's tabulated optical depth (128 trapezoids) mixed
+//   with a uniform density and weighted by the exact transmittance (physics'
+//   optical_depth); where a segment ends on the Lambertian ground (ground_albedo) the
+//   ground is the vertex instead with probability 1 − T̃ (clamped to [0.1, 0.9]); from
+//   the camera both the air and the ground (by its exact transmittance) are taken. Paths
+//   end by Russian roulette from order 3 on.
 // Why Monte Carlo for the higher orders: it shares no discretisation with the LUT
 // techniques it measures (Hillaire 2020's isotropic multiple-scattering approximation,
 // Bruneton 2017's 4D tables of iterated orders), its only approximation is the sample
@@ -124,7 +126,6 @@ class AtmosphereReference {
   Atmosphere atmosphere_;
   AtmosphereSun sun_;
   AtmosphereReferenceSettings settings_;
-  Vec3 majorant_{0, 0, 0};  // ≥ the extinction at every altitude, per channel
 };
 
 // A scene point in the planet's frame: p + (0, bottom_radius + origin_altitude, 0).
