@@ -202,6 +202,32 @@ double mu_at(double r, double mu, double d) {
   return std::clamp((r * mu + d) / r_d, -1.0, 1.0);
 }
 
+double altitude_at(const Atmosphere& atmosphere, double r, double mu, double d) {
+  const double growth = d * (d + 2 * r * mu);
+  const double r_d = std::sqrt(std::max(r * r + growth, 0.0));
+  if (r + r_d <= 0) return -atmosphere.bottom_radius;
+  return (r - atmosphere.bottom_radius) + growth / (r + r_d);
+}
+
+// 4-point Gauss–Legendre on [−1, 1] (Abramowitz & Stegun, Table 25.4), as atmosphere.glsl.
+constexpr std::array<double, 2> kGauss4Nodes{0.3399810435848563, 0.8611363115940526};
+constexpr std::array<double, 2> kGauss4Weights{0.6521451548625461, 0.3478548451374538};
+
+Vec3 optical_depth_fixed(const Atmosphere& atmosphere, double r, double mu, double length, int panels) {
+  Vec3 total{0, 0, 0};
+  if (!(length > 0) || panels < 1) return total;
+  const double half = 0.5 * length / panels;
+  for (int p = 0; p < panels; ++p) {
+    const double centre = (2 * p + 1) * half;
+    for (size_t i = 0; i < kGauss4Nodes.size(); ++i) {
+      const Vec3 sides = sum(extinction_at(atmosphere, altitude_at(atmosphere, r, mu, centre - half * kGauss4Nodes[i])),
+                             extinction_at(atmosphere, altitude_at(atmosphere, r, mu, centre + half * kGauss4Nodes[i])));
+      total = sum(total, scaled(sides, kGauss4Weights[i] * half));
+    }
+  }
+  return total;
+}
+
 Vec3 optical_depth(const Atmosphere& atmosphere, double r, double mu, double length) {
   Vec3 total{0, 0, 0};
   if (!(length > 0)) return total;
@@ -325,6 +351,41 @@ std::optional<Atmosphere> atmosphere_preset(const std::string& name) {
   if (name == "earth") return Atmosphere{};
   if (name == "mars") return mars_preset();
   return std::nullopt;
+}
+
+namespace {
+
+void pack_vec3(const Vec3& v, float out[4], float w = 0) {
+  for (int i = 0; i < 3; ++i) out[i] = float(v[size_t(i)]);
+  out[3] = w;
+}
+
+GpuAtmosphereLayer pack_layer(const DensityLayer& layer) {
+  return {{float(layer.exp_term), float(layer.exp_scale), float(layer.linear_term), float(layer.constant_term)}};
+}
+
+GpuAtmosphereProfile pack_profile(const DensityProfile& profile) {
+  return {pack_layer(profile.lower), pack_layer(profile.upper), {float(profile.lower.width), 0, 0, 0}};
+}
+
+}  // namespace
+
+GpuAtmosphere pack_atmosphere(const Atmosphere& atmosphere) {
+  GpuAtmosphere out{};
+  out.radii[0] = float(atmosphere.bottom_radius);
+  out.radii[1] = float(atmosphere.top_radius);
+  out.radii[2] = float(atmosphere.sun_angular_radius);
+  out.radii[3] = float(atmosphere.mie_g);
+  const float phase = atmosphere.mie_phase == MiePhase::henyey_greenstein ? kMiePhaseHenyeyGreenstein : kMiePhaseCornetteShanks;
+  pack_vec3(atmosphere.rayleigh_scattering, out.rayleigh_scattering);
+  pack_vec3(atmosphere.mie_scattering, out.mie_scattering, phase);
+  pack_vec3(atmosphere.mie_extinction, out.mie_extinction);
+  pack_vec3(atmosphere.absorption_extinction, out.absorption_extinction);
+  pack_vec3(atmosphere.ground_albedo, out.ground_albedo);
+  out.rayleigh_density = pack_profile(atmosphere.rayleigh_density);
+  out.mie_density = pack_profile(atmosphere.mie_density);
+  out.absorption_density = pack_profile(atmosphere.absorption_density);
+  return out;
 }
 
 }  // namespace volgraph::physics

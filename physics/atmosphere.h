@@ -91,12 +91,18 @@ std::optional<double> enter_atmosphere(const Atmosphere& atmosphere, double r, d
 // written r + d(d + 2r·mu) / (r + r_d) so the altitude r_d − bottom keeps its precision.
 double radius_at(double r, double mu, double d);
 double mu_at(double r, double mu, double d);
+// The altitude there, r_d − bottom, as (r − bottom) + d(d + 2r·mu) / (r + r_d): in float
+// (the GLSL twin) it keeps its relative precision where r_d − bottom would round to 0.5 m.
+double altitude_at(const Atmosphere& atmosphere, double r, double mu, double d);
 
 // ∫ extinction along the ray from (r, mu) for `length` m (per channel), by 8-point
 // Gauss–Legendre panels between the profiles' kinks (layer boundaries, where a layer's
 // density clamps at 0 or 1, the ray's lowest point), each panel spanning at most one
 // smallest scale height in altitude (relative error below 1e-9 for the presets).
 Vec3 optical_depth(const Atmosphere& atmosphere, double r, double mu, double length);
+// The GLSL twin's rule (atmosphere.glsl optical_depth, what fills the transmittance LUT):
+// `panels` equal panels of 4-point Gauss–Legendre over [0, length].
+Vec3 optical_depth_fixed(const Atmosphere& atmosphere, double r, double mu, double length, int panels);
 // The same to the ray's boundary (the ground or the top).
 Vec3 optical_depth_to_boundary(const Atmosphere& atmosphere, double r, double mu);
 // Straight up from altitude h to the top, in closed form: each layer's exponential and
@@ -129,5 +135,26 @@ double mu_horizon(const Atmosphere& atmosphere, double r);
 
 // The preset `name` ("earth", "mars"), or nullopt for an unknown name.
 std::optional<Atmosphere> atmosphere_preset(const std::string& name);
+
+// std140/std430 mirror of atmosphere.glsl's AtmosphereParameters (all vec4s, 240 bytes).
+struct GpuAtmosphereLayer {
+  float terms[4];  // exp_term, exp_scale, linear_term, constant_term
+};
+struct GpuAtmosphereProfile {
+  GpuAtmosphereLayer lower, upper;
+  float width[4];  // x: the lower layer's width (m)
+};
+struct GpuAtmosphere {
+  float radii[4];                  // bottom, top (m), sun angular radius (rad), Mie g
+  float rayleigh_scattering[4];    // 1/m
+  float mie_scattering[4];         // 1/m; w: the Mie phase (kMiePhaseHenyeyGreenstein, kMiePhaseCornetteShanks)
+  float mie_extinction[4];         // 1/m
+  float absorption_extinction[4];  // 1/m
+  float ground_albedo[4];
+  GpuAtmosphereProfile rayleigh_density, mie_density, absorption_density;
+};
+static_assert(sizeof(GpuAtmosphere) == 240);
+constexpr float kMiePhaseHenyeyGreenstein = 0, kMiePhaseCornetteShanks = 1;
+GpuAtmosphere pack_atmosphere(const Atmosphere& atmosphere);
 
 }  // namespace volgraph::physics

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "physics/atmosphere.h"
+#include "physics/atmosphere_lut.h"
 #include "physics/phase.h"
 
 namespace volgraph::physics {
@@ -264,6 +265,87 @@ TEST(Atmosphere, NoSeamAtTheHorizon) {
       EXPECT_EQ(t(-1)[c], t(0)[c]);
     }
   }
+}
+
+// Bruneton 2017's transmittance texture: the zenith is x_mu = 0, the horizon x_mu = 1, the
+// ground x_r = 0 and the top x_r = 1, each at its texel centre; (r, mu) → uv → (r, mu)
+// round trips, and so does uv → (r, mu) → uv at every texel centre of a 256 × 64 texture.
+TEST(AtmosphereLut, TransmittanceParametrisationRoundTrips) {
+  const TransmittanceLutSize size;
+  const double R = kEarth.bottom_radius, top = kEarth.top_radius;
+  EXPECT_NEAR(transmittance_lut_uv(kEarth, R, 1, size).u, 0.5 / 256, 1e-12);
+  EXPECT_NEAR(transmittance_lut_uv(kEarth, R, 0, size).u, 1 - 0.5 / 256, 1e-12);
+  EXPECT_NEAR(transmittance_lut_uv(kEarth, R, 0.3, size).v, 0.5 / 64, 1e-12);
+  EXPECT_NEAR(transmittance_lut_uv(kEarth, top, 0.3, size).v, 1 - 0.5 / 64, 1e-12);
+  // At the top every upward ray has d = 0 (x_mu = 0): only mu ≤ 0 is recoverable there.
+  for (double h : {0.0, 1e-3, 100.0, 8e3, 59.9e3}) {
+    const double r = R + h;
+    for (double mu : {1.0, 0.5, 0.01, mu_horizon(kEarth, r) + 1e-6, mu_horizon(kEarth, r)}) {
+      const RadiusAndMu back = transmittance_lut_r_mu(kEarth, transmittance_lut_uv(kEarth, r, mu, size), size);
+      EXPECT_NEAR(back.r, r, 1e-6) << "h " << h << " mu " << mu;
+      EXPECT_NEAR(back.mu, mu, 2e-7) << "h " << h << " mu " << mu;
+    }
+  }
+  const RadiusAndMu at_top = transmittance_lut_r_mu(kEarth, transmittance_lut_uv(kEarth, top, -0.1, size), size);  // the horizon is at −0.136
+  EXPECT_NEAR(at_top.r, top, 1e-6);
+  EXPECT_NEAR(at_top.mu, -0.1, 1e-9);
+  for (int j = 0; j < size.height; ++j) {
+    for (int i = 0; i < size.width; ++i) {
+      const LutUv uv{(i + 0.5) / size.width, (j + 0.5) / size.height};
+      const RadiusAndMu rm = transmittance_lut_r_mu(kEarth, uv, size);
+      ASSERT_GE(rm.mu, mu_horizon(kEarth, rm.r) - 1e-9) << i << " " << j;  // never below the horizon
+      const LutUv again = transmittance_lut_uv(kEarth, rm.r, rm.mu, size);
+      EXPECT_NEAR(again.u, uv.u, 1e-7) << i << " " << j;
+      EXPECT_NEAR(again.v, uv.v, 1e-9) << i << " " << j;
+    }
+  }
+}
+
+TEST(AtmosphereLut, MultiscatteringParametrisationRoundTrips) {
+  const MultiscatteringLutSize size;
+  const double R = kEarth.bottom_radius;
+  EXPECT_NEAR(multiscattering_lut_uv(kEarth, R, -1, size).u, 0.5 / 32, 1e-15);
+  EXPECT_NEAR(multiscattering_lut_uv(kEarth, R + 60e3, 1, size).v, 1 - 0.5 / 32, 1e-15);
+  for (int j = 0; j < size.height; ++j) {
+    for (int i = 0; i < size.width; ++i) {
+      const RadiusAndMuS p = multiscattering_lut_r_mu_s(kEarth, {(i + 0.5) / 32, (j + 0.5) / 32}, size);
+      EXPECT_NEAR(p.mu_s, -1 + 2.0 * i / 31, 1e-12);  // texel i holds x = i / (n − 1)
+      EXPECT_NEAR(p.r, R + 60e3 * j / 31, 1e-6);
+      const LutUv uv = multiscattering_lut_uv(kEarth, p.r, p.mu_s, size);
+      EXPECT_NEAR(uv.u, (i + 0.5) / 32, 1e-12);
+      EXPECT_NEAR(uv.v, (j + 0.5) / 32, 1e-12);
+    }
+  }
+}
+
+// Hillaire 2020's sky view: the zenith is v's first texel centre, the horizon v = 1/2 from
+// either side, the nadir the last texel centre; toward the sun u's first texel centre; the
+// latitude mapping is quadratic about the horizon (half the rows within ~1/4 of the angle
+// nearest it); round trips both ways.
+TEST(AtmosphereLut, SkyViewParametrisationRoundTrips) {
+  const SkyViewLutSize size;
+  for (double h : {0.0, 1e-3, 1e3, 30e3, 60e3}) {
+    const double r = kEarth.bottom_radius + h, mu_h = mu_horizon(kEarth, r);
+    EXPECT_NEAR(sky_view_lut_uv(kEarth, r, {1, 1}, size).v, 0.5 / 108, 1e-12);
+    EXPECT_NEAR(sky_view_lut_uv(kEarth, r, {-1, 1}, size).v, 1 - 0.5 / 108, 1e-9);
+    EXPECT_NEAR(sky_view_lut_uv(kEarth, r, {mu_h, 1}, size).v, 0.5, 1e-7);  // √ of the rounding in θ − θ_h
+    EXPECT_NEAR(sky_view_lut_uv(kEarth, r, {mu_h + 1e-9, 1}, size).v, 0.5, 1e-4);
+    EXPECT_NEAR(sky_view_lut_uv(kEarth, r, {0.3, 1}, size).u, 0.5 / 192, 1e-12);
+    EXPECT_NEAR(sky_view_lut_uv(kEarth, r, {0.3, -1}, size).u, 1 - 0.5 / 192, 1e-12);
+    for (int j = 0; j < size.height; ++j) {
+      for (int i = 0; i < size.width; i += 7) {
+        const LutUv uv{(i + 0.5) / size.width, (j + 0.5) / size.height};
+        const SkyViewDirection d = sky_view_lut_direction(kEarth, r, uv, size);
+        const LutUv again = sky_view_lut_uv(kEarth, r, d, size);
+        EXPECT_NEAR(again.u, uv.u, 1e-9) << "h " << h << " texel " << i << " " << j;
+        EXPECT_NEAR(again.v, uv.v, 1e-7) << "h " << h << " texel " << i << " " << j;
+      }
+    }
+  }
+  // Non-linear: the row next to the horizon spans a far smaller angle than the zenith's.
+  const double r = kEarth.bottom_radius + 1e3;
+  auto theta = [&](int row) { return std::acos(sky_view_lut_direction(kEarth, r, {0.5, (row + 0.5) / 108}, size).mu); };
+  EXPECT_LT(theta(53) - theta(52), 0.1 * (theta(1) - theta(0)));
 }
 
 }  // namespace
