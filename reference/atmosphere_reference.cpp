@@ -384,14 +384,15 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
       out.standard_error[k][c] = std::sqrt(variance / samples);
     }
   }
-  // N: the first order ≥ 2 whose contribution, its estimate plus 2 standard errors, is
-  // below order_threshold of orders 1…N.
+  // N: the first order ≥ 2 after which the orders traced add at most order_threshold of
+  // orders 1…N (largest channel).
+  std::vector<Vec3> beyond(max_orders + 1, Vec3{0, 0, 0});  // beyond[k]: Σ orders k+1…
+  for (uint32_t k = max_orders; k-- > 0;) beyond[k] = add(beyond[k + 1], out.radiance[k]);
   out.orders = max_orders;
   Vec3 running = out.radiance[0];
   for (uint32_t k = 1; k < max_orders; ++k) {
     running = add(running, out.radiance[k]);
-    const Vec3 upper = add(out.radiance[k], scaled(out.standard_error[k], 2));
-    if (largest(upper) <= settings_.order_threshold * largest(running)) {
+    if (largest(beyond[k + 1]) <= settings_.order_threshold * largest(running)) {
       out.orders = k + 1;
       break;
     }
@@ -459,7 +460,7 @@ AerialPerspectiveSample AtmosphereReference::aerial_perspective(const Vec3& posi
 SkyImage render_sky_image(const AtmosphereReference& reference, const Camera& camera, const RenderSettings& settings) {
   const Vec3 eye = planet_position(reference.atmosphere(), camera.position);
   std::vector<uint32_t> orders(size_t(settings.width) * settings.height, 0);
-  std::vector<double> residuals(orders.size(), 0.0);
+  std::vector<double> residuals(orders.size(), 0.0), errors(orders.size(), 0.0);
   SkyImage out;
   out.image = render_pixels(
       [&](uint32_t i, uint32_t j) {
@@ -468,11 +469,19 @@ SkyImage render_sky_image(const AtmosphereReference& reference, const Camera& ca
         orders[key] = s.scattering.orders;
         const double total = largest(s.scattering.total);
         residuals[key] = total > 0 ? largest(s.scattering.residual) / total : 0.0;
+        for (int c = 0; c < 3; ++c) {
+          double variance = 0;
+          for (uint32_t k = 1; k < s.scattering.orders; ++k) variance += std::pow(s.scattering.standard_error[k][c], 2);
+          const double t = s.scattering.total[c];
+          if (t > 0) errors[key] = std::max(errors[key], std::sqrt(variance) / t);
+        }
         return s.radiance;
       },
       settings);
   out.max_orders = *std::max_element(orders.begin(), orders.end());
   out.max_relative_residual = *std::max_element(residuals.begin(), residuals.end());
+  out.max_relative_standard_error = *std::max_element(errors.begin(), errors.end());
+  for (double e : errors) out.mean_relative_standard_error += e / double(errors.size());
   return out;
 }
 

@@ -25,11 +25,11 @@
 // techniques it measures (Hillaire 2020's isotropic multiple-scattering approximation,
 // Bruneton 2017's 4D tables of iterated orders), its only approximation is the sample
 // count, and its error is stated: the standard error of each order's estimate.
-// The order count N is the first order ≥ 2 whose contribution (its estimate plus two
-// standard errors, largest channel) falls below `order_threshold` of the sum of orders
-// 1…N; the paths are traced up to `max_orders` vertices and what orders N+1… add is the
-// stated residual (orders past max_orders are not traced: with the earth preset they are
-// below 1e-9 of the sky).
+// The order count N is the first order ≥ 2 after which the orders traced (paths run
+// until Russian roulette ends them, at most `max_orders` vertices) add at most
+// `order_threshold` of orders 1…N (largest channel): a criterion on the whole tail, as a
+// single high order's estimate is too noisy to stop on. What orders N+1… add is the
+// stated residual; orders past max_orders are not traced.
 #pragma once
 
 #include <cstdint>
@@ -59,7 +59,12 @@ struct AtmosphereReferenceSettings {
   double relative_tolerance = 1e-6;
   uint32_t initial_panels = 64;
   uint32_t max_depth = 30;
-  // Orders ≥ 2: paths per channel and ray, their length cap, the convergence threshold.
+  // Orders ≥ 2: paths per channel and ray (0: single scattering only, exact to the
+  // quadrature's tolerance), their length cap, the convergence threshold. Measured on a
+  // 32x18 sky of the earth preset from 2 m, 90° field of view, 64 paths (AMD EPYC, 2
+  // threads, loaded): 7-12 s; the Monte Carlo's standard error of a pixel's total is on
+  // average 3.4 % (at most 6.2 %) of it at noon (sun 60° up) and 10 % (at most 44 %) at
+  // sunset (sun 2° up); it falls as 1/√samples.
   uint32_t samples = 64;
   uint32_t max_orders = 64;
   double order_threshold = 1e-3;
@@ -135,6 +140,9 @@ struct SkyImage {
   ReferenceImage image;
   uint32_t max_orders = 0;            // the largest N over the pixels
   double max_relative_residual = 0;   // the largest residual / total (largest channel) over the pixels
+  // The Monte Carlo's standard error of each pixel's total (orders 2…N, independent),
+  // over its total, largest channel: the mean and the largest over the pixels.
+  double mean_relative_standard_error = 0, max_relative_standard_error = 0;
 };
 
 // The sky seen by `camera` (scene frame, DESIGN.md's pixel convention, one ray through

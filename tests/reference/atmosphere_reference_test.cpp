@@ -241,6 +241,16 @@ TEST(AtmosphereReference, AerialPerspectiveToTheBoundaryIsTheSkyAndStartsAtNothi
   }
 }
 
+TEST(AtmosphereReference, WithoutPathsTheSkyIsSingleScattering) {
+  const Atmosphere a = earth();
+  const AtmosphereReference reference(a, sun_at(10), few_samples(0));
+  const Vec3 eye{0, a.bottom_radius + 300, 0}, v = normalize(direction_at(15, 120));  // as sky() normalises it
+  const SkySample s = reference.sky(eye, v, 9);
+  EXPECT_EQ(s.scattering.total, reference.single_scattering(eye, v, physics::distance_to_boundary(a, eye[1], v[1])));
+  EXPECT_EQ(s.scattering.residual, (Vec3{0, 0, 0}));
+  EXPECT_EQ(s.scattering.orders, 2u);
+}
+
 // Camera at 0 m, 1 mm, 10 km, 100 km and 1000 km (the last two above the earth's
 // atmosphere: the ray enters at the top), looking within 1e-6 of the horizon, the sun
 // below it: on the earth and on a planet of 1 km radius (its air 60 km deep).
