@@ -88,60 +88,72 @@ RayEnd ray_end(const Atmosphere& a, const Vec3& p, const Vec3& d) {
   return {physics::distance_to_boundary(a, r, mu), ground};
 }
 
-// One channel's optical depth along a segment, tabulated for drawing distances: τ̃ at
-// kNodes + 1 equally spaced points by the trapezoid rule (only the sampling density comes
-// from it; the weights use physics' optical depth).
+// The optical depth along a segment, tabulated for drawing distances: τ̃ at kNodes + 1
+// equally spaced points by the trapezoid rule, per channel (only the sampling densities
+// come from it; the weights use physics' optical depth).
 struct SegmentTable {
   static constexpr int kNodes = 128;
   double length = 0;
-  std::vector<double> tau;
+  std::vector<Vec3> tau;
 };
 
-SegmentTable tabulate(const Atmosphere& a, const Vec3& y, const Vec3& d, double length, int c) {
-  SegmentTable table{length, std::vector<double>(SegmentTable::kNodes + 1, 0.0)};
+SegmentTable tabulate(const Atmosphere& a, const Vec3& y, const Vec3& d, double length) {
+  SegmentTable table{length, std::vector<Vec3>(SegmentTable::kNodes + 1, Vec3{0, 0, 0})};
   const double h = length / SegmentTable::kNodes;
-  double previous = physics::extinction_at(a, altitude_of(a, y))[c];
+  Vec3 previous = physics::extinction_at(a, altitude_of(a, y));
   for (int i = 1; i <= SegmentTable::kNodes; ++i) {
-    const double e = physics::extinction_at(a, altitude_of(a, add(y, scaled(d, i * h))))[c];
-    table.tau[size_t(i)] = table.tau[size_t(i - 1)] + 0.5 * (previous + e) * h;
+    const Vec3 e = physics::extinction_at(a, altitude_of(a, add(y, scaled(d, i * h))));
+    for (int c = 0; c < 3; ++c) table.tau[size_t(i)][c] = table.tau[size_t(i - 1)][c] + 0.5 * (previous[c] + e[c]) * h;
     previous = e;
   }
   return table;
 }
 
-struct Draw {
-  double t = 0, pdf = 0;
-};
-
-// A distance on [0, length] from 0.9 × the table's density σ̃ e^(−τ̃) / (1 − e^(−τ̃(length)))
-// + 0.1 × uniform (uniform alone where the table has no extinction), and its density.
-Draw draw_distance(const SegmentTable& table, Random& random) {
+// Channel c's density of draw_distance at t: 0.9 × σ̃ e^(−τ̃) / (1 − e^(−τ̃(length))) + 0.1 ×
+// uniform (uniform alone where the table has no extinction).
+double distance_density(const SegmentTable& table, int c, double t) {
   constexpr int n = SegmentTable::kNodes;
-  const double h = table.length / n, mass = -std::expm1(-table.tau.back());
-  if (!(mass > 0)) return {random.uniform() * table.length, 1 / table.length};
-  const auto bin_of = [&](double t) { return std::clamp(int(t / h), 0, n - 1); };
-  double t;
-  if (random.uniform() < 0.1) {
-    t = random.uniform() * table.length;
-  } else {
-    const double target = -std::log1p(-random.uniform() * mass);
-    const int i = std::clamp(int(std::upper_bound(table.tau.begin(), table.tau.end(), target) - table.tau.begin()) - 1, 0, n - 1);
-    const double slope = (table.tau[size_t(i + 1)] - table.tau[size_t(i)]) / h;
-    t = std::clamp(i * h + (slope > 0 ? (target - table.tau[size_t(i)]) / slope : 0.0), 0.0, table.length);
-  }
-  const int i = bin_of(t);
-  const double slope = (table.tau[size_t(i + 1)] - table.tau[size_t(i)]) / h;
-  const double tau = table.tau[size_t(i)] + slope * (t - i * h);
-  return {t, 0.9 * slope * std::exp(-tau) / mass + 0.1 / table.length};
+  const double h = table.length / n, mass = -std::expm1(-table.tau.back()[c]);
+  if (!(mass > 0)) return 1 / table.length;
+  const int i = std::clamp(int(t / h), 0, n - 1);
+  const double slope = (table.tau[size_t(i + 1)][c] - table.tau[size_t(i)][c]) / h;
+  const double tau = table.tau[size_t(i)][c] + slope * (t - i * h);
+  return 0.9 * slope * std::exp(-tau) / mass + 0.1 / table.length;
 }
+
+// A distance on [0, length] from channel c's distance_density.
+double draw_distance(const SegmentTable& table, int c, Random& random) {
+  constexpr int n = SegmentTable::kNodes;
+  const double h = table.length / n, mass = -std::expm1(-table.tau.back()[c]);
+  if (!(mass > 0) || random.uniform() < 0.1) return random.uniform() * table.length;
+  const double target = -std::log1p(-random.uniform() * mass);
+  int i = 0;
+  while (i < n - 1 && table.tau[size_t(i + 1)][c] <= target) ++i;
+  const double slope = (table.tau[size_t(i + 1)][c] - table.tau[size_t(i)][c]) / h;
+  return std::clamp(i * h + (slope > 0 ? (target - table.tau[size_t(i)][c]) / slope : 0.0), 0.0, table.length);
+}
+
+// A path's throughput under one-sample multiple importance sampling over the channels
+// (hero-wavelength spectral sampling, Wilkie et al. 2014, balance heuristic, Veach 1997
+// §9.2): the path is drawn by the hero channel h's densities; f_c / p_h is kept per
+// channel and p_j / p_h per strategy, and the estimate of channel c is
+// f_c / ((p_0 + p_1 + p_2) / 3).
+struct Throughput {
+  Vec3 f_over_hero{1, 1, 1};
+  Vec3 p_over_hero{1, 1, 1};
+  Vec3 estimate() const { return scaled(f_over_hero, 3 / (p_over_hero[0] + p_over_hero[1] + p_over_hero[2])); }
+  // One step: the integrand's factor per channel, and each strategy's density.
+  void step(const Vec3& f, const Vec3& p, int hero) {
+    for (int c = 0; c < 3; ++c) f_over_hero[c] *= f[c] / p[hero];
+    for (int j = 0; j < 3; ++j) p_over_hero[j] *= p[j] / p[hero];
+  }
+  void scale(double s) { f_over_hero = scaled(f_over_hero, s); }
+};
 
 // No scattering (a ray that misses the atmosphere): order 1, zero.
 ScatteringOrders no_scattering() {
   return {{{0, 0, 0}}, {{0, 0, 0}}, 1, {0, 0, 0}, {0, 0, 0}};
 }
-
-// One sample's per-order tallies of one channel.
-using OrderTally = std::vector<double>;
 
 }  // namespace
 
@@ -273,113 +285,123 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
   out.radiance[0] = single_scattering_along(position, direction, length, sun_.direction);
   if (ends_on_ground) out.radiance[0] = add(out.radiance[0], times(view_transmittance_to_end, ground_direct(ground_point)));
 
-  // Orders ≥ 2, channel by channel.
+  // Orders ≥ 2: paths drawn by a hero channel chosen at random, each tallying every channel.
   const double g = a.mie_g;
-  std::vector<double> sum(max_orders * 3, 0.0), sum_sq(max_orders * 3, 0.0);
+  std::vector<Vec3> sum(max_orders, Vec3{0, 0, 0}), sum_sq(max_orders, Vec3{0, 0, 0});
   const uint32_t samples = settings_.samples;
   for (uint32_t s = 0; s < samples && length > 0; ++s) {
-    for (int c = 0; c < 3; ++c) {
-      Random random(splitmix64(splitmix64(splitmix64(settings_.seed) ^ key) ^ (uint64_t(s) * 3 + uint64_t(c))));
-      OrderTally tally(max_orders, 0.0);
+    Random random(splitmix64(splitmix64(splitmix64(settings_.seed) ^ key) ^ uint64_t(s)));
+    const int hero = std::min(2, int(random.uniform() * 3));
+    std::vector<Vec3> tally(max_orders, Vec3{0, 0, 0});
 
-      // NEE toward the sun at an air vertex (throughput β, the path's direction d arriving
-      // there: toward the viewer is −d, the phase's cosine s·d).
-      const auto air_nee = [&](const Vec3& y, const Vec3& d) {
-        const double h = altitude_of(a, y), r = std::clamp(length_of(y), a.bottom_radius, a.top_radius);
-        const double mu_s = std::clamp(dot(y, sun_.direction) / length_of(y), -1.0, 1.0);
-        const double cos_theta = std::clamp(dot(sun_.direction, d), -1.0, 1.0);
-        const double sigma = physics::rayleigh_scattering_at(a, h)[c] * physics::phase_rayleigh(cos_theta) +
-                             physics::mie_scattering_at(a, h)[c] * physics::mie_phase(a, cos_theta);
-        return sigma * sun_.irradiance[c] * physics::sun_transmittance(a, r, mu_s)[c];
-      };
-      const auto ground_nee = [&](const Vec3& y) { return ground_direct(y)[c]; };
-      // A new direction after scattering at y from direction d: the lobe by σ_lobe/σ_s, its
-      // cosine from that lobe (Mie from HG, weighted by P_M / P_HG); the throughput × σ_s.
-      const auto scatter_direction = [&](const Vec3& y, const Vec3& d, double& beta) {
-        const double h = altitude_of(a, y);
-        const double rayleigh = physics::rayleigh_scattering_at(a, h)[c], mie = physics::mie_scattering_at(a, h)[c];
-        const double total = rayleigh + mie;
-        double cos_theta;
-        if (random.uniform() * total < rayleigh) {
-          cos_theta = sample_rayleigh_cosine(random.uniform());
-        } else {
-          cos_theta = sample_hg_cosine(g, random.uniform());
-          beta *= physics::mie_phase(a, cos_theta) / physics::phase_hg(g, cos_theta);
+    // NEE toward the sun at an air vertex (the path's direction d arriving there: toward
+    // the viewer is −d, the phase's cosine s·d): (σ_R P_R + σ_M P_M) E T_sun.
+    const auto air_nee = [&](const Vec3& y, const Vec3& d) {
+      const double h = altitude_of(a, y), r = std::clamp(length_of(y), a.bottom_radius, a.top_radius);
+      const double mu_s = std::clamp(dot(y, sun_.direction) / length_of(y), -1.0, 1.0);
+      const double cos_theta = std::clamp(dot(sun_.direction, d), -1.0, 1.0);
+      const Vec3 sigma = add(scaled(physics::rayleigh_scattering_at(a, h), physics::phase_rayleigh(cos_theta)),
+                             scaled(physics::mie_scattering_at(a, h), physics::mie_phase(a, cos_theta)));
+      return times(times(sigma, sun_.irradiance), physics::sun_transmittance(a, r, mu_s));
+    };
+    // A new direction after scattering at y from direction d, by the hero's lobe mixture
+    // (the lobe by σ_lobe/σ_s, Rayleigh's cosine exactly, Mie's from Henyey–Greenstein);
+    // nullopt where the hero does not scatter.
+    const auto scatter_direction = [&](const Vec3& y, const Vec3& d, Throughput& beta) -> std::optional<Vec3> {
+      const double h = altitude_of(a, y);
+      const Vec3 rayleigh = physics::rayleigh_scattering_at(a, h), mie = physics::mie_scattering_at(a, h);
+      const double total_h = rayleigh[hero] + mie[hero];
+      if (!(total_h > 0)) return std::nullopt;
+      const double cos_theta = random.uniform() * total_h < rayleigh[hero] ? sample_rayleigh_cosine(random.uniform())
+                                                                          : sample_hg_cosine(g, random.uniform());
+      const double p_rayleigh = physics::phase_rayleigh(cos_theta), p_mie = physics::mie_phase(a, cos_theta);
+      const double q_mie = std::abs(g) < 1e-3 ? physics::phase_isotropic<double>() : physics::phase_hg(g, cos_theta);
+      Vec3 f, p;
+      for (int c = 0; c < 3; ++c) {
+        f[c] = rayleigh[c] * p_rayleigh + mie[c] * p_mie;
+        const double total = rayleigh[c] + mie[c];
+        p[c] = total > 0 ? (rayleigh[c] * p_rayleigh + mie[c] * q_mie) / total : 0.0;
+      }
+      beta.step(f, p, hero);
+      return around(d, cos_theta, 2 * kPi * random.uniform());
+    };
+    // Cosine-weighted about the ground's normal (every strategy alike): throughput × albedo.
+    const auto reflect = [&](const Vec3& y, Throughput& beta) {
+      beta.f_over_hero = times(beta.f_over_hero, a.ground_albedo);
+      const double xi = random.uniform();
+      return around(normalize(y), std::sqrt(xi), 2 * kPi * random.uniform());
+    };
+    const auto transmittance_along = [&](const Vec3& y, const Vec3& d, double t) {
+      const double r = std::clamp(length_of(y), a.bottom_radius, a.top_radius);
+      return exp_minus(physics::optical_depth(a, r, std::clamp(dot(y, d) / length_of(y), -1.0, 1.0), t));
+    };
+    // Continues a path from vertex `order` at y along d, tallying NEE at orders ≥ 2. Each
+    // segment's next vertex is in the air (a forced collision, drawn by draw_distance) or,
+    // where the segment ends on the ground, on the ground, chosen with probability
+    // q = 1 − T̃ (clamped to [0.1, 0.9]) against 1 − q; Russian roulette (survival ≥ 0.05,
+    // the largest channel's estimate over its value at vertex 1) ends the paths.
+    const auto walk = [&](Vec3 y, Vec3 d, Throughput beta, uint32_t order) {
+      const double first = largest(beta.estimate());
+      while (order < max_orders && first > 0) {
+        if (order >= 3) {
+          const double survival = std::clamp(largest(beta.estimate()) / first, 0.05, 1.0);
+          if (random.uniform() >= survival) return;
+          beta.scale(1 / survival);
         }
-        beta *= total;
-        return around(d, cos_theta, 2 * kPi * random.uniform());
-      };
-      // Cosine-weighted about the ground's normal; throughput × albedo.
-      const auto reflect = [&](const Vec3& y, double& beta) {
-        beta *= a.ground_albedo[c];
-        const double xi = random.uniform();
-        return around(normalize(y), std::sqrt(xi), 2 * kPi * random.uniform());
-      };
-
-      // Exact transmittance from y along d for t.
-      const auto transmittance_along = [&](const Vec3& y, const Vec3& d, double t) {
-        const double r = std::clamp(length_of(y), a.bottom_radius, a.top_radius);
-        return std::exp(-physics::optical_depth(a, r, std::clamp(dot(y, d) / length_of(y), -1.0, 1.0), t)[c]);
-      };
-      // Continues a path from vertex `order` at y along d with throughput β (already
-      // including the vertex's scattering), tallying NEE at orders ≥ 2. Each segment's
-      // next vertex is in the air (a forced collision, drawn by draw_distance) or, where
-      // the segment ends on the ground, on the ground, chosen with probability q = 1 − T̃
-      // (clamped to [0.1, 0.9]) against 1 − q; Russian roulette (survival ≥ 0.05, β over
-      // its value at vertex 1) ends the paths.
-      const auto walk = [&](Vec3 y, Vec3 d, double beta, uint32_t order) {
-        const double beta_first = beta;
-        while (order < max_orders && beta > 0) {
-          if (order >= 3) {
-            const double survival = std::clamp(beta / beta_first, 0.05, 1.0);
-            if (random.uniform() >= survival) return;
-            beta /= survival;
-          }
-          const RayEnd end = ray_end(a, y, d);
-          if (!(end.length > 0)) return;
-          const SegmentTable table = tabulate(a, y, d, end.length, c);
-          const double q = end.ground ? std::clamp(-std::expm1(-table.tau.back()), 0.1, 0.9) : 1.0;
-          ++order;
-          if (random.uniform() < q) {
-            const Draw draw = draw_distance(table, random);
-            beta *= transmittance_along(y, d, draw.t) / (draw.pdf * q);
-            y = add(y, scaled(d, draw.t));
-            tally[order - 1] += beta * air_nee(y, d);
-            d = scatter_direction(y, d, beta);
-            continue;
-          }
-          beta *= transmittance_along(y, d, end.length) / (1 - q);
-          y = scaled(normalize(add(y, scaled(d, end.length))), a.bottom_radius);
-          tally[order - 1] += beta * ground_nee(y);
-          d = reflect(y, beta);
+        const RayEnd end = ray_end(a, y, d);
+        if (!(end.length > 0)) return;
+        const SegmentTable table = tabulate(a, y, d, end.length);
+        Vec3 q{1, 1, 1};
+        if (end.ground)
+          for (int c = 0; c < 3; ++c) q[c] = std::clamp(-std::expm1(-table.tau.back()[c]), 0.1, 0.9);
+        ++order;
+        if (random.uniform() < q[hero]) {
+          const double t = draw_distance(table, hero, random);
+          Vec3 p;
+          for (int j = 0; j < 3; ++j) p[j] = distance_density(table, j, t) * q[j];
+          beta.step(transmittance_along(y, d, t), p, hero);
+          y = add(y, scaled(d, t));
+          tally[order - 1] = add(tally[order - 1], times(beta.estimate(), air_nee(y, d)));
+          const std::optional<Vec3> next = scatter_direction(y, d, beta);
+          if (!next) return;
+          d = *next;
+          continue;
         }
-      };
+        beta.step(transmittance_along(y, d, end.length), {1 - q[0], 1 - q[1], 1 - q[2]}, hero);
+        y = scaled(normalize(add(y, scaled(d, end.length))), a.bottom_radius);
+        tally[order - 1] = add(tally[order - 1], times(beta.estimate(), ground_direct(y)));
+        d = reflect(y, beta);
+      }
+    };
 
-      // Vertex 1 in the air, drawn as the others, weighted by the exact transmittance.
-      {
-        const Draw draw = draw_distance(tabulate(a, position, direction, length, c), random);
-        const Vec3 y = add(position, scaled(direction, draw.t));
-        double beta = std::exp(-physics::optical_depth(a, r0, mu0, draw.t)[c]) / draw.pdf;
-        const Vec3 d = scatter_direction(y, direction, beta);
-        walk(y, d, beta, 1);
-      }
-      // Vertex 1 on the ground, by its exact transmittance.
-      if (ends_on_ground) {
-        double beta = view_transmittance_to_end[c];
-        const Vec3 y = scaled(normalize(ground_point), a.bottom_radius);
-        const Vec3 d = reflect(y, beta);
-        walk(y, d, beta, 1);
-      }
-      for (uint32_t k = 1; k < max_orders; ++k) {
-        sum[k * 3 + c] += tally[k];
-        sum_sq[k * 3 + c] += tally[k] * tally[k];
-      }
+    // Vertex 1 in the air, drawn as the others, weighted by the exact transmittance.
+    {
+      const SegmentTable table = tabulate(a, position, direction, length);
+      const double t = draw_distance(table, hero, random);
+      Throughput beta;
+      beta.step(exp_minus(physics::optical_depth(a, r0, mu0, t)),
+                {distance_density(table, 0, t), distance_density(table, 1, t), distance_density(table, 2, t)}, hero);
+      const Vec3 y = add(position, scaled(direction, t));
+      if (const std::optional<Vec3> d = scatter_direction(y, direction, beta)) walk(y, *d, beta, 1);
     }
+    // Vertex 1 on the ground, by its exact transmittance (every strategy alike).
+    if (ends_on_ground) {
+      Throughput beta;
+      beta.f_over_hero = view_transmittance_to_end;
+      const Vec3 y = scaled(normalize(ground_point), a.bottom_radius);
+      const Vec3 d = reflect(y, beta);
+      walk(y, d, beta, 1);
+    }
+    for (uint32_t k = 1; k < max_orders; ++k)
+      for (int c = 0; c < 3; ++c) {
+        sum[k][c] += tally[k][c];
+        sum_sq[k][c] += tally[k][c] * tally[k][c];
+      }
   }
   for (uint32_t k = 1; k < max_orders && samples > 0; ++k) {
     for (int c = 0; c < 3; ++c) {
-      const double mean = sum[k * 3 + c] / samples;
-      const double variance = samples > 1 ? std::max(0.0, (sum_sq[k * 3 + c] / samples - mean * mean)) * samples / (samples - 1) : 0.0;
+      const double mean = sum[k][c] / samples;
+      const double variance = samples > 1 ? std::max(0.0, (sum_sq[k][c] / samples - mean * mean)) * samples / (samples - 1) : 0.0;
       out.radiance[k][c] = mean;
       out.standard_error[k][c] = std::sqrt(variance / samples);
     }

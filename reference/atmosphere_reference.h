@@ -13,14 +13,18 @@
 //   optical_depth at every node, the sun's from physics' sun_transmittance;
 // - orders 2…N by Monte Carlo path tracing with next-event estimation toward the sun,
 //   tallied per order, a fixed seed per (ray key, sample, channel), so a pixel's value is
-//   the same on every run and with any number of threads. Each channel is its own grey
-//   random walk, so no spectral weighting is needed. Every vertex is a forced collision:
-//   its distance drawn from the segment's tabulated optical depth (128 trapezoids) mixed
-//   with a uniform density and weighted by the exact transmittance (physics'
-//   optical_depth); where a segment ends on the Lambertian ground (ground_albedo) the
-//   ground is the vertex instead with probability 1 − T̃ (clamped to [0.1, 0.9]); from
-//   the camera both the air and the ground (by its exact transmittance) are taken. Paths
-//   end by Russian roulette from order 3 on.
+//   the same on every run and with any number of threads. A path is drawn by the
+//   densities of one channel (the hero, chosen at random) and tallies every channel by
+//   one-sample multiple importance sampling over the three (Wilkie et al. 2014's hero
+//   wavelengths, Veach 1997's balance heuristic): 2-3× less variance per second than a
+//   walk per channel. Every vertex is a forced collision: its distance drawn from the
+//   segment's tabulated optical depth (128 trapezoids) mixed with a uniform density and
+//   weighted by the exact transmittance (physics' optical_depth); where a segment ends on
+//   the Lambertian ground (ground_albedo) the ground is the vertex instead with
+//   probability 1 − T̃ (clamped to [0.1, 0.9]); from the camera both the air and the
+//   ground (by its exact transmittance) are taken. Paths end by Russian roulette from
+//   order 3 on. Checked against delta tracking (Woodcock 1965) on one ray (earth, sun and
+//   view 60° up, 131072 paths): order 2 agrees within 0.8 standard errors (0.3 %).
 // Why Monte Carlo for the higher orders: it shares no discretisation with the LUT
 // techniques it measures (Hillaire 2020's isotropic multiple-scattering approximation,
 // Bruneton 2017's 4D tables of iterated orders), its only approximation is the sample
@@ -59,12 +63,13 @@ struct AtmosphereReferenceSettings {
   double relative_tolerance = 1e-6;
   uint32_t initial_panels = 64;
   uint32_t max_depth = 30;
-  // Orders ≥ 2: paths per channel and ray (0: single scattering only, exact to the
-  // quadrature's tolerance), their length cap, the convergence threshold. Measured on a
-  // 32x18 sky of the earth preset from 2 m, 90° field of view, 64 paths (AMD EPYC, 2
-  // threads, loaded): 7-12 s; the Monte Carlo's standard error of a pixel's total is on
-  // average 3.4 % (at most 6.2 %) of it at noon (sun 60° up) and 10 % (at most 44 %) at
-  // sunset (sun 2° up); it falls as 1/√samples.
+  // Orders ≥ 2: paths per ray (0: single scattering only, exact to the quadrature's
+  // tolerance), their length cap, the convergence threshold. Measured on a 32x18 sky of
+  // the earth preset from 2 m, 90° field of view, CPU time on one thread of an AMD EPYC:
+  // single scattering alone 2.8 s; 64 paths a ray add 3.1 s (a walk per channel took
+  // 9.4 s for the same noise). The Monte Carlo's standard error of a pixel's total is
+  // on average 3.5 % (at most 6.6 %) of it at noon (sun 60° up) and 9.4 % (at most 30 %)
+  // at sunset (sun 2° up) with 64 paths, 1.8 % (3.1 %) and 4.8 % (12 %) with 256.
   uint32_t samples = 64;
   uint32_t max_orders = 64;
   double order_threshold = 1e-3;
