@@ -283,7 +283,8 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
 
   // Order 1: deterministic.
   out.radiance[0] = single_scattering_along(position, direction, length, sun_.direction);
-  if (ends_on_ground) out.radiance[0] = add(out.radiance[0], times(view_transmittance_to_end, ground_direct(ground_point)));
+  if (ends_on_ground)
+    out.radiance[0] = add(out.radiance[0], times(view_transmittance_to_end, ground_direct(ground_point)));
 
   // Orders ≥ 2: paths drawn by a hero channel chosen at random, each tallying every channel.
   const double g = a.mie_g;
@@ -401,7 +402,8 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
   for (uint32_t k = 1; k < max_orders && samples > 0; ++k) {
     for (int c = 0; c < 3; ++c) {
       const double mean = sum[k][c] / samples;
-      const double variance = samples > 1 ? std::max(0.0, (sum_sq[k][c] / samples - mean * mean)) * samples / (samples - 1) : 0.0;
+      const double spread = std::max(0.0, sum_sq[k][c] / samples - mean * mean);
+      const double variance = samples > 1 ? spread * samples / (samples - 1) : 0.0;
       out.radiance[k][c] = mean;
       out.standard_error[k][c] = std::sqrt(variance / samples);
     }

@@ -30,8 +30,8 @@ class Progress {
   int shown_ = -1;
 };
 
-void render_rows(const std::function<Vec3(uint32_t, uint32_t)>& pixel, const RenderSettings& s, std::atomic<uint32_t>& next_row, Progress& progress,
-                 ReferenceImage& image) {
+void render_rows(const std::function<Vec3(uint32_t, uint32_t)>& pixel, const RenderSettings& s,
+                 std::atomic<uint32_t>& next_row, Progress& progress, ReferenceImage& image) {
   for (uint32_t j = next_row++; j < s.height; j = next_row++) {
     for (uint32_t i = 0; i < s.width; ++i) {
       const Vec3 l = pixel(i, j);

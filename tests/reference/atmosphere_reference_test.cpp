@@ -135,7 +135,8 @@ Vec3 fixed_step_single_scattering(const Atmosphere& a, const AtmosphereSun& sun,
     const Vec3 t_sun = physics::sun_transmittance(a, std::max(rx, a.bottom_radius), dot(x, sun.direction) / rx);
     const Vec3 sr = physics::rayleigh_scattering_at(a, altitude(tm)), sm = physics::mie_scattering_at(a, altitude(tm));
     for (int c = 0; c < 3; ++c) {
-      const double j = (sr[c] * physics::phase_rayleigh(nu) + sm[c] * physics::mie_phase(a, nu)) * sun.irradiance[c] * t_sun[c];
+      const double sigma = sr[c] * physics::phase_rayleigh(nu) + sm[c] * physics::mie_phase(a, nu);
+      const double j = sigma * sun.irradiance[c] * t_sun[c];
       sum[c] += std::exp(-tau[c]) * j * h;
     }
     tau = add(tau, scaled(physics::extinction_at(a, altitude(t0 + 0.75 * h)), 0.5 * h));
@@ -212,7 +213,8 @@ void check_orders(double sun_elevation, const char* name) {
     if (!significant) break;
     std::printf("  order %zu: %.3e +- %.1e (green)\n", k + 1, energy[k][1], std::sqrt(variance[k][1]));
     ++checked;
-    for (int c = 0; c < 3; ++c) EXPECT_LT(energy[k][c], energy[k - 1][c]) << name << " order " << k + 1 << " channel " << c;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_LT(energy[k][c], energy[k - 1][c]) << name << " order " << k + 1 << " channel " << c;
   }
   std::printf("%s: orders 2-%zu checked\n", name, checked + 1);
   EXPECT_GE(checked, 3u);
