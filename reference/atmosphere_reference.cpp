@@ -152,7 +152,11 @@ struct Throughput {
 
 // No scattering (a ray that misses the atmosphere): order 1, zero.
 ScatteringOrders no_scattering() {
-  return {{{0, 0, 0}}, {{0, 0, 0}}, 1, {0, 0, 0}, {0, 0, 0}};
+  ScatteringOrders none;
+  none.radiance = {{0, 0, 0}};
+  none.standard_error = {{0, 0, 0}};
+  none.orders = 1;
+  return none;
 }
 
 }  // namespace
@@ -383,6 +387,7 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
       beta.step(exp_minus(physics::optical_depth(a, r0, mu0, t)),
                 {distance_density(table, 0, t), distance_density(table, 1, t), distance_density(table, 2, t)}, hero);
       const Vec3 y = add(position, scaled(direction, t));
+      tally[0] = add(tally[0], times(beta.estimate(), air_nee(y, direction)));  // the check of order 1
       if (const std::optional<Vec3> d = scatter_direction(y, direction, beta)) walk(y, *d, beta, 1);
     }
     // Vertex 1 on the ground, by its exact transmittance (every strategy alike).
@@ -390,22 +395,23 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
       Throughput beta;
       beta.f_over_hero = view_transmittance_to_end;
       const Vec3 y = scaled(normalize(ground_point), a.bottom_radius);
+      tally[0] = add(tally[0], times(beta.estimate(), ground_direct(y)));
       const Vec3 d = reflect(y, beta);
       walk(y, d, beta, 1);
     }
-    for (uint32_t k = 1; k < max_orders; ++k)
+    for (uint32_t k = 0; k < max_orders; ++k)
       for (int c = 0; c < 3; ++c) {
         sum[k][c] += tally[k][c];
         sum_sq[k][c] += tally[k][c] * tally[k][c];
       }
   }
-  for (uint32_t k = 1; k < max_orders && samples > 0; ++k) {
+  for (uint32_t k = 0; k < max_orders && samples > 0; ++k) {
     for (int c = 0; c < 3; ++c) {
       const double mean = sum[k][c] / samples;
       const double spread = std::max(0.0, sum_sq[k][c] / samples - mean * mean);
       const double variance = samples > 1 ? spread * samples / (samples - 1) : 0.0;
-      out.radiance[k][c] = mean;
-      out.standard_error[k][c] = std::sqrt(variance / samples);
+      (k == 0 ? out.order_one_estimate : out.radiance[k])[c] = mean;
+      (k == 0 ? out.order_one_error : out.standard_error[k])[c] = std::sqrt(variance / samples);
     }
   }
   // N: the first order ≥ 2 after which the orders traced add at most order_threshold of

@@ -83,6 +83,9 @@ struct ScatteringOrders {
   uint32_t orders = 0;               // N: orders 1…N make `total`
   Vec3 total{0, 0, 0};               // Σ orders 1…N
   Vec3 residual{0, 0, 0};            // Σ orders N+1…max_orders (as traced)
+  // The paths' own estimate of order 1 (next-event estimation at their first vertex) and
+  // its standard error: a check of the sampling against the quadrature, not used.
+  Vec3 order_one_estimate{0, 0, 0}, order_one_error{0, 0, 0};
 };
 
 struct SkySample {

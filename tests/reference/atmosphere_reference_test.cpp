@@ -243,6 +243,113 @@ TEST(AtmosphereReference, AerialPerspectiveToTheBoundaryIsTheSkyAndStartsAtNothi
   }
 }
 
+// The paths' first vertices estimate order 1 too (their next-event estimation, the
+// distance drawn from the tabulated optical depth, the channels' MIS weights): within 4
+// standard errors of the quadrature (plus 1e-6 of it), on the sky, the ground, at noon
+// and at sunset, from the ground and from space.
+TEST(AtmosphereReference, PathsEstimateOfOrderOneMatchesTheQuadrature) {
+  const Atmosphere a = earth();
+  int checked = 0;
+  for (double sun_elevation : {60.0, 2.0}) {
+    const AtmosphereReference reference(a, sun_at(sun_elevation), few_samples(512));
+    for (double altitude : {10.0, 300e3})
+      for (double elevation : {-30.0, 5.0, 45.0}) {
+        const Vec3 eye{0, a.bottom_radius + altitude, 0};
+        const Vec3 v = altitude > 100e3 ? direction_at(elevation - 40, 100) : direction_at(elevation, 100);
+        const ScatteringOrders s = reference.sky(eye, v, 11).scattering;
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(s.order_one_estimate[c], s.radiance[0][c], 4 * s.order_one_error[c] + 1e-6 * s.radiance[0][c])
+              << sun_elevation << " " << altitude << " " << elevation << " " << c;
+        ++checked;
+      }
+  }
+  EXPECT_EQ(checked, 12);
+}
+
+// Gauss–Legendre nodes and weights on [a, b] (n = 4, 6 or 8).
+std::vector<std::pair<double, double>> gauss_legendre(double a, double b, int n) {
+  static const std::vector<std::pair<double, double>> g4{{-0.8611363115940526, 0.3478548451374538},
+                                                         {-0.3399810435848563, 0.6521451548625461}};
+  static const std::vector<std::pair<double, double>> g6{{-0.9324695142031521, 0.1713244923791704},
+                                                         {-0.6612093864662645, 0.3607615730481386},
+                                                         {-0.2386191860831969, 0.4679139345726910}};
+  static const std::vector<std::pair<double, double>> g8{{-0.9602898564975363, 0.1012285362903763},
+                                                         {-0.7966664774136267, 0.2223810344533745},
+                                                         {-0.5255324099163290, 0.3137066458778873},
+                                                         {-0.1834346424956498, 0.3626837833783620}};
+  const auto& half = n == 4 ? g4 : n == 6 ? g6 : g8;
+  std::vector<std::pair<double, double>> out;
+  for (const auto& [x, w] : half)
+    for (double sign : {-1.0, 1.0}) out.push_back({0.5 * (a + b) + sign * x * 0.5 * (b - a), w * 0.5 * (b - a)});
+  return out;
+}
+
+// Order 2 without paths: ∫ T(0,t) Σ_lobe σ_lobe ∫_S² P_lobe(u·v) L₁(x_t, u) du dt, L₁ the
+// reference's single scattering; t by Gauss–Legendre on panels at 1, 3, 8 and 20 km, u by
+// Gauss–Legendre in the zenith cosine split at the horizon (14 nodes) × 8 azimuths. Ground
+// albedo 0 (the ground's part is not in L₁ here); Mie g = 0.3 so the quadrature resolves
+// the phase.
+Vec3 order_two_by_quadrature(const Atmosphere& a, const AtmosphereSun& sun, const Vec3& eye, const Vec3& v) {
+  AtmosphereReferenceSettings coarse;
+  coarse.relative_tolerance = 1e-4;
+  coarse.initial_panels = 8;
+  const AtmosphereReference first(a, sun, coarse);
+  const double r = std::sqrt(dot(eye, eye)), mu = dot(eye, v) / r;
+  const double length = physics::distance_to_boundary(a, r, mu);
+  std::vector<double> edges{0};
+  for (double e : {1e3, 3e3, 8e3, 20e3})
+    if (e < length) edges.push_back(e);
+  edges.push_back(length);
+  Vec3 sum{0, 0, 0};
+  for (size_t p = 0; p + 1 < edges.size(); ++p)
+    for (const auto& [t, wt] : gauss_legendre(edges[p], edges[p + 1], 4)) {
+      const Vec3 x = add(eye, scaled(v, t));
+      const double rx = std::sqrt(dot(x, x)), h = rx - a.bottom_radius;
+      const Vec3 up = scaled(x, 1 / rx), e1 = normalize(physics::cross(up, {0, 0, 1})), e2 = physics::cross(up, e1);
+      const Vec3 tau = physics::optical_depth(a, r, mu, t);
+      const Vec3 sr = physics::rayleigh_scattering_at(a, h), sm = physics::mie_scattering_at(a, h);
+      const double horizon = physics::mu_horizon(a, rx);
+      Vec3 j{0, 0, 0};
+      std::vector<std::pair<double, double>> cosines = gauss_legendre(-1, horizon, 6);
+      for (const auto& node : gauss_legendre(horizon, 1, 8)) cosines.push_back(node);
+      for (const auto& [c_theta, wc] : cosines)
+        for (int k = 0; k < 8; ++k) {
+          const double phi = 2 * kPi * (k + 0.5) / 8, s_theta = std::sqrt(1 - c_theta * c_theta);
+          const Vec3 u = add(scaled(up, c_theta), add(scaled(e1, s_theta * std::cos(phi)), scaled(e2, s_theta * std::sin(phi))));
+          const Vec3 l1 = first.single_scattering(x, u, physics::distance_to_boundary(a, rx, c_theta));
+          const double nu = dot(u, v), w = wc * 2 * kPi / 8;
+          for (int c = 0; c < 3; ++c)
+            j[c] += w * (sr[c] * physics::phase_rayleigh(nu) + sm[c] * physics::mie_phase(a, nu)) * l1[c];
+        }
+      for (int c = 0; c < 3; ++c) sum[c] += wt * std::exp(-tau[c]) * j[c];
+    }
+  return sum;
+}
+
+// The paths' order 2 (their phase sampling, Rayleigh's exact and Mie's by HG weighted to
+// Cornette–Shanks, the forced collisions, the channels' MIS) against order_two_by_quadrature:
+// within 4 standard errors (16384 paths: 1.8 % in red, 0.7 % in blue) + 2 % (the
+// quadrature's own error: at most 0.42 % against 8+8 zenith nodes, 16 azimuths and 8
+// nodes a panel). About 2.5 s. Measured once with 131072 paths: within 0.5 % of the
+// finer quadrature in every channel (0.4-0.9 standard errors).
+TEST(AtmosphereReference, PathsOrderTwoMatchesANestedQuadrature) {
+  Atmosphere a = earth();
+  a.ground_albedo = {0, 0, 0};
+  a.mie_g = 0.3;
+  const AtmosphereSun sun = sun_at(30);
+  const Vec3 eye{0, a.bottom_radius + 10, 0}, v = normalize(direction_at(30, 120));
+  const auto start = std::chrono::steady_clock::now();
+  const Vec3 quadrature = order_two_by_quadrature(a, sun, eye, v);
+  const double quadrature_seconds = seconds_since(start);
+  const ScatteringOrders paths = AtmosphereReference(a, sun, few_samples(16384)).sky(eye, v, 21).scattering;
+  std::printf("order 2: paths %.5e %.5e %.5e (+- %.1e %.1e %.1e), quadrature %.5e %.5e %.5e (%.2f s), paths %.2f s\n",
+              paths.radiance[1][0], paths.radiance[1][1], paths.radiance[1][2], paths.standard_error[1][0],
+              paths.standard_error[1][1], paths.standard_error[1][2], quadrature[0], quadrature[1], quadrature[2],
+              quadrature_seconds, seconds_since(start) - quadrature_seconds);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(paths.radiance[1][c], quadrature[c], 4 * paths.standard_error[1][c] + 0.02 * quadrature[c]) << c;
+}
+
 TEST(AtmosphereReference, WithoutPathsTheSkyIsSingleScattering) {
   const Atmosphere a = earth();
   const AtmosphereReference reference(a, sun_at(10), few_samples(0));
