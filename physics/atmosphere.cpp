@@ -237,7 +237,7 @@ Vec3 optical_depth(const Atmosphere& atmosphere, double r, double mu, double len
     const double d0 = breaks[i], d1 = breaks[i + 1];
     if (d1 <= d0) continue;
     const double altitude_span = std::abs(radius_at(r, mu, d1) - radius_at(r, mu, d0));
-    const int panels = int(std::clamp(std::ceil(altitude_span / scale_height), 1.0, 4096.0));
+    const int panels = int(std::clamp(std::ceil(altitude_span / (2 * scale_height)), 1.0, 4096.0));
     total = sum(total, gauss_legendre(atmosphere, r, mu, d0, d1, panels));
   }
   return total;

@@ -5,9 +5,9 @@
 //   for rays that do not hit the ground, through the non-linear x_mu (the distance to the
 //   top between its extremes) and x_r (ρ / H, the distance to the horizon over its
 //   largest).
-// - Multiple scattering (Hillaire 2020, §5.5, GetMultipleScattering): the sun's zenith
+// - Multiple scattering (Hillaire 2020, GetMultipleScattering): the sun's zenith
 //   cosine mu_s and the altitude, both linear.
-// - Sky view (Hillaire 2020, §5.3, SkyViewLutParamsToUv): latitude around the camera with a
+// - Sky view (Hillaire 2020, SkyViewLutParamsToUv): latitude around the camera with a
 //   quadratic mapping either side of the horizon (v = 1/2) that keeps the horizon sharp,
 //   and the cosine of the azimuth from the sun, through a square root (u = 0 toward the sun).
 // Every unit coordinate x ∈ [0, 1] is mapped to the texel centres' range by Bruneton 2017's
