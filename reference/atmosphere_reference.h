@@ -66,8 +66,8 @@ struct AtmosphereReferenceSettings {
   // Orders ≥ 2: paths per ray (0: single scattering only, exact to the quadrature's
   // tolerance), their length cap, the convergence threshold. Measured on a 32x18 sky of
   // the earth preset from 2 m, 90° field of view, CPU time on one thread of an AMD EPYC:
-  // single scattering alone 2.8 s; 64 paths a ray add 3.1 s (a walk per channel took
-  // 9.4 s for the same noise). The Monte Carlo's standard error of a pixel's total is
+  // single scattering alone 1.7 s; 64 paths a ray add 2.6-2.9 s (a walk per channel
+  // took 3× the paths' time for the same noise). The Monte Carlo's standard error of a pixel's total is
   // on average 3.5 % (at most 6.6 %) of it at noon (sun 60° up) and 9.4 % (at most 30 %)
   // at sunset (sun 2° up) with 64 paths, 1.8 % (3.1 %) and 4.8 % (12 %) with 256.
   uint32_t samples = 64;
