@@ -150,6 +150,14 @@ struct Throughput {
   void scale(double s) { f_over_hero = scaled(f_over_hero, s); }
 };
 
+// A camera below the ground is moved up onto it (the models' LUTs clamp r the same way).
+Vec3 on_or_above_ground(const Atmosphere& a, const Vec3& p) {
+  const double r = length_of(p);
+  if (r >= a.bottom_radius) return p;
+  if (r <= 0) return {0, a.bottom_radius, 0};
+  return scaled(p, a.bottom_radius / r);
+}
+
 // No scattering (a ray that misses the atmosphere): order 1, zero.
 ScatteringOrders no_scattering() {
   ScatteringOrders none;
@@ -240,7 +248,8 @@ Vec3 AtmosphereReference::single_scattering_along(const Vec3& position, const Ve
       error = std::max(error, std::abs(s2 - p.whole[c]) / 15);
       refined[c] = s2 + (s2 - p.whole[c]) / 15;  // Richardson
     }
-    if (error <= tolerance_per_metre * (p.b - p.a) || p.depth >= settings_.max_depth) {
+    // A non-finite estimate is not refined (it would bisect to max_depth everywhere).
+    if (!std::isfinite(error) || error <= tolerance_per_metre * (p.b - p.a) || p.depth >= settings_.max_depth) {
       sum = add(sum, refined);
       continue;
     }
@@ -438,7 +447,7 @@ SkySample AtmosphereReference::sky(const Vec3& position, const Vec3& direction_i
   const Atmosphere& a = atmosphere_;
   const Vec3 direction = normalize(direction_in);
   SkySample out;
-  Vec3 p = position;
+  Vec3 p = on_or_above_ground(a, position);
   double r = length_of(p);
   if (r > a.top_radius) {  // from space: enter at the top, or see the sun unattenuated
     const std::optional<double> entry = physics::enter_atmosphere(a, r, dot(p, direction) / r);
@@ -467,7 +476,7 @@ AerialPerspectiveSample AtmosphereReference::aerial_perspective(const Vec3& posi
   const Atmosphere& a = atmosphere_;
   const Vec3 direction = normalize(direction_in);
   AerialPerspectiveSample out;
-  Vec3 p = position;
+  Vec3 p = on_or_above_ground(a, position);
   double r = length_of(p), d = distance;
   if (r > a.top_radius) {
     const std::optional<double> entry = physics::enter_atmosphere(a, r, dot(p, direction) / r);

@@ -117,7 +117,8 @@ class AtmosphereReference {
   Vec3 single_scattering(const Vec3& position, const Vec3& direction, double length) const;
 
   // The radiance of a camera ray from `position` (anywhere: above the top it enters the
-  // atmosphere first) along unit `direction`: every order, the ground, the sun's disk.
+  // atmosphere first; below the ground it starts on the ground straight above) along unit
+  // `direction`: every order, the ground, the sun's disk.
   // `key` seeds the ray's paths (a pixel index).
   SkySample sky(const Vec3& position, const Vec3& direction, uint64_t key) const;
   // Aerial perspective of a segment from `position` to distance `distance` along unit

@@ -394,6 +394,14 @@ TEST(AtmosphereReference, HorizonRaysFromTheGroundToSpaceAreFiniteAndNonNegative
     }
   }
   std::printf("horizon stress: %d rays in %.2f s\n", rays, seconds_since(start));
+  // Below the ground (a scene origin_altitude too low): the ray starts on the ground.
+  const Atmosphere a = earth();
+  const AtmosphereReference reference(a, sun_at(20), few_samples(4));
+  const Vec3 v = direction_at(10, 30);
+  const SkySample below = reference.sky({0, a.bottom_radius - 5, 0}, v, 1);
+  const SkySample on = reference.sky({0, a.bottom_radius, 0}, v, 1);
+  EXPECT_EQ(below.radiance, on.radiance);
+  EXPECT_TRUE(finite_non_negative(reference.aerial_perspective({0, 0, 0}, v, 100, 1).in_scattered));
 }
 
 TEST(AtmosphereReference, SkyImageIsTheSameWithAnyNumberOfThreads) {
