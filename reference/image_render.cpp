@@ -30,11 +30,11 @@ class Progress {
   int shown_ = -1;
 };
 
-void render_rows(const Renderer& renderer, const RenderSettings& s, std::atomic<uint32_t>& next_row, Progress& progress,
-                 ReferenceImage& image) {
+void render_rows(const std::function<Vec3(uint32_t, uint32_t)>& pixel, const RenderSettings& s,
+                 std::atomic<uint32_t>& next_row, Progress& progress, ReferenceImage& image) {
   for (uint32_t j = next_row++; j < s.height; j = next_row++) {
     for (uint32_t i = 0; i < s.width; ++i) {
-      const Vec3 l = renderer.pixel_radiance(i, j, s.width, s.height, s.samples_per_axis);
+      const Vec3 l = pixel(i, j);
       std::copy(l.begin(), l.end(), image.rgb.begin() + ptrdiff_t((size_t(j) * s.width + i) * 3));
     }
     progress.row_done();
@@ -44,6 +44,14 @@ void render_rows(const Renderer& renderer, const RenderSettings& s, std::atomic<
 }  // namespace
 
 ReferenceImage render_image(const Renderer& renderer, const RenderSettings& settings) {
+  return render_pixels(
+      [&](uint32_t i, uint32_t j) {
+        return renderer.pixel_radiance(i, j, settings.width, settings.height, settings.samples_per_axis);
+      },
+      settings);
+}
+
+ReferenceImage render_pixels(const std::function<Vec3(uint32_t, uint32_t)>& pixel, const RenderSettings& settings) {
   ReferenceImage image{settings.width, settings.height, std::vector<double>(size_t(settings.width) * settings.height * 3)};
   const unsigned threads = std::max(1u, settings.threads ? settings.threads : std::thread::hardware_concurrency());
   std::atomic<uint32_t> next_row{0};
@@ -51,12 +59,12 @@ ReferenceImage render_image(const Renderer& renderer, const RenderSettings& sett
   std::vector<std::thread> workers;
   for (unsigned t = 1; t < threads; ++t) {
     try {
-      workers.emplace_back([&] { render_rows(renderer, settings, next_row, progress, image); });
+      workers.emplace_back([&] { render_rows(pixel, settings, next_row, progress, image); });
     } catch (const std::system_error&) {  // the system gives no more threads: render with those it gave
       break;
     }
   }
-  render_rows(renderer, settings, next_row, progress, image);
+  render_rows(pixel, settings, next_row, progress, image);
   for (std::thread& w : workers) w.join();
   return image;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <ostream>
 #include <vector>
 
@@ -28,5 +29,8 @@ struct ReferenceImage {
 };
 
 ReferenceImage render_image(const Renderer& renderer, const RenderSettings& settings);
+// The same threading for any per-pixel function (i, j) → radiance (samples_per_axis is
+// the function's business).
+ReferenceImage render_pixels(const std::function<Vec3(uint32_t, uint32_t)>& pixel, const RenderSettings& settings);
 
 }  // namespace volgraph::reference
