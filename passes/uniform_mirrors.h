@@ -70,7 +70,10 @@ struct GpuMultiscatteringLutParams {
 struct GpuSkyViewLutParams {
   float camera[4];    // x: the camera's radius (m, at most the top's), y: the sun's zenith cosine there
   float sampling[4];  // min and max samples a ray, the length (m) from which rays take the max, multiple scattering (1) or not (0)
-  static constexpr std::array<uint64_t, 2> offsets() { return {offsetof(GpuSkyViewLutParams, camera), offsetof(GpuSkyViewLutParams, sampling)}; }
+  float placement[4];  // x: where in its step each sample sits
+  static constexpr std::array<uint64_t, 3> offsets() {
+    return {offsetof(GpuSkyViewLutParams, camera), offsetof(GpuSkyViewLutParams, sampling), offsetof(GpuSkyViewLutParams, placement)};
+  }
 };
 
 // atmosphere_sky.comp's Frame.

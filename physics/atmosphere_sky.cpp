@@ -53,8 +53,13 @@ Vec3 sun_disk_radiance(const Atmosphere& atmosphere, const AtmosphereView& view,
   const double mu = direction[0] * view.up[0] + direction[1] * view.up[1] + direction[2] * view.up[2];
   if (ray_hits_ground(atmosphere, r, mu)) return {0, 0, 0};
   const Vec3 t = transmittance_to_top(atmosphere, r, mu);
-  const double disk = 1 / (3.14159265358979323846 * atmosphere.sun_angular_radius * atmosphere.sun_angular_radius);
+  const double disk = sun_disk_radiance_scale(atmosphere.sun_angular_radius);
   return {t[0] * disk, t[1] * disk, t[2] * disk};
+}
+
+double sun_disk_radiance_scale(double angular_radius) {
+  const double s = std::sin(angular_radius);
+  return 1 / (3.14159265358979323846 * s * s);
 }
 
 double view_sun_cosine(double mu, double cos_azimuth, double mu_s) {
@@ -80,7 +85,7 @@ Vec3 sky_scattering(const Atmosphere& a, double r, double mu, double mu_s, doubl
     double t1 = covered * ((s + 1) / whole) * ((s + 1) / whole);
     if (s + 1 == int(whole)) t1 = length;
     const double dt = t1 - t0;
-    t = t0 + 0.3 * dt;
+    t = t0 + sampling.sample_offset * dt;
     const double rd = radius_at(r, mu, t), altitude = altitude_at(a, r, mu, t);
     const double sun_mu = sun_mu_at(r, mu, mu_s, nu, t);
     const Vec3 rayleigh = rayleigh_scattering_at(a, altitude), mie_s = mie_scattering_at(a, altitude);

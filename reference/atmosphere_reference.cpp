@@ -5,6 +5,7 @@
 #include <random>
 
 #include "physics/atmosphere.h"
+#include "physics/atmosphere_sky.h"
 #include "physics/camera.h"
 #include "physics/phase.h"
 
@@ -23,12 +24,8 @@ Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2
 Vec3 exp_minus(const Vec3& tau) { return {std::exp(-tau[0]), std::exp(-tau[1]), std::exp(-tau[2])}; }
 double length_of(const Vec3& v) { return std::sqrt(dot(v, v)); }
 
-// The sun's disk of angular radius α as a uniform emitter: E = L·π·sin²α exactly (the
-// irradiance of a uniform disk on a surface facing it).
-Vec3 sun_radiance(const AtmosphereSun& sun) {
-  const double s = std::sin(sun.angular_radius);
-  return scaled(sun.irradiance, 1.0 / (kPi * s * s));
-}
+// The sun's disk as a uniform emitter (physics/atmosphere_sky.h).
+Vec3 sun_radiance(const AtmosphereSun& sun) { return scaled(sun.irradiance, physics::sun_disk_radiance_scale(sun.angular_radius)); }
 
 double altitude_of(const Atmosphere& a, const Vec3& p) { return std::max(0.0, length_of(p) - a.bottom_radius); }
 

@@ -11,6 +11,7 @@ layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmo
 layout(set = 0, binding = 1) uniform Params {
   vec4 camera;    // x: radius, y: the sun's zenith cosine, z: 1 when there is a sun
   vec4 sampling;  // min samples, max samples, the length taking the max (m), multiple scattering (1)
+  vec4 placement;  // x: where in its step each sample sits
 } params;
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
@@ -29,7 +30,7 @@ void main() {
   const float r = params.camera.x, mu_s = params.camera.y;
   const vec2 direction = sky_view_lut_direction(atmosphere.a, r, (vec2(texel) + 0.5) / vec2(size), size);
   const float nu = view_sun_cosine(direction.x, direction.y, mu_s);
-  const SkySampling sampling = SkySampling(params.sampling.x, params.sampling.y, params.sampling.z, params.sampling.w > 0.5);
+  const SkySampling sampling = SkySampling(params.sampling.x, params.sampling.y, params.sampling.z, params.placement.x, params.sampling.w > 0.5);
   const vec3 radiance = sky_scattering(atmosphere.a, transmittance, nearest, multiscattering, linear, r, direction.x, mu_s, nu, sampling);
   imageStore(sky_view, texel, vec4(radiance, 1.0));
 }

@@ -1,7 +1,7 @@
 // sky: the atmosphere seen where the scene's camera sees no surface (depth at the far
 // plane): the sky-view LUT's radiance in the pixel's direction (its latitude and azimuth
 // from the sun around the camera, Hillaire 2020 §5.3) times the sun's irradiance E, plus
-// the sun's disk — radiance E / (π α²) within its angular radius α, dimmed by the
+// the sun's disk — radiance E / (π sin²α) within its angular radius α, dimmed by the
 // atmosphere's transmittance toward it (the transmittance LUT). Surfaces keep the scene's
 // colour (aerial perspective comes with its own pass). Shader: shaders/atmosphere_sky.comp.
 #include "graph/execute/pass_execution.h"

@@ -8,6 +8,7 @@
 
 struct SkySampling {
   float min_samples, max_samples, full_samples_length;  // Hillaire 2020: 4, 14, 100 km
+  float sample_offset;                                  // within each step (Hillaire 2020: 0.3)
   bool multiscattering;                                 // false: single scattering alone
 };
 
@@ -36,7 +37,7 @@ vec3 sky_scattering(AtmosphereParameters a, texture2D transmittance_lut, sampler
     const float t0 = covered * (float(s) / whole) * (float(s) / whole);
     const float t1 = s + 1 == samples ? len : covered * (float(s + 1) / whole) * (float(s + 1) / whole);
     const float dt = t1 - t0;
-    const float t = t0 + 0.3 * dt;
+    const float t = t0 + sampling.sample_offset * dt;
     const float rd = radius_at(r, mu, t), altitude = altitude_at(a, r, mu, t);
     const float sun_mu = sky_sun_mu_at(r, mu, mu_s, nu, t);
     const vec3 rayleigh = rayleigh_scattering_at(a, altitude), mie_s = mie_scattering_at(a, altitude);

@@ -4,7 +4,7 @@
 // multiple-scattering term off): the LUT's interpolation, float and fp16 are what is left
 // — relative error over the pixels 1° and more above the horizon, mean below 1e-2 and
 // largest below 3e-2 (measured 8.6e-4 and 6.0e-3); the sun's disk at its centre is
-// E / (π α²) × the transmittance toward it (plus the sky); with scattering off the sky is
+// E / (π sin²α) × the transmittance toward it (plus the sky); with scattering off the sky is
 // black and the disk (0.05 rad, so that pixel centres fall in it) is the sun's radiance
 // times the transmittance, within fp16.
 #include <algorithm>
