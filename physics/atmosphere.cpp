@@ -202,6 +202,11 @@ double mu_at(double r, double mu, double d) {
   return std::clamp((r * mu + d) / r_d, -1.0, 1.0);
 }
 
+double mu_s_at(double r, double mu, double mu_s, double nu, double d) {
+  const double rd = radius_at(r, mu, d);
+  return rd > 0 ? std::clamp((r * mu_s + d * nu) / rd, -1.0, 1.0) : mu_s;
+}
+
 double altitude_at(const Atmosphere& atmosphere, double r, double mu, double d) {
   const double growth = d * (d + 2 * r * mu);
   const double r_d = std::sqrt(std::max(r * r + growth, 0.0));

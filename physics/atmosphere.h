@@ -94,6 +94,10 @@ std::optional<double> enter_atmosphere(const Atmosphere& atmosphere, double r, d
 // written r + d(d + 2r·mu) / (r + r_d) so the altitude r_d − bottom keeps its precision.
 double radius_at(double r, double mu, double d);
 double mu_at(double r, double mu, double d);
+// The sun's zenith cosine at distance d along the ray (r, mu) whose direction makes cosine
+// nu with the sun's, the sun at zenith cosine mu_s at its start (Bruneton 2017:
+// (r mu_s + d nu) / r_d).
+double mu_s_at(double r, double mu, double mu_s, double nu, double d);
 // The altitude there, r_d − bottom, as (r − bottom) + d(d + 2r·mu) / (r + r_d): in float
 // (the GLSL twin) it keeps its relative precision where r_d − bottom would round to 0.5 m.
 double altitude_at(const Atmosphere& atmosphere, double r, double mu, double d);

@@ -25,13 +25,6 @@ SphereDirection sphere_direction(int i, int j, int n, double mu_s) {
   return {cos_phi, std::cos(theta) * sin_phi * sun_x + cos_phi * mu_s};
 }
 
-// The sun's zenith cosine at distance d along the ray (r, mu) whose cosine with the sun is
-// nu (Bruneton 2017: (r mu_s + d nu) / r_d).
-double mu_s_at(double r, double mu, double mu_s, double nu, double d) {
-  const double rd = radius_at(r, mu, d);
-  return rd > 0 ? std::clamp((r * mu_s + d * nu) / rd, -1.0, 1.0) : mu_s;
-}
-
 Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 // One ray's L_f (unit sun) and its ∫σs T dt, marched from (r, mu) to its boundary.

@@ -9,12 +9,6 @@
 namespace volgraph::physics {
 namespace {
 
-// The sun's zenith cosine d along the ray (Bruneton 2017: (r mu_s + d nu) / r_d).
-double sun_mu_at(double r, double mu, double mu_s, double nu, double d) {
-  const double rd = radius_at(r, mu, d);
-  return rd > 0 ? std::clamp((r * mu_s + d * nu) / rd, -1.0, 1.0) : mu_s;
-}
-
 }  // namespace
 
 AtmosphereView atmosphere_view(const Scene& scene) {
@@ -87,7 +81,7 @@ Vec3 sky_scattering(const Atmosphere& a, double r, double mu, double mu_s, doubl
     const double dt = t1 - t0;
     t = t0 + sampling.sample_offset * dt;
     const double rd = radius_at(r, mu, t), altitude = altitude_at(a, r, mu, t);
-    const double sun_mu = sun_mu_at(r, mu, mu_s, nu, t);
+    const double sun_mu = mu_s_at(r, mu, mu_s, nu, t);
     const Vec3 rayleigh = rayleigh_scattering_at(a, altitude), mie_s = mie_scattering_at(a, altitude);
     const Vec3 extinction = extinction_at(a, altitude);
     const Vec3 sun = sun_transmittance(a, rd, sun_mu);

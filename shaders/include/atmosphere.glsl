@@ -130,6 +130,12 @@ float mu_at(float r, float mu, float d) {
 }
 
 // r_d − bottom as (r − bottom) + d(d + 2r·mu) / (r + r_d): keeps its relative precision.
+// The sun's zenith cosine d along the ray (Bruneton 2017: (r mu_s + d nu) / r_d).
+float mu_s_at(float r, float mu, float mu_s, float nu, float d) {
+  const float rd = radius_at(r, mu, d);
+  return rd > 0.0 ? clamp((r * mu_s + d * nu) / rd, -1.0, 1.0) : mu_s;
+}
+
 float altitude_at(AtmosphereParameters a, float r, float mu, float d) {
   const float growth = d * (d + 2.0 * r * mu);
   const float r_d = sqrt(max(r * r + growth, 0.0));

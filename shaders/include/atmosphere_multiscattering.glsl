@@ -14,12 +14,6 @@ struct MultiscatteringTerms {
   vec3 transfer;      // f_ms (eq. 7)
 };
 
-// (r mu_s + d nu) / r_d (Bruneton 2017): the sun's zenith cosine d along the ray.
-float multiscattering_mu_s_at(float r, float mu, float mu_s, float nu, float d) {
-  const float rd = radius_at(r, mu, d);
-  return rd > 0.0 ? clamp((r * mu_s + d * nu) / rd, -1.0, 1.0) : mu_s;
-}
-
 // One ray's L_f and ∫σs T dt, marched from (r, mu) to its boundary in `steps` midpoint steps.
 MultiscatteringTerms multiscattering_march(AtmosphereParameters a, texture2D lut, sampler nearest, float r, float mu, float mu_s,
                                            float nu, int steps) {
@@ -33,7 +27,7 @@ MultiscatteringTerms multiscattering_march(AtmosphereParameters a, texture2D lut
     const float altitude = altitude_at(a, r, mu, d);
     const vec3 scattering = rayleigh_scattering_at(a, altitude) + mie_scattering_at(a, altitude);
     const vec3 extinction = extinction_at(a, altitude);
-    const vec3 sun = sun_transmittance_lookup(a, lut, nearest, rd, multiscattering_mu_s_at(r, mu, mu_s, nu, d));
+    const vec3 sun = sun_transmittance_lookup(a, lut, nearest, rd, mu_s_at(r, mu, mu_s, nu, d));
     const vec3 step_transmittance = exp(-extinction * dt);
     // Hillaire 2020 eq. 6, energy-conserving: ∫ over the step of σs e^(−σt t).
     const vec3 scattered = mix(scattering * dt, scattering * (1.0 - step_transmittance) / max(extinction, vec3(1e-30)),
@@ -43,7 +37,7 @@ MultiscatteringTerms multiscattering_march(AtmosphereParameters a, texture2D lut
     throughput *= step_transmittance;
   }
   if (!ray_hits_ground(a, r, mu)) return terms;
-  const float ground_mu_s = multiscattering_mu_s_at(r, mu, mu_s, nu, len);
+  const float ground_mu_s = mu_s_at(r, mu, mu_s, nu, len);
   const vec3 sun = sun_transmittance_lookup(a, lut, nearest, atmosphere_bottom(a), ground_mu_s);
   terms.second_order += throughput * sun * max(ground_mu_s, 0.0) * a.ground_albedo.rgb / ATMOSPHERE_PI;
   return terms;

@@ -12,11 +12,6 @@ struct SkySampling {
   bool multiscattering;                                 // false: single scattering alone
 };
 
-float sky_sun_mu_at(float r, float mu, float mu_s, float nu, float d) {
-  const float rd = radius_at(r, mu, d);
-  return rd > 0.0 ? clamp((r * mu_s + d * nu) / rd, -1.0, 1.0) : mu_s;
-}
-
 float view_sun_cosine(float mu, float cos_azimuth, float mu_s) {
   return clamp(sqrt(max(0.0, 1.0 - mu * mu)) * sqrt(max(0.0, 1.0 - mu_s * mu_s)) * cos_azimuth + mu * mu_s, -1.0, 1.0);
 }
@@ -39,7 +34,7 @@ vec3 sky_scattering(AtmosphereParameters a, texture2D transmittance_lut, sampler
     const float dt = t1 - t0;
     const float t = t0 + sampling.sample_offset * dt;
     const float rd = radius_at(r, mu, t), altitude = altitude_at(a, r, mu, t);
-    const float sun_mu = sky_sun_mu_at(r, mu, mu_s, nu, t);
+    const float sun_mu = mu_s_at(r, mu, mu_s, nu, t);
     const vec3 rayleigh = rayleigh_scattering_at(a, altitude), mie_s = mie_scattering_at(a, altitude);
     const vec3 extinction = extinction_at(a, altitude);
     const vec3 sun = sun_transmittance_lookup(a, transmittance_lut, nearest, rd, sun_mu);
