@@ -7,9 +7,6 @@
 #include "physics/phase.h"
 
 namespace volgraph::physics {
-namespace {
-
-}  // namespace
 
 AtmosphereView atmosphere_view(const Scene& scene) {
   AtmosphereView view;
