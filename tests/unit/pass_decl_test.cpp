@@ -13,6 +13,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
+TEST(PassDecl, TwoSlotsOfOneNameAreRefusedAtRegistration) {
+  PassDecl decl;
+  decl.name = "twice";
+  decl.variants.push_back({});
+  decl.slots.push_back({});
+  decl.slots.back().name = "color";
+  decl.slots.push_back({});
+  decl.slots.back().name = "color";
+  decl.slots.back().direction = SlotDirection::output;
+  PassRegistry registry;
+  EXPECT_THROW(registry.add(decl), std::logic_error);
+  decl.slots.back().name = "sky_color";
+  EXPECT_NO_THROW(registry.add(decl));
+}
+
 TEST(PassDecl, OutputLikeSlotsHaveTheirSourcesKind) {
   PassRegistry registry;
   register_builtin_passes(registry);
