@@ -177,7 +177,7 @@ TEST_P(AtmosphereTwins, ZenithTransmittanceMatchesTheClosedForm) {
   }
 }
 
-// The issue of planet-scale ray–sphere intersections: from 1 m above the earth's ground at
+// The precision of planet-scale ray–sphere intersections: from 1 m above the earth's ground at
 // mu = −0.1 the ground is 10.00 m away (10.00008 m in double); the GLSL twin in float
 // gets it within 1e-3 relative, where the textbook quadratic in float gives 11.19 m
 // (tests/unit/atmosphere_test.cpp computes that one).
