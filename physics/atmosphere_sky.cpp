@@ -60,16 +60,21 @@ double view_sun_cosine(double mu, double cos_azimuth, double mu_s) {
 
 Vec3 sky_scattering(const Atmosphere& a, double r, double mu, double mu_s, double nu, const MultiscatteringTerm& multiscattering,
                     SkySampling sampling) {
-  Vec3 radiance{0, 0, 0};
-  const double length = distance_to_boundary(a, r, mu);
-  if (!(length > 0)) return radiance;
+  return scattering_along(a, r, mu, mu_s, nu, distance_to_boundary(a, r, mu), multiscattering, sampling).radiance;
+}
+
+ScatteringAlong scattering_along(const Atmosphere& a, double r, double mu, double mu_s, double nu, double length,
+                                 const MultiscatteringTerm& multiscattering, SkySampling sampling) {
+  ScatteringAlong out;
+  Vec3& radiance = out.radiance;
+  Vec3& throughput = out.transmittance;
+  if (!(length > 0)) return out;
   // Hillaire 2020, IntegrateScatteredLuminance: a fractional sample count, the whole
   // samples over the part of the ray they cover, the last step stretched to its end.
   const double count = sampling.min_samples + (sampling.max_samples - sampling.min_samples) * std::clamp(length / sampling.full_samples_length, 0.0, 1.0);
   const double whole = std::max(1.0, std::floor(count));
   const double covered = length * whole / count;
   const double rayleigh_phase = phase_rayleigh(nu), mie = mie_phase(a, nu);
-  Vec3 throughput{1, 1, 1};
   double t = 0;
   for (int s = 0; s < int(whole); ++s) {
     const double t0 = covered * (s / whole) * (s / whole);
@@ -91,7 +96,7 @@ Vec3 sky_scattering(const Atmosphere& a, double r, double mu, double mu_s, doubl
       throughput[c] *= step_transmittance;
     }
   }
-  return radiance;
+  return out;
 }
 
 }  // namespace volgraph::physics

@@ -33,6 +33,15 @@ using MultiscatteringTerm = std::function<Vec3(double r, double mu_s)>;
 Vec3 sky_scattering(const Atmosphere& atmosphere, double r, double mu, double mu_s, double nu,
                     const MultiscatteringTerm& multiscattering = {}, SkySampling sampling = {});
 
+// The same over the first `length` m of the ray (aerial perspective: the air between the
+// camera and a point), with the ray's transmittance over them.
+struct ScatteringAlong {
+  Vec3 radiance{0, 0, 0};
+  Vec3 transmittance{1, 1, 1};
+};
+ScatteringAlong scattering_along(const Atmosphere& atmosphere, double r, double mu, double mu_s, double nu, double length,
+                                 const MultiscatteringTerm& multiscattering = {}, SkySampling sampling = {});
+
 // nu from a sky-view texel's direction: the view's zenith cosine mu and the cosine of its
 // azimuth from the sun's, for a sun at zenith cosine mu_s (Hillaire 2020, SkyViewLut's frame).
 double view_sun_cosine(double mu, double cos_azimuth, double mu_s);

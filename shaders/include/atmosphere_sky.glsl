@@ -16,17 +16,22 @@ float view_sun_cosine(float mu, float cos_azimuth, float mu_s) {
   return clamp(sqrt(max(0.0, 1.0 - mu * mu)) * sqrt(max(0.0, 1.0 - mu_s * mu_s)) * cos_azimuth + mu * mu_s, -1.0, 1.0);
 }
 
-vec3 sky_scattering(AtmosphereParameters a, texture2D transmittance_lut, sampler nearest, texture2D multiscattering_lut,
-                    sampler linear, float r, float mu, float mu_s, float nu, SkySampling sampling) {
-  vec3 radiance = vec3(0.0);
-  const float len = distance_to_boundary(a, r, mu);
-  if (!(len > 0.0)) return radiance;
+struct ScatteringAlong {
+  vec3 radiance;
+  vec3 transmittance;
+};
+
+// The light scattered toward the viewer over the first `len` m of the ray (r, mu), and the
+// ray's transmittance over them (aerial perspective; the whole ray: the sky).
+ScatteringAlong scattering_along(AtmosphereParameters a, texture2D transmittance_lut, sampler nearest, texture2D multiscattering_lut,
+                                 sampler linear, float r, float mu, float mu_s, float nu, float len, SkySampling sampling) {
+  ScatteringAlong along = ScatteringAlong(vec3(0.0), vec3(1.0));
+  if (!(len > 0.0)) return along;
   const float count = mix(sampling.min_samples, sampling.max_samples, clamp(len / sampling.full_samples_length, 0.0, 1.0));
   const float whole = max(1.0, floor(count));
   const float covered = len * whole / count;
   const float rayleigh_phase = phase_rayleigh(nu), mie = mie_phase(a, nu);
   const ivec2 ms_size = textureSize(sampler2D(multiscattering_lut, linear), 0);
-  vec3 throughput = vec3(1.0);
   const int samples = int(whole);
   for (int s = 0; s < samples; ++s) {
     const float t0 = covered * (float(s) / whole) * (float(s) / whole);
@@ -44,11 +49,17 @@ vec3 sky_scattering(AtmosphereParameters a, texture2D transmittance_lut, sampler
     }
     const vec3 source = (rayleigh * rayleigh_phase + mie_s * mie) * sun + (rayleigh + mie_s) * psi;
     const vec3 step_transmittance = exp(-extinction * dt);
-    radiance += throughput * mix(source * dt, source * (1.0 - step_transmittance) / max(extinction, vec3(1e-30)),
-                                 greaterThan(extinction, vec3(0.0)));
-    throughput *= step_transmittance;
+    along.radiance += along.transmittance * mix(source * dt, source * (1.0 - step_transmittance) / max(extinction, vec3(1e-30)),
+                                                greaterThan(extinction, vec3(0.0)));
+    along.transmittance *= step_transmittance;
   }
-  return radiance;
+  return along;
+}
+
+vec3 sky_scattering(AtmosphereParameters a, texture2D transmittance_lut, sampler nearest, texture2D multiscattering_lut,
+                    sampler linear, float r, float mu, float mu_s, float nu, SkySampling sampling) {
+  return scattering_along(a, transmittance_lut, nearest, multiscattering_lut, linear, r, mu, mu_s, nu, distance_to_boundary(a, r, mu),
+                          sampling).radiance;
 }
 
 #endif
