@@ -89,6 +89,20 @@ struct GpuSkyFrame {
   }
 };
 
+// atmosphere_aerial_perspective.comp's Frame.
+struct GpuAerialPerspectiveFrame {
+  fog::GpuViewRays view;
+  float planet_up[4];   // xyz: the camera's local zenith; w: its radius (m, at most the top's)
+  float toward_sun[4];  // xyz: unit, toward the sun; w: the sun's zenith cosine at the camera
+  float volume[4];      // x: metres a slice (along each ray), y: 1 when there is a sun
+  float sampling[4];    // min and max samples, the length (m) from which rays take the max, where in its step each sample sits
+  static constexpr std::array<uint64_t, 5> offsets() {
+    return {offsetof(GpuAerialPerspectiveFrame, view), offsetof(GpuAerialPerspectiveFrame, planet_up),
+            offsetof(GpuAerialPerspectiveFrame, toward_sun), offsetof(GpuAerialPerspectiveFrame, volume),
+            offsetof(GpuAerialPerspectiveFrame, sampling)};
+  }
+};
+
 // opacity_shadow_map.comp's Params.
 struct GpuOpacityParams {
   int32_t steps[4];    // x per layer, y toward the light from the column's start

@@ -9,6 +9,7 @@ namespace volgraph {
 PassDecl atmosphere_transmittance_lut_pass();
 PassDecl atmosphere_multiscattering_lut_pass();
 PassDecl atmosphere_skyview_lut_pass();
+PassDecl atmosphere_aerial_perspective_pass();
 PassDecl sky_pass();
 
 }  // namespace volgraph

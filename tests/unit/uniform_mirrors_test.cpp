@@ -229,6 +229,7 @@ TEST(UniformMirrors, PassBlocksMatchTheirShaders) {
   EXPECT_EQ(mirror_error<GpuMultiscatteringLutParams>("atmosphere_multiscattering_lut.comp", 0, 1, "GpuMultiscatteringLutParams"), "");
   EXPECT_EQ(mirror_error<GpuSkyViewLutParams>("atmosphere_skyview_lut.comp", 0, 1, "GpuSkyViewLutParams"), "");
   EXPECT_EQ(mirror_error<GpuSkyFrame>("atmosphere_sky.comp", 0, 1, "GpuSkyFrame"), "");
+  EXPECT_EQ(mirror_error<GpuAerialPerspectiveFrame>("atmosphere_aerial_perspective.comp", 0, 1, "GpuAerialPerspectiveFrame"), "");
   for (const char* shader : {"fog_apply_transmittance.frag", "fog_apply_scattering.frag", "fog_apply_transmittance_depth_aware.frag",
                              "fog_apply_scattering_depth_aware.frag"}) {
     EXPECT_EQ(mirror_error<GpuFogApplyFrame>(shader, 0, 3, "GpuFogApplyFrame"), "") << shader;
@@ -263,7 +264,7 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
 
 TEST(UniformMirrors, AtmosphereBlocksMatch) {
   for (const char* shader : {"atmosphere_transmittance_lut.comp", "atmosphere_multiscattering_lut.comp", "atmosphere_skyview_lut.comp",
-                             "atmosphere_sky.comp"}) {
+                             "atmosphere_sky.comp", "atmosphere_aerial_perspective.comp"}) {
     EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>(shader, 0, 0, "GpuAtmosphere"), "") << shader;
   }
 }

@@ -1,0 +1,113 @@
+// atmosphere_aerial_perspective (Hillaire 2020 §5.4): the air between the camera and every
+// point it sees, in a camera-frustum volume (`resolution`² columns through the frame,
+// `slices` deep, slice k holding the ray's first (k + ½) · distance / slices m): the light
+// the atmosphere scatters toward the camera over that stretch for a sun of unit
+// illuminance, and the stretch's transmittance (physics::scattering_along: Rayleigh and Mie
+// single scattering plus σs · Ψ_ms, the sun's transmittance and Ψ_ms from their LUTs).
+// Surfaces, fog and clouds then take L·T + S·E from one lookup. 32 × 32 × 32 over 32 km as
+// Hillaire 2020. Cached on the atmosphere and the camera. Shader:
+// shaders/atmosphere_aerial_perspective.comp.
+#include <algorithm>
+
+#include "graph/execute/pass_execution.h"
+#include "graph/scene/scene.h"
+#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/fog/fog_frame.h"
+#include "passes/plumbing/programs.h"
+#include "passes/uniform_mirrors.h"
+#include "physics/atmosphere.h"
+#include "physics/atmosphere_sky.h"
+
+namespace volgraph {
+namespace {
+
+struct AerialPerspectiveTable : PassTable {
+  AerialPerspectiveTable()
+      : PassTable("atmosphere_aerial_perspective", PassKind::compute,
+                  "Hillaire 2020's aerial perspective: the air's in-scattering and transmittance in a camera-frustum volume.") {
+    decl.needs = feature_bit(SceneFeature::atmosphere);
+    decl.cached = true;
+    decl.frame_invariant = true;
+    decl.reads_scene = part_bit(ScenePart::atmosphere) | part_bit(ScenePart::camera);
+  }
+  // Variants.
+  VariantHandle hillaire = variant("hillaire", "each texel integrates its ray from the camera to its slice (Hillaire 2020 §5.4)");
+  // Parameters.
+  ParamHandle<int64_t> resolution = integer("resolution", 32, 2, 512, "texels", "columns per side through the frame");
+  ParamHandle<int64_t> slices = integer("slices", 32, 1, 512, "", "slices along each ray");
+  ParamHandle<double> distance = number("distance", 32e3, 1, 1e7, "m", "how far along each ray the volume reaches");
+  ParamHandle<double> samples = number("samples", 40, 1, 512, "", "midpoint samples from the camera to each slice");
+  // Slots.
+  SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
+                                   "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
+  SlotHandle multiscattering = input("multiscattering", ResourceKind::texture2d, Usage::sampled,
+                                     "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering)");
+  SlotHandle aerial_scattering = output("aerial_scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
+                                        SizeSpec::square_layers_of("resolution", "slices"),
+                                        "rgb scattered toward the camera from it to each texel, for a sun of unit illuminance");
+  SlotHandle aerial_transmittance = output("aerial_transmittance", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
+                                           SizeSpec::square_layers_of("resolution", "slices"), "rgb transmittance from the camera to each texel");
+};
+
+class AerialPerspectiveExecution final : public PassExecution {
+ public:
+  explicit AerialPerspectiveExecution(const AerialPerspectiveTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    program_ = plumbing::create_compute_program(s.device, "atmosphere_aerial_perspective.comp");
+    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(program_, 0, 0, s.name() + " atmosphere");
+    plumbing::check_uniform_mirror<GpuAerialPerspectiveFrame>(program_, 0, 1, s.name() + " frame");
+    atmosphere_ = s.device.create_buffer(
+        {s.name() + " atmosphere", sizeof(physics::GpuAtmosphere), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuAerialPerspectiveFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+  }
+
+  void record(PassContext& c) override {
+    using rhi::BindGroupEntry;
+    const Atmosphere& a = *c.scene->atmosphere;
+    const physics::GpuAtmosphere atmosphere = physics::pack_atmosphere(a);
+    c.device.write_buffer(atmosphere_, 0, std::as_bytes(std::span(&atmosphere, 1)));
+    const GpuAerialPerspectiveFrame frame = aerial_frame(c);
+    c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
+    const rhi::BindGroupId group = c.bind_group(
+        program_.layouts[0],
+        {BindGroupEntry::of(0, atmosphere_), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.transmittance)),
+         BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(4, c.view(t_.multiscattering)),
+         BindGroupEntry::of(5, c.sampler(rhi::StockSampler::linear_clamp)), BindGroupEntry::of(6, c.view(t_.aerial_scattering)),
+         BindGroupEntry::of(7, c.view(t_.aerial_transmittance))});
+    const Extent size = c.extent(t_.aerial_scattering);
+    plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, size.depth});
+  }
+
+ private:
+  GpuAerialPerspectiveFrame aerial_frame(const PassContext& c) const {
+    const Atmosphere& a = *c.scene->atmosphere;
+    const physics::AtmosphereView view = physics::atmosphere_view(*c.scene);
+    GpuAerialPerspectiveFrame f{};
+    f.view = fog::pack_view_rays(c.scene->camera, c.frame_size());
+    for (size_t i = 0; i < 3; ++i) {
+      f.planet_up[i] = float(view.up[i]);
+      f.toward_sun[i] = float(view.toward_sun[i]);
+    }
+    f.planet_up[3] = float(std::min(view.r, a.top_radius));
+    f.toward_sun[3] = float(view.mu_s);
+    f.volume[0] = float(c.param(t_.distance) / double(c.param(t_.slices)));
+    f.volume[1] = view.has_sun ? 1.0f : 0.0f;
+    const float samples = float(c.param(t_.samples));
+    f.sampling[0] = samples;
+    f.sampling[1] = samples;
+    f.sampling[2] = 100e3f;
+    f.sampling[3] = 0.5f;
+    return f;
+  }
+
+  const AerialPerspectiveTable& t_;
+  plumbing::ComputeProgram program_;
+  rhi::BufferId atmosphere_, frame_;
+};
+
+}  // namespace
+
+PassDecl atmosphere_aerial_perspective_pass() { return pass_type<AerialPerspectiveTable, AerialPerspectiveExecution>(); }
+
+}  // namespace volgraph
