@@ -11,6 +11,7 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
+#include "passes/atmosphere/atmosphere_block.h"
 #include "passes/atmosphere/atmosphere_passes.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
@@ -55,23 +56,18 @@ class AerialPerspectiveExecution final : public PassExecution {
 
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "atmosphere_aerial_perspective.comp");
-    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(program_, 0, 0, s.name() + " atmosphere");
+    atmosphere_.setup(s, program_);
     plumbing::check_uniform_mirror<GpuAerialPerspectiveFrame>(program_, 0, 1, s.name() + " frame");
-    atmosphere_ = s.device.create_buffer(
-        {s.name() + " atmosphere", sizeof(physics::GpuAtmosphere), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuAerialPerspectiveFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
 
   void record(PassContext& c) override {
     using rhi::BindGroupEntry;
-    const Atmosphere& a = *c.scene->atmosphere;
-    const physics::GpuAtmosphere atmosphere = physics::pack_atmosphere(a);
-    c.device.write_buffer(atmosphere_, 0, std::as_bytes(std::span(&atmosphere, 1)));
     const GpuAerialPerspectiveFrame frame = aerial_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     const rhi::BindGroupId group = c.bind_group(
         program_.layouts[0],
-        {BindGroupEntry::of(0, atmosphere_), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.transmittance)),
+        {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.transmittance)),
          BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(4, c.view(t_.multiscattering)),
          BindGroupEntry::of(5, c.sampler(rhi::StockSampler::linear_clamp)), BindGroupEntry::of(6, c.view(t_.aerial_scattering)),
          BindGroupEntry::of(7, c.view(t_.aerial_transmittance))});
@@ -81,18 +77,13 @@ class AerialPerspectiveExecution final : public PassExecution {
 
  private:
   GpuAerialPerspectiveFrame aerial_frame(const PassContext& c) const {
-    const Atmosphere& a = *c.scene->atmosphere;
-    const physics::AtmosphereView view = physics::atmosphere_view(*c.scene);
+    const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
     GpuAerialPerspectiveFrame f{};
     f.view = fog::pack_view_rays(c.scene->camera, c.frame_size());
-    for (size_t i = 0; i < 3; ++i) {
-      f.planet_up[i] = float(view.up[i]);
-      f.toward_sun[i] = float(view.toward_sun[i]);
-    }
-    f.planet_up[3] = float(std::min(view.r, a.top_radius));
-    f.toward_sun[3] = float(view.mu_s);
+    std::copy(std::begin(planet.planet_up), std::end(planet.planet_up), f.planet_up);
+    std::copy(std::begin(planet.toward_sun), std::end(planet.toward_sun), f.toward_sun);
     f.volume[0] = float(c.param(t_.distance) / double(c.param(t_.slices)));
-    f.volume[1] = view.has_sun ? 1.0f : 0.0f;
+    f.volume[1] = planet.has_sun ? 1.0f : 0.0f;
     const float samples = float(c.param(t_.samples));
     f.sampling[0] = samples;
     f.sampling[1] = samples;
@@ -103,7 +94,8 @@ class AerialPerspectiveExecution final : public PassExecution {
 
   const AerialPerspectiveTable& t_;
   plumbing::ComputeProgram program_;
-  rhi::BufferId atmosphere_, frame_;
+  atmosphere::AtmosphereBlock atmosphere_;
+  rhi::BufferId frame_;
 };
 
 }  // namespace

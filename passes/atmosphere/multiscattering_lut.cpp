@@ -9,6 +9,7 @@
 // Shader: shaders/atmosphere_multiscattering_lut.comp.
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
+#include "passes/atmosphere/atmosphere_block.h"
 #include "passes/atmosphere/atmosphere_passes.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
@@ -47,20 +48,16 @@ class MultiscatteringLutExecution final : public PassExecution {
 
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "atmosphere_multiscattering_lut.comp");
-    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(program_, 0, 0, s.name() + " atmosphere");
-    atmosphere_ = s.device.create_buffer(
-        {s.name() + " atmosphere", sizeof(physics::GpuAtmosphere), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    atmosphere_.setup(s, program_);
     const GpuMultiscatteringLutParams params{{int32_t(s.param(t_.directions)), int32_t(s.param(t_.steps)), 0, 0}};
     params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 1, s.name() + " params", params);
   }
 
   void record(PassContext& c) override {
     using rhi::BindGroupEntry;
-    const physics::GpuAtmosphere atmosphere = physics::pack_atmosphere(*c.scene->atmosphere);
-    c.device.write_buffer(atmosphere_, 0, std::as_bytes(std::span(&atmosphere, 1)));
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
     const rhi::BindGroupId group =
-        c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, atmosphere_), BindGroupEntry::of(1, params_),
+        c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, params_),
                                            BindGroupEntry::of(2, c.view(t_.transmittance)), BindGroupEntry::of(3, nearest),
                                            BindGroupEntry::of(4, c.view(t_.multiscattering))});
     const Extent size = c.extent(t_.multiscattering);
@@ -70,7 +67,8 @@ class MultiscatteringLutExecution final : public PassExecution {
  private:
   const MultiscatteringLutTable& t_;
   plumbing::ComputeProgram program_;
-  rhi::BufferId atmosphere_, params_;
+  atmosphere::AtmosphereBlock atmosphere_;
+  rhi::BufferId params_;
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 // colour (aerial perspective comes with its own pass). Shader: shaders/atmosphere_sky.comp.
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
+#include "passes/atmosphere/atmosphere_block.h"
 #include "passes/atmosphere/atmosphere_passes.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
@@ -40,24 +41,19 @@ class SkyExecution final : public PassExecution {
 
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "atmosphere_sky.comp");
-    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(program_, 0, 0, s.name() + " atmosphere");
+    atmosphere_.setup(s, program_);
     plumbing::check_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
-    atmosphere_ = s.device.create_buffer(
-        {s.name() + " atmosphere", sizeof(physics::GpuAtmosphere), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuSkyFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
 
   void record(PassContext& c) override {
     using rhi::BindGroupEntry;
-    const Atmosphere& a = *c.scene->atmosphere;
-    const physics::GpuAtmosphere atmosphere = physics::pack_atmosphere(a);
-    c.device.write_buffer(atmosphere_, 0, std::as_bytes(std::span(&atmosphere, 1)));
     const GpuSkyFrame frame = sky_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp), linear = c.sampler(rhi::StockSampler::linear_clamp);
     const rhi::BindGroupId group = c.bind_group(
         program_.layouts[0],
-        {BindGroupEntry::of(0, atmosphere_), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.surfaces)),
+        {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.surfaces)),
          BindGroupEntry::of(3, c.view(t_.depth)), BindGroupEntry::of(4, nearest), BindGroupEntry::of(5, c.view(t_.transmittance)),
          BindGroupEntry::of(6, c.view(t_.sky_view)), BindGroupEntry::of(7, linear), BindGroupEntry::of(8, c.view(t_.sky_color))});
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.sky_color));
@@ -66,17 +62,13 @@ class SkyExecution final : public PassExecution {
  private:
   GpuSkyFrame sky_frame(const PassContext& c) const {
     const Atmosphere& a = *c.scene->atmosphere;
-    const physics::AtmosphereView view = physics::atmosphere_view(*c.scene);
+    const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
     GpuSkyFrame f{};
     f.view = fog::pack_view_rays(c.scene->camera, c.extent(t_.sky_color));
-    for (size_t i = 0; i < 3; ++i) {
-      f.planet_up[i] = float(view.up[i]);
-      f.toward_sun[i] = float(view.toward_sun[i]);
-      if (view.has_sun) f.sun[i] = float(c.scene->lights[size_t(a.sun_light)].irradiance[i]);
-    }
-    f.planet_up[3] = float(std::min(view.r, a.top_radius));
-    f.toward_sun[3] = float(view.mu_s);
-    f.sun[3] = view.has_sun ? 1.0f : 0.0f;
+    std::copy(std::begin(planet.planet_up), std::end(planet.planet_up), f.planet_up);
+    std::copy(std::begin(planet.toward_sun), std::end(planet.toward_sun), f.toward_sun);
+    for (size_t i = 0; i < 3 && planet.has_sun; ++i) f.sun[i] = float(c.scene->lights[size_t(a.sun_light)].irradiance[i]);
+    f.sun[3] = planet.has_sun ? 1.0f : 0.0f;
     f.sun_disk[0] = float(a.sun_angular_radius);
     f.sun_disk[1] = c.param(t_.sun_disk) ? 1.0f : 0.0f;
     return f;
@@ -84,7 +76,8 @@ class SkyExecution final : public PassExecution {
 
   const SkyTable& t_;
   plumbing::ComputeProgram program_;
-  rhi::BufferId atmosphere_, frame_;
+  atmosphere::AtmosphereBlock atmosphere_;
+  rhi::BufferId frame_;
 };
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
+#include "passes/atmosphere/atmosphere_block.h"
 #include "passes/atmosphere/atmosphere_passes.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
@@ -58,27 +59,22 @@ class SkyViewLutExecution final : public PassExecution {
 
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "atmosphere_skyview_lut.comp");
-    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(program_, 0, 0, s.name() + " atmosphere");
+    atmosphere_.setup(s, program_);
     plumbing::check_uniform_mirror<GpuSkyViewLutParams>(program_, 0, 1, s.name() + " params");
-    atmosphere_ = s.device.create_buffer(
-        {s.name() + " atmosphere", sizeof(physics::GpuAtmosphere), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
     params_ = s.device.create_buffer({s.name() + " params", sizeof(GpuSkyViewLutParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
 
   void record(PassContext& c) override {
     using rhi::BindGroupEntry;
-    const Atmosphere& a = *c.scene->atmosphere;
-    const physics::GpuAtmosphere atmosphere = physics::pack_atmosphere(a);
-    c.device.write_buffer(atmosphere_, 0, std::as_bytes(std::span(&atmosphere, 1)));
-    const physics::AtmosphereView view = physics::atmosphere_view(*c.scene);
-    const GpuSkyViewLutParams params{{float(std::min(view.r, a.top_radius)), float(view.mu_s), view.has_sun ? 1.0f : 0.0f, 0},
+    const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
+    const GpuSkyViewLutParams params{{planet.planet_up[3], planet.toward_sun[3], planet.has_sun ? 1.0f : 0.0f, 0},
                                      {float(c.param(t_.min_samples)), float(c.param(t_.max_samples)), 100e3f,
                                       c.param(t_.multiscattering_term) ? 1.0f : 0.0f},
                                      {float(c.param(t_.sample_offset)), 0, 0, 0}};
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const rhi::BindGroupId group = c.bind_group(
         program_.layouts[0],
-        {BindGroupEntry::of(0, atmosphere_), BindGroupEntry::of(1, params_), BindGroupEntry::of(2, c.view(t_.transmittance)),
+        {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, params_), BindGroupEntry::of(2, c.view(t_.transmittance)),
          BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(4, c.view(t_.multiscattering)),
          BindGroupEntry::of(5, c.sampler(rhi::StockSampler::linear_clamp)), BindGroupEntry::of(6, c.view(t_.sky_view))});
     const Extent size = c.extent(t_.sky_view);
@@ -88,7 +84,8 @@ class SkyViewLutExecution final : public PassExecution {
  private:
   const SkyViewLutTable& t_;
   plumbing::ComputeProgram program_;
-  rhi::BufferId atmosphere_, params_;
+  atmosphere::AtmosphereBlock atmosphere_;
+  rhi::BufferId params_;
 };
 
 }  // namespace

@@ -1,0 +1,36 @@
+// What every atmosphere pass binds: the atmosphere's uniform block (physics::GpuAtmosphere,
+// packed from the scene each time the pass records) and the camera's place in the planet's
+// frame (its zenith and radius, the direction toward the sun and its zenith cosine).
+#pragma once
+
+#include <string>
+
+#include "graph/execute/pass_execution.h"
+#include "passes/plumbing/programs.h"
+#include "physics/atmosphere.h"
+#include "physics/atmosphere_sky.h"
+
+namespace volgraph::atmosphere {
+
+// The uniform buffer of binding (0, 0), checked against the program at setup.
+class AtmosphereBlock {
+ public:
+  void setup(PassSetup& s, const plumbing::ComputeProgram& program);
+  // Packs the scene's atmosphere into the buffer and returns it for the bind group.
+  rhi::BufferId write(PassContext& c) const;
+
+ private:
+  rhi::BufferId buffer_;
+};
+
+// planet_up = (the camera's zenith, its radius clamped to the top), toward_sun = (toward the
+// sun, its zenith cosine at the camera): the vec4 pair the sky, aerial-perspective and
+// sky-view shaders take (include/atmosphere_sky_lookup.glsl SkyFrame).
+struct PlanetFrame {
+  float planet_up[4];
+  float toward_sun[4];
+  bool has_sun;
+};
+PlanetFrame planet_frame(const Scene& scene);
+
+}  // namespace volgraph::atmosphere
