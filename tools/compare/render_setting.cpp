@@ -117,6 +117,11 @@ RgbImage read_reference_image(const std::string& path, uint32_t width, uint32_t 
   return rgb_from_rgba(image.width, image.height, image.rgba);
 }
 
+const std::vector<std::string>& mask_names() {
+  static const std::vector<std::string> names{"all", "fog_only", "surfaces"};
+  return names;
+}
+
 PixelMask mask_named(const std::string& name, const Scene& scene, uint32_t width, uint32_t height) {
   if (name == "fog_only") return reference::fog_only_pixels(scene, width, height);
   if (name == "surfaces") return reference::surface_only_pixels(scene, width, height);

@@ -55,6 +55,9 @@ RgbImage render_reference(const LoadedConfig& loaded, const ReferenceSettings& s
 // or its size is not `width`×`height`.
 RgbImage read_reference_image(const std::string& path, uint32_t width, uint32_t height, const std::string& flag);
 
+// The masks' names, as specs and reports use them: "all", "fog_only", "surfaces".
+const std::vector<std::string>& mask_names();
+
 // A pixel mask by name: "all" (every pixel: an empty mask), "fog_only", "surfaces"
 // (reference/pixel_masks.h), for the scene at width×height.
 PixelMask mask_named(const std::string& name, const Scene& scene, uint32_t width, uint32_t height);

@@ -19,6 +19,7 @@
 #include "graph/config/json_lines.h"
 #include "graph/config/json_reader.h"
 #include "tools/compare/metrics.h"
+#include "tools/compare/render_setting.h"
 
 namespace volgraph::compare {
 namespace {
@@ -36,7 +37,6 @@ constexpr double kLargestExactInteger = 9007199254740992.0;
 bool integral(const Json& j) { return j.is_number_integer() && std::abs(j.get<double>()) < kLargestExactInteger; }
 
 const std::vector<std::string> kBackends{"vulkan", "webgpu"};
-const std::vector<std::string> kMasks{"all", "fog_only", "surfaces"};
 
 // A value rounded to 12 significant digits, so that a range's 0.1 + 2 × 0.1 is 0.3.
 double round_12_digits(double v) {
@@ -142,7 +142,7 @@ class SpecReader {
     if (auto r = doc.member("reference")) read_reference(*r);
     if (auto m = doc.member("metric")) read_metric(*m);
     if (auto m = doc.member("mask")) {
-      if (auto name = choice(*m, kMasks, "mask")) spec_.mask = *name;
+      if (auto name = choice(*m, mask_names(), "mask")) spec_.mask = *name;
     }
     if (auto s = doc.member("series")) {
       read_series_list(*s);
