@@ -295,15 +295,33 @@ int run_ab(const Args& args, const PassRegistry& registry) {
 
 namespace {
 
+// The spec's reference image: its file, or the CPU reference of `base` rendered once and
+// kept as DIR/reference.pfm for the points that follow (and a resumed run, and jobs).
+RgbImage sweep_reference(const Args& args, const SweepSpec& spec, const LoadedConfig& base, const std::string& dir) {
+  if (spec.reference != "cpu") return read_reference_image(spec.reference, spec.size.width, spec.size.height, "the reference");
+  const std::string kept = (fs::path(dir) / "reference.pfm").string();
+  std::error_code ec;
+  if (fs::exists(kept, ec)) return read_reference_image(kept, spec.size.width, spec.size.height, "the kept reference");
+  std::cerr << "sweep: rendering the CPU reference at " << spec.size.width << "x" << spec.size.height << "\n";
+  const RgbImage ref = render_reference(base, {unsigned(args.threads), args.tolerance, uint32_t(args.samples_per_axis)});
+  write_image(kept, Image{ref.width, ref.height, rgba_from_rgb(ref)}, "-o");
+  return ref;
+}
+
+// The spec's config at the spec's size, linear: the scene the reference and masks are of.
+LoadedConfig sweep_base(const PassRegistry& registry, const SweepSpec& spec) {
+  Overrides sized;
+  sized.size = spec.size;
+  return load_linear(spec.config, registry, sized);
+}
+
 // A sweep's device, reference and mask, made once and shared by its points.
 class SweepRunner {
  public:
   SweepRunner(const Args& args, const PassRegistry& registry, const SweepSpec& spec, const std::string& dir)
       : args_(args), registry_(registry), spec_(spec), session_(spec.backend, args.device, args.validation) {
-    Overrides sized;
-    sized.size = spec.size;
-    const LoadedConfig base = load_linear(spec.config, registry, sized);
-    reference_ = sweep_reference(base, dir);
+    const LoadedConfig base = sweep_base(registry, spec);
+    reference_ = sweep_reference(args, spec, base, dir);
     mask_ = mask_named(spec.mask, base.config.scene, spec.size.width, spec.size.height);
   }
 
@@ -354,18 +372,6 @@ class SweepRunner {
     r.metrics = measure_error(run.image, reference_, mask_);
   }
 
-  // The spec's reference image: its file, or the CPU reference rendered once and kept
-  // as DIR/reference.pfm for the points that follow (and a resumed run, and jobs).
-  RgbImage sweep_reference(const LoadedConfig& base, const std::string& dir) const {
-    if (spec_.reference != "cpu") return read_reference_image(spec_.reference, spec_.size.width, spec_.size.height, "the reference");
-    const std::string kept = (fs::path(dir) / "reference.pfm").string();
-    std::error_code ec;
-    if (fs::exists(kept, ec)) return read_reference_image(kept, spec_.size.width, spec_.size.height, "the kept reference");
-    std::cerr << "sweep: rendering the CPU reference at " << spec_.size.width << "x" << spec_.size.height << "\n";
-    const RgbImage ref = render_reference(base, {unsigned(args_.threads), args_.tolerance, uint32_t(args_.samples_per_axis)});
-    write_image(kept, Image{ref.width, ref.height, rgba_from_rgb(ref)}, "-o");
-    return ref;
-  }
 
   const Args& args_;
   const PassRegistry& registry_;
@@ -457,7 +463,7 @@ int run_sweep_command(const Args& args, const PassRegistry& registry) {
   prepare_output_folder(args.output);
   check_sweep_folder(spec, args.output);
   if (c.emit_jobs) {
-    const SweepRunner keeps_reference(args, registry, spec, args.output);  // renders DIR/reference.pfm once, for every job
+    sweep_reference(args, spec, sweep_base(registry, spec), args.output);  // DIR/reference.pfm once, for every job; no device
     write_jobs(args.output, spec, [&](const SweepPoint& p) { return SweepRunner::job_command(args, spec, p.id, args.output); });
     std::cout << "sweep: " << spec.points.size() << " jobs in " << (fs::path(args.output) / "jobs.txt").string()
               << "; run them (e.g. parallel < jobs.txt), then volgraph sweep --merge " << args.output << " -o " << args.output << "\n";
