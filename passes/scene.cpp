@@ -12,6 +12,7 @@
 #include "physics/camera.h"
 #include "passes/plumbing/gltf.h"
 #include "passes/plumbing/light_list.h"
+#include "passes/plumbing/scene_lighting.h"
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/scene_geometry.h"
 #include "passes/plumbing/shadow_view.h"
@@ -79,7 +80,7 @@ struct SceneTable : PassTable {
       "lambert", "Lambertian reflection of every light, shadowed by the shadow map (and the media's opacity shadow map) when wired");
   // Parameters.
   ParamHandle<std::array<double, 3>> ambient =
-      vec3("ambient", {0, 0, 0}, 0, 1e6, "W/m²", "uniform irradiance added to every surface (unshadowed)");
+      vec3("ambient", {0, 0, 0}, 0, 1e6, "W/m²", "uniform irradiance added to every surface (unshadowed), beside the sky's π·L_sky under an atmosphere");
   ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
   // Slots.
   SlotHandle shadow_map = optional_input("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map",
@@ -152,9 +153,11 @@ class SceneExecution final : public PassExecution {
     const Extent size = c.extent(t_.color);
     GpuSceneFrame f{};
     physics::to_floats(physics::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
+    // A surface facing any way receives π times the sky's isotropic radiance.
     const std::array<double, 3>& ambient = c.param(t_.ambient);
-    for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i]);
-    f.light_list = plumbing::pack_lights(scene.lights);
+    const Vec3 sky = lighting_.sky_ambient_radiance(scene);
+    for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i] + M_PI * sky[i]);
+    f.light_list = plumbing::pack_lights(lighting_.lights(scene));
     f.media = physics::pack_media(fogs_of(scene.media));
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&f, 1)));
   }
@@ -164,6 +167,7 @@ class SceneExecution final : public PassExecution {
   plumbing::RenderProgram program_;
   rhi::BufferId frame_;
   std::unique_ptr<plumbing::SceneGeometry> geometry_;
+  plumbing::SceneLighting lighting_;
 };
 
 }  // namespace

@@ -103,6 +103,20 @@ struct GpuAerialPerspectiveFrame {
   }
 };
 
+// The aerial-perspective volumes' frame (shaders/include/atmosphere_aerial_lookup.glsl
+// AerialLookup): atmosphere_aerial_perspective writes it to its `lookup` output for the
+// passes that read the volumes.
+struct GpuAerialLookup {
+  fog::GpuViewRays view;
+  float volume[4];  // x: the distance the volume reaches (m), y: its slices
+  float sun[4];     // rgb: the sun's E at the top of the atmosphere (0 without a sun)
+  static constexpr std::array<uint64_t, 3> offsets() {
+    return {offsetof(GpuAerialLookup, view), offsetof(GpuAerialLookup, volume), offsetof(GpuAerialLookup, sun)};
+  }
+};
+// Bytes of atmosphere_aerial_perspective's `lookup` buffer (the block rounded up to 256).
+constexpr uint64_t kAerialLookupBytes = (sizeof(GpuAerialLookup) + 255) / 256 * 256;
+
 // opacity_shadow_map.comp's Params.
 struct GpuOpacityParams {
   int32_t steps[4];    // x per layer, y toward the light from the column's start

@@ -104,4 +104,10 @@ SkyViewDirection sky_view_lut_direction(const Atmosphere& a, double r, LutUv uv,
   return {std::cos(theta), 1 - 2 * x * x};
 }
 
+AerialSlice aerial_perspective_slice(double t, double distance, int slices) {
+  const double half_slice = 0.5 / double(slices);
+  const double w = std::max(t, 0.0) / distance;
+  return {std::clamp(w, half_slice, 1 - half_slice), std::clamp(w / half_slice, 0.0, 1.0)};
+}
+
 }  // namespace volgraph::physics

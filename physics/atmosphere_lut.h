@@ -62,4 +62,15 @@ struct SkyViewDirection {
 LutUv sky_view_lut_uv(const Atmosphere& atmosphere, double r, SkyViewDirection direction, SkyViewLutSize size = {});
 SkyViewDirection sky_view_lut_direction(const Atmosphere& atmosphere, double r, LutUv uv, SkyViewLutSize size = {});
 
+// Aerial perspective (Hillaire 2020 §5.4): a camera-frustum volume of `slices` slices over
+// `distance` m along each ray, slice k's texel holding the air from the camera to (k + ½)
+// of a slice. A point `t` m along its ray reads at w = t / distance (texture coordinate;
+// clamped to the texel centres), and in front of the first texel's centre the values
+// ramp linearly from the camera's (no scattering, full transmittance): ramp = t / (½ slice).
+struct AerialSlice {
+  double w = 0;     // the volume's third texture coordinate
+  double ramp = 1;  // how much of the first texel's value reaches it (1 past its centre)
+};
+AerialSlice aerial_perspective_slice(double t, double distance, int slices);
+
 }  // namespace volgraph::physics

@@ -276,10 +276,11 @@ std::vector<rhi::ResourceBarrier> Executor::copy_source_transitions(std::span<co
   for (size_t i = 0; i < resources.size(); ++i) {
     const uint32_t r = resources[i];
     if (std::find(resources.begin(), resources.begin() + i, r) != resources.begin() + i) continue;
-    if (!to_copy && !graph_.resources[r].desc.persistent) continue;
     const AccessState copy_source = access_state(Usage::copy_src, PassKind::transfer, graph_.resources[r].desc.kind);
+    // Back again: a persistent resource to where the next frame starts it, a transient one
+    // to its last state (where the next read-back of this frame's result expects it).
     if (to_copy) out.push_back(barrier_of(r, last_state(r), copy_source));
-    else out.push_back(barrier_of(r, copy_source, next_frame_start(r)));
+    else out.push_back(barrier_of(r, copy_source, graph_.resources[r].desc.persistent ? next_frame_start(r) : last_state(r)));
   }
   return out;
 }

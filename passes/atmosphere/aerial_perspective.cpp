@@ -4,9 +4,10 @@
 // the atmosphere scatters toward the camera over that stretch for a sun of unit
 // illuminance, and the stretch's transmittance (physics::scattering_along: Rayleigh and Mie
 // single scattering plus σs · Ψ_ms, the sun's transmittance and Ψ_ms from their LUTs).
-// Surfaces, fog and clouds then take L·T + S·E from one lookup. 32 × 32 × 32 over 32 km as
-// Hillaire 2020. Cached on the atmosphere and the camera. Shader:
-// shaders/atmosphere_aerial_perspective.comp.
+// Surfaces, fog and clouds then take L·T + S·E from one lookup
+// (include/atmosphere_aerial_lookup.glsl, with the volumes' frame this pass writes to
+// `lookup`). 32 × 32 × 32 over 32 km as Hillaire 2020. Cached on the atmosphere and the
+// camera. Shader: shaders/atmosphere_aerial_perspective.comp.
 #include <algorithm>
 
 #include "graph/execute/pass_execution.h"
@@ -48,6 +49,8 @@ struct AerialPerspectiveTable : PassTable {
                                         "rgb scattered toward the camera from it to each texel, for a sun of unit illuminance");
   SlotHandle aerial_transmittance = output("aerial_transmittance", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
                                            SizeSpec::square_layers_of("resolution", "slices"), "rgb transmittance from the camera to each texel");
+  SlotHandle lookup = output("lookup", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(kAerialLookupBytes),
+                             "the volumes' frame for the passes that read them (include/atmosphere_aerial_lookup.glsl AerialLookup)");
 };
 
 class AerialPerspectiveExecution final : public PassExecution {
@@ -73,6 +76,8 @@ class AerialPerspectiveExecution final : public PassExecution {
          BindGroupEntry::of(7, c.view(t_.aerial_transmittance))});
     const Extent size = c.extent(t_.aerial_scattering);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, size.depth});
+    const GpuAerialLookup lookup = aerial_lookup(c);
+    c.encoder.update_buffer(c.buffer(t_.lookup), 0, std::as_bytes(std::span(&lookup, 1)));
   }
 
  private:
@@ -90,6 +95,18 @@ class AerialPerspectiveExecution final : public PassExecution {
     f.sampling[2] = 100e3f;
     f.sampling[3] = 0.5f;
     return f;
+  }
+
+  GpuAerialLookup aerial_lookup(const PassContext& c) const {
+    GpuAerialLookup l{};
+    l.view = fog::pack_view_rays(c.scene->camera, c.frame_size());
+    l.volume[0] = float(c.param(t_.distance));
+    l.volume[1] = float(c.param(t_.slices));
+    const Atmosphere& a = *c.scene->atmosphere;
+    if (atmosphere::planet_frame(*c.scene).has_sun) {
+      for (size_t i = 0; i < 3; ++i) l.sun[i] = float(c.scene->lights[size_t(a.sun_light)].irradiance[i]);
+    }
+    return l;
   }
 
   const AerialPerspectiveTable& t_;

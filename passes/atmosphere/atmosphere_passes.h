@@ -11,5 +11,6 @@ PassDecl atmosphere_multiscattering_lut_pass();
 PassDecl atmosphere_skyview_lut_pass();
 PassDecl atmosphere_aerial_perspective_pass();
 PassDecl sky_pass();
+PassDecl aerial_perspective_apply_pass();
 
 }  // namespace volgraph

@@ -35,7 +35,7 @@ GpuViewRays pack_view_rays(const Camera& camera, Extent output) {
   return v;
 }
 
-GpuFogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs) {
+GpuFogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs, plumbing::SceneLighting& lighting) {
   const Scene& scene = *s.scene;
   GpuFogFrame f{};
   f.view = pack_view_rays(scene.camera, s.frame_size());
@@ -47,8 +47,9 @@ GpuFogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInp
   f.grid.range[2] = inputs.range.distribution == physics::FroxelDistribution::linear ? 0.0f : 1.0f;
   const std::array<double, 3> jitter = inputs.jitter ? froxel_jitter(frame) : std::array<double, 3>{0, 0, 0};
   put(f.jitter, {jitter[0], jitter[1], jitter[2]}, double(frame));
-  put(f.ambient, inputs.ambient_radiance, 0);
-  f.light_list = plumbing::pack_lights(scene.lights);
+  const Vec3 sky = lighting.sky_ambient_radiance(scene);
+  put(f.ambient, {inputs.ambient_radiance[0] + sky[0], inputs.ambient_radiance[1] + sky[1], inputs.ambient_radiance[2] + sky[2]}, 0);
+  f.light_list = plumbing::pack_lights(lighting.lights(scene));
   f.media = physics::pack_media(scene.media);
   return f;
 }

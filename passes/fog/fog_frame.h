@@ -13,6 +13,7 @@
 #include "graph/pass_decl.h"
 #include "physics/froxel.h"
 #include "passes/plumbing/light_list.h"
+#include "passes/plumbing/scene_lighting.h"
 #include "physics/media_field.h"
 
 namespace volgraph::fog {
@@ -59,8 +60,9 @@ struct FogFrameInputs {
 // planes in position.w and forward.w.
 GpuViewRays pack_view_rays(const Camera& camera, Extent output);
 
-// The frame block of frame `frame` (its jitter) for the scene and frame size `s` sees.
-GpuFogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs);
+// The frame block of frame `frame` (its jitter) for the scene and frame size `s` sees: its
+// lights and the ambient radiance (the inputs' plus the sky's) as `lighting` gives them.
+GpuFogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs, plumbing::SceneLighting& lighting);
 
 // The scene's media must fit the frame block (at most kMaxMediumVolumes local volumes):
 // the problems of a pass that packs them (`what`: how the pass uses them, "voxelized").

@@ -85,7 +85,7 @@ class FroxelVoxelizeExecution final : public PassExecution {
 
   void record(PassContext& c) override {
     using rhi::BindGroupEntry;
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, inputs_);
+    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, inputs_, lighting_);
     const auto bytes = std::as_bytes(std::span(&frame, 1));
     c.device.write_buffer(own_frame_, 0, bytes);               // for this pass's shader
     c.encoder.update_buffer(c.buffer(t_.frame), 0, bytes);  // for the fog passes after it
@@ -101,6 +101,7 @@ class FroxelVoxelizeExecution final : public PassExecution {
   plumbing::ComputeProgram program_;
   rhi::BufferId own_frame_;
   fog::FogFrameInputs inputs_;
+  plumbing::SceneLighting lighting_;
 };
 
 }  // namespace

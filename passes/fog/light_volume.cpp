@@ -204,7 +204,7 @@ class LightVolumeExecution final : public PassExecution {
     frame_inputs.range = {s.scene->camera.near, s.scene->camera.far, physics::FroxelDistribution::linear};
     frame_inputs.ambient_radiance = s.param(t_.ambient);
     frame_inputs.jitter = false;
-    const fog::GpuFogFrame frame = fog::make_fog_frame(s, 0, frame_inputs);
+    const fog::GpuFogFrame frame = fog::make_fog_frame(s, 0, frame_inputs, lighting_);
     frame_ = buffer(s, "frame", std::as_bytes(std::span(&frame, 1)));
     if (!shadowed_) {
       plumbing::ShadowViewBlock none{};
@@ -319,6 +319,7 @@ class LightVolumeExecution final : public PassExecution {
   bool shadowed_ = false;
   uint32_t face_vertices_ = 0;
   rhi::BufferId indices_;  // height_field: the surface's triangles
+  plumbing::SceneLighting lighting_;
   rhi::BufferId params_, frame_, no_shadow_view_;
   plumbing::RenderProgram unproject_, cells_program_, ends_program_, faces_, resolve_;
 };

@@ -76,7 +76,7 @@ class OpacityShadowMapExecution final : public PassExecution {
     fog::FogFrameInputs frame_inputs;  // the lights and media; no froxel grid
     frame_inputs.range = {c.scene->camera.near, c.scene->camera.far, physics::FroxelDistribution::linear};
     frame_inputs.jitter = false;
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, 0, frame_inputs);  // frame 0: the map is frame invariant
+    const fog::GpuFogFrame frame = fog::make_fog_frame(c, 0, frame_inputs, lighting_);  // frame 0: the map is frame invariant
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     const rhi::BindGroupId group = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, frame_),
                                                                       BindGroupEntry::of(1, c.buffer(t_.light_view)),
@@ -89,6 +89,7 @@ class OpacityShadowMapExecution final : public PassExecution {
  private:
   const OpacityShadowMapTable& t_;
   plumbing::ComputeProgram program_;
+  plumbing::SceneLighting lighting_;
   rhi::BufferId frame_, params_;
 };
 

@@ -13,7 +13,7 @@ void PixelFogExecution::setup(PassSetup& s) {
   frame_inputs.range = {s.scene->camera.near, s.scene->camera.far, physics::FroxelDistribution::linear};
   frame_inputs.ambient_radiance = in.ambient;
   frame_inputs.jitter = false;
-  const GpuFogFrame frame = make_fog_frame(s, 0, frame_inputs);
+  const GpuFogFrame frame = make_fog_frame(s, 0, frame_inputs, lighting_);
   plumbing::check_wrapped_uniform_mirror<GpuFogFrame>(program_, 0, 0, s.name() + " frame");
   frame_ = plumbing::create_uniform_block(s.device, s.name() + " frame", frame);
   if (!in.params.empty()) {

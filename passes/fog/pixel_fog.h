@@ -16,6 +16,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/pass_decl.h"
 #include "graph/scene/scene.h"
+#include "passes/plumbing/scene_lighting.h"
 #include "passes/plumbing/programs.h"
 
 namespace volgraph::fog {
@@ -73,6 +74,7 @@ class PixelFogExecution : public PassExecution {
   PixelFogInputsOf inputs_of_;
   plumbing::ComputeProgram program_;
   rhi::BufferId frame_, params_;
+  plumbing::SceneLighting lighting_;
 };
 
 

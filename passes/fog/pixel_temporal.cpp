@@ -53,7 +53,7 @@ class PixelTemporalExecution final : public fog::TemporalExecution {
     in.grid = c.extent(t_.scattering);
     in.range = {c.scene->camera.near, c.scene->camera.far, physics::FroxelDistribution::linear};
     in.jitter = false;
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, in);
+    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, in, lighting_);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
   }
 
@@ -74,6 +74,7 @@ class PixelTemporalExecution final : public fog::TemporalExecution {
 
   const PixelTemporalTable& t_;
   rhi::BufferId frame_;
+  plumbing::SceneLighting lighting_;
 };
 
 }  // namespace

@@ -83,7 +83,7 @@ class RaymarchFogExecution final : public PassExecution {
 
   void record(PassContext& c) override {
     using rhi::BindGroupEntry;
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, frame_inputs(c));
+    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, frame_inputs(c), lighting_);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     const GpuRaymarchParams params = march_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
@@ -139,6 +139,7 @@ class RaymarchFogExecution final : public PassExecution {
   bool shadowed_ = false;
   Phase phase_;
   plumbing::ComputeProgram program_;
+  plumbing::SceneLighting lighting_;
   rhi::BufferId frame_, params_;
 };
 
