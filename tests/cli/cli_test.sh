@@ -308,6 +308,33 @@ got: $(cat "$tmp/err")"
     grep -q '"role": "previous"' "$tmp/plan.json" && grep -q '"history_bytes": [1-9]' "$tmp/plan.json" &&
       grep -q '"initial_barriers": \[$' "$tmp/plan.json" || fail "plan --json lacks the history pair"
     ;;
+  atmosphere)
+    # An atmosphere demo over two frames, under validation and on WebGPU when built: the
+    # first frame fills the LUTs and the aerial-perspective volume, the second runs none of
+    # them (--timings says cached) but still draws the sky and the air; the same graph over
+    # a scene without an atmosphere plans no atmosphere pass at all.
+    shift 3
+    for backend in vulkan "$@"; do
+      extra=()
+      [ "$backend" = vulkan ] && extra=(--validation)
+      "$volgraph" render "$config" --backend "$backend" "${extra[@]}" --size 64x36 --frames 2 --timings -o "$tmp/out.pfm" \
+        >"$tmp/out" 2>"$tmp/err" || fail "render --frames 2 on $backend: $(cat "$tmp/err")"
+      for type in atmosphere_transmittance_lut atmosphere_multiscattering_lut atmosphere_skyview_lut atmosphere_aerial_perspective; do
+        grep "\"type\": \"$type\"" "$tmp/out" | grep -q '"cached": true' || fail "$type ran again on $backend's second frame: $(cat "$tmp/out")"
+      done
+      for type in sky aerial_perspective_apply; do
+        grep "\"type\": \"$type\"" "$tmp/out" | grep -q '"cached": false' || fail "$type did not run on $backend's second frame"
+      done
+    done
+    configs=$(cd "$(dirname "$config")" && pwd)
+    printf '{ "include": ["%s/scenes/primitives.json", "%s/graphs/atmosphere.json"] }' "$configs" "$configs" >"$tmp/no_air.json"
+    "$volgraph" plan "$tmp/no_air.json" >"$tmp/plan" || fail "plan without an atmosphere: $(cat "$tmp/plan")"
+    for pass in atmosphere_transmittance atmosphere_multiscattering atmosphere_sky_view atmosphere_aerial sky air; do
+      grep -q "^  $pass  scene_lacks: scene has no atmosphere" "$tmp/plan" || fail "$pass is not culled for want of an atmosphere: $(cat "$tmp/plan")"
+    done
+    ! grep -q "^  [0-9]*\. \(atmosphere_\|sky \|air \)" "$tmp/plan" || fail "an atmosphere pass runs without an atmosphere"
+    grep -q "^  [0-9]*\. final " "$tmp/plan" || fail "the frame's composite is culled with the sky: $(cat "$tmp/plan")"
+    ;;
   hostile)
     hostile_case "$4"
     ;;
