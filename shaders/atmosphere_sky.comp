@@ -21,9 +21,10 @@ layout(set = 0, binding = 2) uniform texture2D surfaces;
 layout(set = 0, binding = 3) uniform texture2D depth;
 layout(set = 0, binding = 4) uniform sampler nearest;
 layout(set = 0, binding = 5) uniform texture2D transmittance;
-layout(set = 0, binding = 6) uniform texture2D sky_view;
-layout(set = 0, binding = 7) uniform sampler linear;
-layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D sky_color;
+layout(set = 0, binding = 6) uniform sampler linear;
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D sky_color;
+// The variant's own inputs (passes/atmosphere/sky.cpp variant_inputs).
+layout(set = 0, binding = 8) uniform texture2D sky_view;
 
 void main() {
   const ivec2 size = imageSize(sky_color);

@@ -1,9 +1,15 @@
 // sky: the atmosphere seen where the scene's camera sees no surface (depth at the far
-// plane): the sky-view LUT's radiance in the pixel's direction (its latitude and azimuth
-// from the sun around the camera, Hillaire 2020 §5.3) times the sun's irradiance E, plus
-// the sun's disk — radiance E / (π sin²α) within its angular radius α, dimmed by the
-// atmosphere's transmittance toward it (the transmittance LUT). Surfaces keep the scene's
-// colour (aerial perspective comes with its own pass). Shader: shaders/atmosphere_sky.comp.
+// plane); surfaces keep the scene's colour (aerial perspective comes with its own pass).
+// Each variant is its own technique with its own shader and inputs (variant_programs):
+// - sky_view_lut (default, Hillaire 2020 §5.3): the sky-view LUT's radiance in the pixel's
+//   direction (its latitude and azimuth from the sun around the camera) times the sun's
+//   irradiance E, plus the sun's disk — radiance E / (π sin²α) within its angular radius
+//   α, dimmed by the atmosphere's transmittance toward it (the transmittance LUT).
+//   Shader: shaders/atmosphere_sky.comp.
+#include <array>
+#include <string>
+#include <vector>
+
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
@@ -18,29 +24,37 @@ namespace volgraph {
 namespace {
 
 struct SkyTable : PassTable {
-  SkyTable() : PassTable("sky", PassKind::compute, "The atmosphere's sky and sun disk behind the scene's surfaces (Hillaire 2020's sky-view LUT).") {
+  SkyTable() : PassTable("sky", PassKind::compute, "The atmosphere's sky and sun disk behind the scene's surfaces.") {
     decl.needs = feature_bit(SceneFeature::atmosphere);
   }
-  // Variants.
-  VariantHandle sky_view_lut = variant("sky_view_lut", "the sky from the sky-view LUT (bilinear), the sun disk through the transmittance LUT");
+  // Variants: the technique (the first is the default), each with the inputs it needs.
+  VariantHandle sky_view_lut =
+      variant("sky_view_lut", "the sky from the sky-view LUT (bilinear), the sun disk through the transmittance LUT (Hillaire 2020)", 0,
+              {"sky_view"});
   // Parameters.
   ParamHandle<bool> sun_disk = flag("sun_disk", true, "draw the sun's disk");
-  // Slots.
+  // Slots: every variant's common ones, then each variant's own (optional: its variant names them).
   SlotHandle surfaces = input("surfaces", ResourceKind::texture2d, Usage::sampled, "the scene's linear radiance (scene.color)");
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
-  SlotHandle sky_view = input("sky_view", ResourceKind::texture2d, Usage::sampled, "the sky-view LUT (atmosphere_skyview_lut.sky_view)");
+  SlotHandle sky_view = optional_input("sky_view", ResourceKind::texture2d, Usage::sampled,
+                                       "the sky-view LUT (atmosphere_skyview_lut.sky_view), for sky_view_lut");
   SlotHandle sky_color = output("color", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(),
                                 "the scene's radiance with the sky behind it", {.size_overridable = true});
 };
+
+// The bindings every variant's shader shares (set 0): 0 the atmosphere, 1 the frame
+// (GpuSkyFrame), 2 the surfaces, 3 the depth, 4 a nearest sampler, 5 the transmittance
+// LUT, 6 a linear sampler, 7 the output; each variant's own inputs from binding 8 on.
+constexpr uint32_t kFirstVariantBinding = 8;
 
 class SkyExecution final : public PassExecution {
  public:
   explicit SkyExecution(const SkyTable& table) : t_(table) {}
 
   void setup(PassSetup& s) override {
-    program_ = plumbing::create_compute_program(s.device, "atmosphere_sky.comp");
+    program_ = plumbing::create_compute_program(s.device, shader(s));
     atmosphere_.setup(s, program_);
     plumbing::check_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuSkyFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
@@ -50,16 +64,29 @@ class SkyExecution final : public PassExecution {
     using rhi::BindGroupEntry;
     const GpuSkyFrame frame = sky_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
-    const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp), linear = c.sampler(rhi::StockSampler::linear_clamp);
-    const rhi::BindGroupId group = c.bind_group(
-        program_.layouts[0],
-        {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.surfaces)),
-         BindGroupEntry::of(3, c.view(t_.depth)), BindGroupEntry::of(4, nearest), BindGroupEntry::of(5, c.view(t_.transmittance)),
-         BindGroupEntry::of(6, c.view(t_.sky_view)), BindGroupEntry::of(7, linear), BindGroupEntry::of(8, c.view(t_.sky_color))});
-    plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.sky_color));
+    std::vector<BindGroupEntry> entries = {
+        BindGroupEntry::of(0, atmosphere_.write(c)),       BindGroupEntry::of(1, frame_),
+        BindGroupEntry::of(2, c.view(t_.surfaces)),         BindGroupEntry::of(3, c.view(t_.depth)),
+        BindGroupEntry::of(4, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(5, c.view(t_.transmittance)),
+        BindGroupEntry::of(6, c.sampler(rhi::StockSampler::linear_clamp)),  BindGroupEntry::of(7, c.view(t_.sky_color))};
+    uint32_t binding = kFirstVariantBinding;
+    for (const rhi::TextureViewId view : variant_inputs(c)) entries.push_back(BindGroupEntry::of(binding++, view));
+    plumbing::dispatch(c.encoder, c.name(), program_, {c.bind_group(program_.layouts[0], std::move(entries))}, c.extent(t_.sky_color));
   }
 
  private:
+  // The variant's shader.
+  std::string shader(const PassSetup& s) const {
+    if (s.variant_is(t_.sky_view_lut)) return "atmosphere_sky.comp";
+    return "atmosphere_sky.comp";
+  }
+
+  // The variant's own inputs, in its shader's binding order from kFirstVariantBinding.
+  std::vector<rhi::TextureViewId> variant_inputs(PassContext& c) const {
+    if (c.variant_is(t_.sky_view_lut)) return {c.view(t_.sky_view)};
+    return {};
+  }
+
   GpuSkyFrame sky_frame(const PassContext& c) const {
     const Atmosphere& a = *c.scene->atmosphere;
     const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
