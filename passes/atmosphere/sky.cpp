@@ -5,7 +5,21 @@
 //   direction (its latitude and azimuth from the sun around the camera) times the sun's
 //   irradiance E, plus the sun's disk — radiance E / (π sin²α) within its angular radius
 //   α, dimmed by the atmosphere's transmittance toward it (the transmittance LUT).
-//   Shader: shaders/atmosphere_sky.comp.
+//   The ground below the horizon: its Lambertian radiance, lit by the sun through the air
+//   and by the sky's ambient E·π·Ψ_ms, times the transmittance to it (the transmittance
+//   LUT). A camera above the top of the atmosphere, which the LUT (made at the top) cannot
+//   hold, gets the per-pixel march of `raymarch` instead, as Hillaire 2020's demo does
+//   (RenderRayMarchingPS: the sky-view LUT only while viewHeight < TopRadius); the march
+//   reads the multiple-scattering LUT when `multiscattering` is wired (else single
+//   scattering alone). Shader: shaders/atmosphere_sky.comp.
+// - raymarch (Hillaire 2020's RenderSkyRayMarching path): every pixel marches its own ray —
+//   from where it enters the top for a camera in space (black space and the sun's disk
+//   where it misses the atmosphere) to the top or the ground — reading the transmittance and
+//   multiple-scattering LUTs along it, no sky-view LUT (physics::marched_sky_radiance):
+//   the baseline the LUT is measured against. Shader: shaders/atmosphere_sky_raymarch.comp.
+// The sun's disk may be limb-darkened (Hillaire 2016 / Neckel & Labs 1994, normalised so
+// that its irradiance stays E; off by default: Bruneton 2017 and Hillaire 2020 draw a
+// uniform disk, and the uniform disk is what the exact checks test).
 #include <array>
 #include <string>
 #include <vector>
@@ -31,8 +45,17 @@ struct SkyTable : PassTable {
   VariantHandle sky_view_lut =
       variant("sky_view_lut", "the sky from the sky-view LUT (bilinear), the sun disk through the transmittance LUT (Hillaire 2020)", 0,
               {"sky_view"});
+  VariantHandle raymarch = variant("raymarch", "every pixel marches its own ray through the transmittance and multiple-scattering LUTs (Hillaire 2020's RenderSkyRayMarching), no sky-view LUT", 0,
+                                   {"multiscattering"});
   // Parameters.
   ParamHandle<bool> sun_disk = flag("sun_disk", true, "draw the sun's disk");
+  ParamHandle<bool> limb_darkening = flag("limb_darkening", false, "darken the sun's disk toward its limb (Hillaire 2016 after Neckel & Labs 1994; its irradiance stays E)");
+  ParamHandle<bool> ground = flag("ground", true, "draw the planet's Lambertian ground where a ray meets it (lit by the sun through the air and by the sky)");
+  // The march's sampling (raymarch; sky_view_lut's view from space): as the sky-view LUT's.
+  ParamHandle<double> min_samples = number("min_samples", 40, 1, 512, "", "samples along the shortest rays of the march (Hillaire 2020: 4)");
+  ParamHandle<double> max_samples = number("max_samples", 40, 1, 512, "", "samples along the march's rays of 100 km and longer (Hillaire 2020: 14)");
+  ParamHandle<double> sample_offset = number("sample_offset", 0.5, 0, 1, "", "where in its step each sample of the march sits (Hillaire 2020: 0.3)");
+  ParamHandle<bool> multiscattering_term = flag("multiscattering", true, "add σs · Ψ_ms along the march and Ψ_ms to the ground's light (off: single scattering alone)");
   // Slots: every variant's common ones, then each variant's own (optional: its variant names them).
   SlotHandle surfaces = input("surfaces", ResourceKind::texture2d, Usage::sampled, "the scene's linear radiance (scene.color)");
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
@@ -40,6 +63,8 @@ struct SkyTable : PassTable {
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
   SlotHandle sky_view = optional_input("sky_view", ResourceKind::texture2d, Usage::sampled,
                                        "the sky-view LUT (atmosphere_skyview_lut.sky_view), for sky_view_lut");
+  SlotHandle multiscattering = optional_input("multiscattering", ResourceKind::texture2d, Usage::sampled,
+                                              "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering), for raymarch and sky_view_lut's view from space");
   SlotHandle sky_color = output("color", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(),
                                 "the scene's radiance with the sky behind it", {.size_overridable = true});
 };
@@ -56,7 +81,7 @@ class SkyExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, shader(s));
     atmosphere_.setup(s, program_);
-    plumbing::check_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
+    plumbing::check_wrapped_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuSkyFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
 
@@ -77,15 +102,19 @@ class SkyExecution final : public PassExecution {
  private:
   // The variant's shader.
   std::string shader(const PassSetup& s) const {
-    if (s.variant_is(t_.sky_view_lut)) return "atmosphere_sky.comp";
+    if (s.variant_is(t_.raymarch)) return "atmosphere_sky_raymarch.comp";
     return "atmosphere_sky.comp";
   }
 
   // The variant's own inputs, in its shader's binding order from kFirstVariantBinding.
   std::vector<rhi::TextureViewId> variant_inputs(PassContext& c) const {
-    if (c.variant_is(t_.sky_view_lut)) return {c.view(t_.sky_view)};
-    return {};
+    if (c.variant_is(t_.raymarch)) return {c.view(t_.multiscattering)};
+    // sky_view_lut: the multiple-scattering LUT when wired, else the sky-view LUT (a filterable
+    // texture as the binding wants) in its place, never read: the frame turns the term off.
+    return {c.view(t_.sky_view), c.view(has_multiscattering(c) ? t_.multiscattering : t_.sky_view)};
   }
+
+  bool has_multiscattering(const PassContext& c) const { return c.bound(t_.multiscattering); }
 
   GpuSkyFrame sky_frame(const PassContext& c) const {
     const Atmosphere& a = *c.scene->atmosphere;
@@ -98,6 +127,14 @@ class SkyExecution final : public PassExecution {
     f.sun[3] = planet.has_sun ? 1.0f : 0.0f;
     f.sun_disk[0] = float(a.sun_angular_radius);
     f.sun_disk[1] = c.param(t_.sun_disk) ? 1.0f : 0.0f;
+    f.sun_disk[2] = c.param(t_.limb_darkening) ? 1.0f : 0.0f;
+    f.sun_disk[3] = c.param(t_.ground) ? 1.0f : 0.0f;
+    f.camera[0] = float(physics::atmosphere_view(*c.scene).r);
+    f.camera[1] = c.param(t_.multiscattering_term) && has_multiscattering(c) ? 1.0f : 0.0f;
+    f.sampling[0] = float(c.param(t_.min_samples));
+    f.sampling[1] = float(c.param(t_.max_samples));
+    f.sampling[2] = 100e3f;  // Hillaire 2020: rays of 100 km and longer take the max
+    f.sampling[3] = float(c.param(t_.sample_offset));
     return f;
   }
 
