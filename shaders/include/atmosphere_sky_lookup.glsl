@@ -34,6 +34,7 @@ vec3 sky_view_lookup(AtmosphereParameters a, texture2D sky_view, sampler linear,
 // Hillaire 2016 (Frostbite's sky, appendix B), after Neckel & Labs 1994: I(μ)/I(1) = μ^a
 // (u = 1), a = (0.397, 0.503, 0.652) at 680, 550, 440 nm, μ = √(1 − ρ²), ρ = sin θ / sin α,
 // times (a + 2) / 2, the inverse of its mean over the disk's projected solid angle: E stays E.
+// (sin θ as |d × s|: 1 − cos² loses float's digits this close to the sun.)
 vec3 limb_darkening(float rho) {
   if (rho > 1.0) return vec3(0.0);
   const vec3 a = vec3(0.397, 0.503, 0.652);
@@ -49,7 +50,7 @@ vec3 sun_disk_radiance(AtmosphereParameters a, texture2D transmittance_lut, samp
   const float cosine = clamp(dot(direction, f.toward_sun), -1.0, 1.0);
   if (cosine < cos(angular_radius)) return vec3(0.0);
   const float s = sin(angular_radius);
-  const vec3 disk = (limb_darkened ? limb_darkening(sqrt(max(0.0, 1.0 - cosine * cosine)) / s) : vec3(1.0)) / (ATMOSPHERE_PI * s * s);
+  const vec3 disk = (limb_darkened ? limb_darkening(length(cross(direction, f.toward_sun)) / s) : vec3(1.0)) / (ATMOSPHERE_PI * s * s);
   float r = max(f.r, atmosphere_bottom(a));
   float mu = clamp(dot(direction, f.up), -1.0, 1.0);
   if (r > atmosphere_top(a)) {
