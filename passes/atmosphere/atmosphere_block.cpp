@@ -4,8 +4,7 @@
 
 namespace volgraph::atmosphere {
 
-void AtmosphereBlock::setup(PassSetup& s, const plumbing::ComputeProgram& program) {
-  plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(program, 0, 0, s.name() + " atmosphere");
+void AtmosphereBlock::create(PassSetup& s) {
   buffer_ = s.device.create_buffer(
       {s.name() + " atmosphere", sizeof(physics::GpuAtmosphere), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
 }

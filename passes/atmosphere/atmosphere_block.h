@@ -15,11 +15,16 @@ namespace volgraph::atmosphere {
 // The uniform buffer of binding (0, 0), checked against the program at setup.
 class AtmosphereBlock {
  public:
-  void setup(PassSetup& s, const plumbing::ComputeProgram& program);
+  template <class Program>  // plumbing::ComputeProgram or RenderProgram
+  void setup(PassSetup& s, const Program& program) {
+    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(program, 0, 0, s.name() + " atmosphere");
+    create(s);
+  }
   // Packs the scene's atmosphere into the buffer and returns it for the bind group.
   rhi::BufferId write(PassContext& c) const;
 
  private:
+  void create(PassSetup& s);
   rhi::BufferId buffer_;
 };
 

@@ -11,12 +11,12 @@
 //   hold, gets the per-pixel march of `raymarch` instead, as Hillaire 2020's demo does
 //   (RenderRayMarchingPS: the sky-view LUT only while viewHeight < TopRadius); the march
 //   reads the multiple-scattering LUT when `multiscattering` is wired (else single
-//   scattering alone). Shader: shaders/atmosphere_sky.comp.
+//   scattering alone). Shader: shaders/atmosphere_sky.frag.
 // - raymarch (Hillaire 2020's RenderSkyRayMarching path): every pixel marches its own ray —
 //   from where it enters the top for a camera in space (black space and the sun's disk
 //   where it misses the atmosphere) to the top or the ground — reading the transmittance and
 //   multiple-scattering LUTs along it, no sky-view LUT (physics::marched_sky_radiance):
-//   the baseline the LUT is measured against. Shader: shaders/atmosphere_sky_raymarch.comp.
+//   the baseline the LUT is measured against. Shader: shaders/atmosphere_sky_raymarch.frag.
 // The sun's disk may be limb-darkened (Hillaire 2016 / Neckel & Labs 1994, normalised so
 // that its irradiance stays E; off by default: Bruneton 2017 and Hillaire 2020 draw a
 // uniform disk, and the uniform disk is what the exact checks test).
@@ -38,7 +38,7 @@ namespace volgraph {
 namespace {
 
 struct SkyTable : PassTable {
-  SkyTable() : PassTable("sky", PassKind::compute, "The atmosphere's sky and sun disk behind the scene's surfaces.") {
+  SkyTable() : PassTable("sky", PassKind::graphics, "The atmosphere's sky and sun disk behind the scene's surfaces.") {
     decl.needs = feature_bit(SceneFeature::atmosphere);
   }
   // Variants: the technique (the first is the default), each with the inputs it needs.
@@ -57,7 +57,6 @@ struct SkyTable : PassTable {
   ParamHandle<double> sample_offset = number("sample_offset", 0.5, 0, 1, "", "where in its step each sample of the march sits (Hillaire 2020: 0.3)");
   ParamHandle<bool> multiscattering_term = flag("multiscattering", true, "add σs · Ψ_ms along the march and Ψ_ms to the ground's light (off: single scattering alone)");
   // Slots: every variant's common ones, then each variant's own (optional: its variant names them).
-  SlotHandle surfaces = input("surfaces", ResourceKind::texture2d, Usage::sampled, "the scene's linear radiance (scene.color)");
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
@@ -65,13 +64,16 @@ struct SkyTable : PassTable {
                                        "the sky-view LUT (atmosphere_skyview_lut.sky_view), for sky_view_lut");
   SlotHandle multiscattering = optional_input("multiscattering", ResourceKind::texture2d, Usage::sampled,
                                               "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering), for raymarch and sky_view_lut's view from space");
-  SlotHandle sky_color = output("color", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(),
-                                "the scene's radiance with the sky behind it", {.size_overridable = true});
+  // The sky is drawn onto the scene's colour where no surface is, so without an
+  // atmosphere (the pass culled) the colour passes through unchanged.
+  SlotHandle sky_color = inout("color", ResourceKind::texture2d, Usage::color_attachment_load,
+                               "the scene's linear radiance (scene.color); the sky drawn behind its surfaces");
 };
 
 // The bindings every variant's shader shares (set 0): 0 the atmosphere, 1 the frame
-// (GpuSkyFrame), 2 the surfaces, 3 the depth, 4 a nearest sampler, 5 the transmittance
-// LUT, 6 a linear sampler, 7 the output; each variant's own inputs from binding 8 on.
+// (GpuSkyFrame), 3 the depth, 4 a nearest sampler, 5 the transmittance LUT, 6 a linear
+// sampler; each variant's own inputs from binding 8 on (2 and 7 held the compute
+// version's colour in and out).
 constexpr uint32_t kFirstVariantBinding = 8;
 
 class SkyExecution final : public PassExecution {
@@ -79,7 +81,10 @@ class SkyExecution final : public PassExecution {
   explicit SkyExecution(const SkyTable& table) : t_(table) {}
 
   void setup(PassSetup& s) override {
-    program_ = plumbing::create_compute_program(s.device, shader(s));
+    rhi::RenderPipelineDesc pipeline;
+    pipeline.label = s.name() + " " + shader(s);
+    pipeline.colors = {{s.desc(t_.sky_color).format, rhi::BlendMode::replace}};
+    program_ = plumbing::create_render_program(s.device, pipeline, "fullscreen.vert", shader(s));
     atmosphere_.setup(s, program_);
     plumbing::check_wrapped_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuSkyFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
@@ -90,20 +95,26 @@ class SkyExecution final : public PassExecution {
     const GpuSkyFrame frame = sky_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     std::vector<BindGroupEntry> entries = {
-        BindGroupEntry::of(0, atmosphere_.write(c)),       BindGroupEntry::of(1, frame_),
-        BindGroupEntry::of(2, c.view(t_.surfaces)),         BindGroupEntry::of(3, c.view(t_.depth)),
+        BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(3, c.view(t_.depth)),
         BindGroupEntry::of(4, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(5, c.view(t_.transmittance)),
-        BindGroupEntry::of(6, c.sampler(rhi::StockSampler::linear_clamp)),  BindGroupEntry::of(7, c.view(t_.sky_color))};
+        BindGroupEntry::of(6, c.sampler(rhi::StockSampler::linear_clamp))};
     uint32_t binding = kFirstVariantBinding;
     for (const rhi::TextureViewId view : variant_inputs(c)) entries.push_back(BindGroupEntry::of(binding++, view));
-    plumbing::dispatch(c.encoder, c.name(), program_, {c.bind_group(program_.layouts[0], std::move(entries))}, c.extent(t_.sky_color));
+    rhi::RenderPassDesc pass;
+    pass.label = c.name();
+    pass.colors = {{c.view(t_.sky_color), rhi::LoadOp::load}};
+    c.encoder.begin_render_pass(pass);
+    c.encoder.set_pipeline(program_.pipeline);
+    c.encoder.set_bind_group(0, c.bind_group(program_.layouts[0], std::move(entries)));
+    c.encoder.draw(3);  // fullscreen.vert's one triangle
+    c.encoder.end_render_pass();
   }
 
  private:
   // The variant's shader.
   std::string shader(const PassSetup& s) const {
-    if (s.variant_is(t_.raymarch)) return "atmosphere_sky_raymarch.comp";
-    return "atmosphere_sky.comp";
+    if (s.variant_is(t_.raymarch)) return "atmosphere_sky_raymarch.frag";
+    return "atmosphere_sky.frag";
   }
 
   // The variant's own inputs, in its shader's binding order from kFirstVariantBinding.
@@ -139,7 +150,7 @@ class SkyExecution final : public PassExecution {
   }
 
   const SkyTable& t_;
-  plumbing::ComputeProgram program_;
+  plumbing::RenderProgram program_;
   atmosphere::AtmosphereBlock atmosphere_;
   rhi::BufferId frame_;
 };

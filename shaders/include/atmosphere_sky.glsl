@@ -45,7 +45,7 @@ ScatteringAlong scattering_along(AtmosphereParameters a, texture2D transmittance
     const vec3 sun = sun_transmittance_lookup(a, transmittance_lut, nearest, rd, sun_mu);
     vec3 psi = vec3(0.0);
     if (sampling.multiscattering) {
-      psi = texture(sampler2D(multiscattering_lut, linear), multiscattering_lut_uv(a, rd, sun_mu, ms_size)).rgb;
+      psi = textureLod(sampler2D(multiscattering_lut, linear), multiscattering_lut_uv(a, rd, sun_mu, ms_size), 0.0).rgb;
     }
     const vec3 source = (rayleigh * rayleigh_phase + mie_s * mie) * sun + (rayleigh + mie_s) * psi;
     const vec3 step_transmittance = exp(-extinction * dt);

@@ -28,7 +28,7 @@ vec2 sky_view_direction(SkyFrame f, vec3 direction) {
 
 vec3 sky_view_lookup(AtmosphereParameters a, texture2D sky_view, sampler linear, SkyFrame f, vec3 direction) {
   const ivec2 size = textureSize(sampler2D(sky_view, linear), 0);
-  return texture(sampler2D(sky_view, linear), sky_view_lut_uv(a, f.r, sky_view_direction(f, direction), size)).rgb;
+  return textureLod(sampler2D(sky_view, linear), sky_view_lut_uv(a, f.r, sky_view_direction(f, direction), size), 0.0).rgb;
 }
 
 // Hillaire 2016 (Frostbite's sky, appendix B), after Neckel & Labs 1994: I(μ)/I(1) = μ^a

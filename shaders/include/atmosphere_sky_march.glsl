@@ -22,7 +22,7 @@ struct SkyViewOptions {
 vec3 multiscattering_at(AtmosphereParameters a, texture2D multiscattering_lut, sampler linear, float r, float mu_s, bool on) {
   if (!on) return vec3(0.0);
   const ivec2 size = textureSize(sampler2D(multiscattering_lut, linear), 0);
-  return texture(sampler2D(multiscattering_lut, linear), multiscattering_lut_uv(a, r, mu_s, size)).rgb;
+  return textureLod(sampler2D(multiscattering_lut, linear), multiscattering_lut_uv(a, r, mu_s, size), 0.0).rgb;
 }
 
 // `f.r` is the camera's radius as it is (not clamped to the top).

@@ -38,7 +38,7 @@ std::string sky_config(const std::string& atmosphere) {
     { "name": "sky_view", "type": "atmosphere_skyview_lut", "params": { "multiscattering": false },
       "inputs": { "transmittance": "lut.transmittance", "multiscattering": "ms.multiscattering" } },
     { "name": "lit", "type": "scene" },
-    { "name": "sky", "type": "sky", "inputs": { "surfaces": "lit.color", "depth": "lit.depth", "transmittance": "lut.transmittance",
+    { "name": "sky", "type": "sky", "inputs": { "color": "lit.color", "depth": "lit.depth", "transmittance": "lut.transmittance",
                                                 "sky_view": "sky_view.sky_view" } } ],
     "outputs": ["sky.color"] } })";
 }

@@ -60,11 +60,12 @@ std::string sky_config(const SkyCase& k) {
     { "name": "air", "type": "atmosphere_aerial_perspective",
       "inputs": { "transmittance": "lut.transmittance", "multiscattering": "ms.multiscattering" } },
     { "name": "lit", "type": "scene" },
+    { "name": "lit_for_march", "type": "scene" },
     { "name": "sky", "type": "sky", "variant": ")" + k.variant + R"(", "params": )" + k.sky_params + R"(,
-      "inputs": { "surfaces": "lit.color", "depth": "lit.depth", "transmittance": "lut.transmittance", )" + sky_view_input +
+      "inputs": { "color": "lit.color", "depth": "lit.depth", "transmittance": "lut.transmittance", )" + sky_view_input +
          R"("multiscattering": "ms.multiscattering" } },
     { "name": "march", "type": "sky", "variant": "raymarch", "params": )" + k.sky_params + R"(,
-      "inputs": { "surfaces": "lit.color", "depth": "lit.depth", "transmittance": "lut.transmittance", "multiscattering": "ms.multiscattering" } } ],
+      "inputs": { "color": "lit_for_march.color", "depth": "lit_for_march.depth", "transmittance": "lut.transmittance", "multiscattering": "ms.multiscattering" } } ],
     "outputs": ["sky.color", "sky_view.sky_view", "air.aerial_scattering", "air.aerial_transmittance", "march.color"] } })";
 }
 

@@ -48,8 +48,8 @@ const std::vector<std::string_view> kShaders = {
     "fog_apply_scattering_depth_aware.frag", "raymarch_fog.comp", "raymarch_fog_shadowed.comp", "froxel_temporal.comp",
     "pixel_temporal.comp", "depth_fog.comp", "height_fog.comp", "analytic_fog.comp", "vignette.comp",
     "light_volume_unproject.frag", "light_volume_cells.frag", "light_volume_ends.frag", "light_volume_faces.vert",
-    "light_volume_surface.vert", "light_volume_faces.frag", "light_volume_resolve.frag", "atmosphere_sky.comp",
-    "atmosphere_sky_raymarch.comp"};
+    "light_volume_surface.vert", "light_volume_faces.frag", "light_volume_resolve.frag", "atmosphere_sky.frag",
+    "atmosphere_sky_raymarch.frag", "aerial_perspective_apply_transmittance.frag", "aerial_perspective_apply_scattering.frag"};
 
 std::span<const uint32_t> spirv(std::string_view shader) {
   const std::span<const uint32_t> words = shader_spirv(shader);
@@ -264,11 +264,14 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
 
 TEST(UniformMirrors, AtmosphereBlocksMatch) {
   for (const char* shader : {"atmosphere_transmittance_lut.comp", "atmosphere_multiscattering_lut.comp", "atmosphere_skyview_lut.comp",
-                             "atmosphere_sky.comp", "atmosphere_sky_raymarch.comp", "atmosphere_aerial_perspective.comp"}) {
+                             "atmosphere_sky.frag", "atmosphere_sky_raymarch.frag", "atmosphere_aerial_perspective.comp"}) {
     EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>(shader, 0, 0, "GpuAtmosphere"), "") << shader;
   }
-  for (const char* shader : {"atmosphere_sky.comp", "atmosphere_sky_raymarch.comp"}) {
+  for (const char* shader : {"atmosphere_sky.frag", "atmosphere_sky_raymarch.frag"}) {
     EXPECT_EQ(wrapped_error<GpuSkyFrame>(shader, 0, 1, "GpuSkyFrame"), "") << shader;
+  }
+  for (const char* shader : {"aerial_perspective_apply_transmittance.frag", "aerial_perspective_apply_scattering.frag"}) {
+    EXPECT_EQ(wrapped_error<GpuAerialLookup>(shader, 0, 0, "GpuAerialLookup"), "") << shader;
   }
 }
 
