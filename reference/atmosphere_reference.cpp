@@ -493,6 +493,26 @@ AerialPerspectiveSample AtmosphereReference::aerial_perspective(const Vec3& posi
   return out;
 }
 
+Vec3 AtmosphereReference::air_in_scattering(const Vec3& point, const Vec3& direction) const {
+  return in_scattering(point, normalize(direction), sun_.direction);
+}
+
+Vec3 AtmosphereReference::transmittance_along(const Vec3& position, const Vec3& direction_in, double distance) const {
+  const Atmosphere& a = atmosphere_;
+  const Vec3 direction = normalize(direction_in);
+  Vec3 p = on_or_above_ground(a, position);
+  double r = length_of(p), d = distance;
+  if (r > a.top_radius) {
+    const std::optional<double> entry = physics::enter_atmosphere(a, r, dot(p, direction) / r);
+    if (!entry || *entry >= distance) return {1, 1, 1};
+    p = scaled(normalize(add(p, scaled(direction, *entry))), a.top_radius);
+    r = a.top_radius;
+    d -= *entry;
+  }
+  const double mu = std::clamp(dot(p, direction) / r, -1.0, 1.0);
+  return exp_minus(physics::optical_depth(a, r, mu, std::min(d, physics::distance_to_boundary(a, r, mu))));
+}
+
 SkyImage render_sky_image(const AtmosphereReference& reference, const Camera& camera, const RenderSettings& settings) {
   const Vec3 eye = planet_position(reference.atmosphere(), camera.position);
   std::vector<uint32_t> orders(size_t(settings.width) * settings.height, 0);

@@ -126,6 +126,15 @@ class AtmosphereReference {
   AerialPerspectiveSample aerial_perspective(const Vec3& position, const Vec3& direction, double distance,
                                              uint64_t key) const;
 
+  // The sun's light scattered once toward the viewer per metre at `point` (planet frame)
+  // for a ray of unit `direction`: (σ_R P_R(ν) + σ_M P_M(ν)) E T_sun(point), what order 1
+  // integrates (the view's transmittance not included).
+  Vec3 air_in_scattering(const Vec3& point, const Vec3& direction) const;
+  // The air's transmittance over the first `distance` m from `position` along unit
+  // `direction`, from where aerial_perspective starts (the ground straight above a point
+  // below it; the entry into the atmosphere from above it).
+  Vec3 transmittance_along(const Vec3& position, const Vec3& direction, double distance) const;
+
   const Atmosphere& atmosphere() const { return atmosphere_; }
   const AtmosphereSun& sun() const { return sun_; }
   const AtmosphereReferenceSettings& settings() const { return settings_; }

@@ -1,10 +1,13 @@
 #include "reference/renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
+#include "physics/atmosphere_lighting.h"
 #include "physics/camera.h"
 #include "physics/lighting.h"
+#include "reference/atmosphere_reference.h"
 
 namespace volgraph::reference {
 namespace {
@@ -42,10 +45,45 @@ Vec3 optical_depth_toward(const SceneMedia& media, const Light& light, const Vec
 // The camera's view axis, unit.
 Vec3 forward(const Camera& camera) { return normalize(sub(camera.target, camera.position)); }
 
+// The atmosphere's reference for the scene: its sun the scene's sun light as it is at the
+// top of the atmosphere (a sun of no light where the atmosphere names none: the air still
+// dims); null without an atmosphere.
+std::shared_ptr<const AtmosphereReference> atmosphere_reference(const Scene& scene, const AtmosphereReferenceSettings& settings) {
+  if (!scene.atmosphere) return nullptr;
+  const Atmosphere& a = *scene.atmosphere;
+  const AtmosphereSun sun = scene_sun(a, scene.lights).value_or(AtmosphereSun{{0, 1, 0}, {0, 0, 0}, a.sun_angular_radius});
+  return std::make_shared<const AtmosphereReference>(a, sun, settings);
+}
+
+// The air's orders ≥ 2 along a camera ray: A(t), the light they add on [0, t], at nodes.
+struct AirProfile {
+  std::vector<double> t;
+  std::vector<Vec3> light;
+  Vec3 at(double x) const {
+    if (x <= 0 || t.size() < 2) return {0, 0, 0};
+    const size_t k = std::min(size_t(std::upper_bound(t.begin(), t.end(), x) - t.begin()), t.size() - 1);
+    const double w = std::clamp((x - t[k - 1]) / (t[k] - t[k - 1]), 0.0, 1.0);
+    return add(scaled(light[k - 1], 1 - w), scaled(light[k], w));
+  }
+};
+
+Vec3 multiple_orders(const ScatteringOrders& s) { return sub(s.total, s.radiance.empty() ? Vec3{0, 0, 0} : s.radiance[0]); }
+
 }  // namespace
 
+uint64_t camera_ray_key(const Vec3& direction) {
+  const auto bits = [&](int c) { return std::bit_cast<uint64_t>(direction[size_t(c)]); };
+  return bits(0) ^ std::rotl(bits(1), 21) ^ std::rotl(bits(2), 42);
+}
+
 Renderer::Renderer(const Scene& scene, const IntegrationSettings& integration)
+    : Renderer(scene, integration, AtmosphereReferenceSettings{}) {}
+
+Renderer::Renderer(const Scene& scene, const IntegrationSettings& integration, const AtmosphereReferenceSettings& atmosphere)
     : scene_(scene),
+      lights_(physics::lights_through_atmosphere(scene)),
+      sky_ambient_(physics::sky_ambient_radiance(scene)),
+      atmosphere_(atmosphere_reference(scene, atmosphere)),
       triangles_(scene_triangles(scene)),
       camera_bvh_(triangles_.triangles),
       shadow_bvh_(shadow_casters(triangles_)),
@@ -67,6 +105,7 @@ Vec3 Renderer::pixel_radiance(uint32_t i, uint32_t j, uint32_t width, uint32_t h
 
 Vec3 Renderer::camera_ray_radiance(const Vec3& direction) const {
   const std::optional<SurfaceHit> hit = surface_hit(direction);
+  if (atmosphere_) return atmosphere_ray_radiance(direction, hit);
   const Vec3 behind = hit ? surface_radiance(*hit) : scene_.background;
   if (media_.empty()) return behind;
   const Camera& camera = scene_.camera;
@@ -81,6 +120,46 @@ Vec3 Renderer::camera_ray_radiance(const Vec3& direction) const {
       media_, camera.position, direction, length, std::move(breaks), [&](const Vec3& x) { return in_scattering(x, direction); },
       integration_);
   return add(media.radiance, times(media.transmittance, behind));
+}
+
+Vec3 Renderer::atmosphere_ray_radiance(const Vec3& direction, const std::optional<SurfaceHit>& hit) const {
+  const AtmosphereReference& air = *atmosphere_;
+  const Atmosphere& a = air.atmosphere();
+  const Camera& camera = scene_.camera;
+  const Vec3 eye = planet_position(a, camera.position);
+  const uint64_t key = camera_ray_key(direction);
+  const double along_axis = dot(direction, forward(camera));
+  const double length = hit ? hit->t : along_axis > 0 ? camera.far / along_axis : 0;
+  if (media_.empty()) {
+    if (!hit) return air.sky(eye, direction, key).radiance;
+    const AerialPerspectiveSample ap = air.aerial_perspective(eye, direction, length, key);
+    return add(ap.in_scattered, times(ap.transmittance, surface_radiance(*hit)));
+  }
+  const Vec3 behind = hit ? surface_radiance(*hit) : air.sky(add(eye, scaled(direction, length)), direction, key).radiance;
+  // The air's orders ≥ 2: A(t) at kAirNodes equal steps, the same paths' seeds at each.
+  AirProfile profile{{0}, {{0, 0, 0}}};
+  for (int k = 1; k <= kAirNodes && length > 0; ++k) {
+    const double t = length * k / kAirNodes;
+    profile.t.push_back(t);
+    profile.light.push_back(multiple_orders(air.aerial_perspective(eye, direction, t, key).scattering));
+  }
+  std::vector<double> breaks(profile.t.begin() + 1, profile.t.end() - (profile.t.size() > 1 ? 1 : 0));
+  for (const Light& light : scene_.lights) {
+    if (light.type != LightType::directional) breaks.push_back(dot(sub(light.position, camera.position), direction));
+  }
+  // J(t) = T_air(0, t) (J_media + J_air, order 1) + σt_media A(t): with the media's own
+  // transmittance applied by the integral, ∫ T_media T_air J dt and ∫ T_media dA by parts.
+  const auto source = [&](const Vec3& x) {
+    const double t = dot(sub(x, camera.position), direction);
+    const Vec3 lit = add(in_scattering(x, direction), air.air_in_scattering(planet_position(a, x), direction));
+    const Vec3 dimmed = times(air.transmittance_along(eye, direction, t), lit);
+    return add(dimmed, times(media_.at(x).sigma_t(), profile.at(t)));
+  };
+  const RayScattering media = integrate_single_scattering(media_, camera.position, direction, length, std::move(breaks), source,
+                                                          integration_);
+  const Vec3 air_to_end = air.transmittance_along(eye, direction, length);
+  return add(add(media.radiance, times(media.transmittance, profile.at(length))),
+             times(times(media.transmittance, air_to_end), behind));
 }
 
 std::optional<SurfaceHit> Renderer::surface_hit(const Vec3& direction) const {
@@ -108,7 +187,8 @@ std::optional<SurfaceHit> Renderer::surface_hit(const Vec3& direction) const {
 
 Vec3 Renderer::surface_radiance(const SurfaceHit& hit) const {
   Vec3 e{0, 0, 0};
-  for (const Light& light : scene_.lights) e = add(e, light_arrival(light, hit.position, hit.normal));
+  for (const Light& light : lights_) e = add(e, light_arrival(light, hit.position, hit.normal));
+  if (atmosphere_) e = add(e, scaled(sky_ambient_, M_PI));  // an isotropic L: irradiance π·L on any surface
   const SurfaceMaterial& m = triangles_.materials[triangles_.attributes[hit.triangle].material];
   return add(physics::lambert(albedo_at(triangles_, m, hit.u, hit.v), e), emission_at(triangles_, m, hit.u, hit.v));
 }
@@ -121,8 +201,9 @@ Vec3 Renderer::light_arrival(const Light& light, const Vec3& point, const Vec3& 
 }
 
 Vec3 Renderer::in_scattering(const Vec3& point, const Vec3& direction) const {
-  Vec3 j = media_.at(point).emission;
-  for (const Light& light : scene_.lights) {
+  const physics::MediaSample sample = media_.at(point);
+  Vec3 j = atmosphere_ ? add(sample.emission, times(sample.sigma_s, sky_ambient_)) : sample.emission;
+  for (const Light& light : lights_) {
     if (light.type != LightType::directional && point == light.position) continue;  // no direction: a singular point
     const physics::LightArriving arriving = physics::light_arriving(light, point);
     const Vec3 sigma_s_phase = media_.scattering(point, -dot(arriving.travel, direction));
