@@ -12,7 +12,7 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
 layout(set = 0, binding = 1) uniform Params {
   ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
-  ivec4 order;  // x: the scattering order this step computes
+  ivec4 order;  // x: the scattering order this step computes; z: trapezoids along each ray
 } params;
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
@@ -20,9 +20,9 @@ layout(set = 0, binding = 4, rgba32f) uniform writeonly image3D delta_rayleigh;
 layout(set = 0, binding = 5, rgba32f) uniform writeonly image3D delta_mie;
 layout(set = 0, binding = 6, rgba32f) uniform writeonly image3D scattering_sum;
 
-const int SAMPLES = 50;  // Bruneton 2017, ComputeSingleScattering's SAMPLE_COUNT
 
 void main() {
+  const int SAMPLES = max(params.order.z, 1);  // trapezoids along the ray (Bruneton 2017's SAMPLE_COUNT: 50)
   const ivec3 texel = ivec3(gl_GlobalInvocationID.xyz);
   if (any(greaterThanEqual(texel, imageSize(delta_rayleigh)))) return;
   const AtmosphereParameters a = atmosphere.a;

@@ -62,6 +62,7 @@ struct BrunetonTablesTable : PassTable {
   VariantHandle iterated = variant("iterated_orders", "each order from the last by a density and an integral along the ray (Bruneton 2017)");
   // Parameters.
   ParamHandle<int64_t> orders = integer("orders", 4, 1, kMaxOrders, "", "scattering orders summed (1: single scattering)");
+  ParamHandle<int64_t> samples = integer("samples", 50, 1, 4096, "", "trapezoids along each ray of the single and multiple scattering integrals (Bruneton 2017: 50)");
   ParamHandle<int64_t> nu = integer("nu", 8, 2, 64, "texels", "view–sun cosines (nu slices packed in x)");
   ParamHandle<int64_t> nu_mu_s = integer("nu_mu_s", 256, 4, 2048, "texels", "x: nu × the sun zenith cosines (mu_s) per slice");
   ParamHandle<int64_t> mu = integer("mu", 128, 4, 1024, "texels", "view zenith cosines, half below the horizon and half above");
@@ -161,6 +162,7 @@ class BrunetonTablesExecution final : public PassExecution {
       params.size[3] = int32_t(s.param(t_.r));
       params.order[0] = n;
       params.order[1] = n <= orders ? 1 : 0;
+      params.order[2] = int32_t(s.param(t_.samples));
       const std::string label = s.pass_name() + " params (order " + std::to_string(n) + ")";
       params_[size_t(n - 1)] = plumbing::create_checked_uniform_block(s.device, n == 1 ? single_ : multiple_, 0, 1, label, params);
     }
