@@ -76,16 +76,19 @@ struct GpuSkyViewLutParams {
   }
 };
 
-// atmosphere_sky.comp's Frame.
+// The sky pass's frame (shaders/include/atmosphere_sky_frame.glsl SkyPassFrame, the only
+// member of every variant's Frame block).
 struct GpuSkyFrame {
   fog::GpuViewRays view;
-  float planet_up[4];     // xyz: the camera's local zenith; w: its radius (m, at most the top's)
+  float planet_up[4];     // xyz: the camera's local zenith; w: its radius (m, at most the top's: the sky-view LUT's)
   float toward_sun[4];    // xyz: unit, toward the sun; w: the sun's zenith cosine at the camera
   float sun[4];           // rgb: E at the top of the atmosphere; w: 1 when there is a sun
-  float sun_disk[4];      // x: the sun's angular radius (rad), y: 1 to draw its disk
-  static constexpr std::array<uint64_t, 5> offsets() {
+  float sun_disk[4];      // x: the sun's angular radius (rad), y: 1 to draw its disk, z: 1 to limb-darken it, w: 1 to draw the ground
+  float camera[4];        // x: the camera's radius as it is (m), y: 1 for the multiple-scattering term
+  float sampling[4];      // min and max samples a ray, the length (m) from which rays take the max, where in its step each sample sits
+  static constexpr std::array<uint64_t, 7> offsets() {
     return {offsetof(GpuSkyFrame, view), offsetof(GpuSkyFrame, planet_up), offsetof(GpuSkyFrame, toward_sun), offsetof(GpuSkyFrame, sun),
-            offsetof(GpuSkyFrame, sun_disk)};
+            offsetof(GpuSkyFrame, sun_disk), offsetof(GpuSkyFrame, camera), offsetof(GpuSkyFrame, sampling)};
   }
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "physics/atmosphere.h"
 #include "physics/phase.h"
@@ -37,20 +38,84 @@ SkyViewDirection sky_view_direction(const AtmosphereView& view, const Vec3& dire
   return {mu, lengths > 1e-12 ? std::clamp(dot / lengths, -1.0, 1.0) : 1.0};
 }
 
-Vec3 sun_disk_radiance(const Atmosphere& atmosphere, const AtmosphereView& view, const Vec3& direction) {
-  const double cosine = direction[0] * view.toward_sun[0] + direction[1] * view.toward_sun[1] + direction[2] * view.toward_sun[2];
+Vec3 limb_darkening(double rho) {
+  if (rho > 1) return {0, 0, 0};
+  // Hillaire 2016, appendix B (Neckel & Labs 1994): u = 1, a per channel at 680, 550, 440 nm.
+  constexpr double a[3] = {0.397, 0.503, 0.652};
+  const double mu = std::sqrt(std::max(0.0, 1 - rho * rho));
+  Vec3 out{};
+  for (size_t c = 0; c < 3; ++c) out[c] = std::pow(mu, a[c]) * (a[c] + 2) / 2;
+  return out;
+}
+
+Vec3 sun_disk_radiance(const Atmosphere& atmosphere, const AtmosphereView& view, const Vec3& direction, bool limb_darkened) {
+  const double cosine = std::clamp(direction[0] * view.toward_sun[0] + direction[1] * view.toward_sun[1] + direction[2] * view.toward_sun[2], -1.0, 1.0);
   if (!view.has_sun || cosine < std::cos(atmosphere.sun_angular_radius)) return {0, 0, 0};
-  const double r = std::min(view.r, atmosphere.top_radius);
-  const double mu = direction[0] * view.up[0] + direction[1] * view.up[1] + direction[2] * view.up[2];
+  const double scale = sun_disk_radiance_scale(atmosphere.sun_angular_radius);
+  const Vec3 limb = limb_darkened ? limb_darkening(std::sqrt(1 - cosine * cosine) / std::sin(atmosphere.sun_angular_radius)) : Vec3{1, 1, 1};
+  double r = std::max(view.r, atmosphere.bottom_radius);
+  double mu = std::clamp(direction[0] * view.up[0] + direction[1] * view.up[1] + direction[2] * view.up[2], -1.0, 1.0);
+  if (r > atmosphere.top_radius) {
+    const std::optional<double> entry = enter_atmosphere(atmosphere, r, mu);
+    if (!entry) return {limb[0] * scale, limb[1] * scale, limb[2] * scale};  // Hillaire 2020: GetSunLuminance in space
+    mu = mu_at(r, mu, *entry);
+    r = atmosphere.top_radius;
+  }
   if (ray_hits_ground(atmosphere, r, mu)) return {0, 0, 0};
   const Vec3 t = transmittance_to_top(atmosphere, r, mu);
-  const double disk = sun_disk_radiance_scale(atmosphere.sun_angular_radius);
-  return {t[0] * disk, t[1] * disk, t[2] * disk};
+  return {t[0] * limb[0] * scale, t[1] * limb[1] * scale, t[2] * limb[2] * scale};
 }
 
 double sun_disk_radiance_scale(double angular_radius) {
   const double s = std::sin(angular_radius);
   return 1 / (3.14159265358979323846 * s * s);
+}
+
+Vec3 ground_radiance(const Atmosphere& a, double mu_s, const Vec3& psi) {
+  constexpr double pi = 3.14159265358979323846;
+  const Vec3 sun = mu_s > 0 ? sun_transmittance(a, a.bottom_radius, mu_s) : Vec3{0, 0, 0};
+  Vec3 out{};
+  for (size_t c = 0; c < 3; ++c) out[c] = a.ground_albedo[c] * (sun[c] * std::max(mu_s, 0.0) / pi + psi[c]);
+  return out;
+}
+
+Vec3 seen_ground_radiance(const Atmosphere& a, const AtmosphereView& view, const Vec3& direction, const MultiscatteringTerm& multiscattering) {
+  const double r = std::clamp(view.r, a.bottom_radius, a.top_radius);
+  const double mu = std::clamp(direction[0] * view.up[0] + direction[1] * view.up[1] + direction[2] * view.up[2], -1.0, 1.0);
+  const std::optional<double> d = distance_to_ground(a, r, mu);
+  if (!view.has_sun || !d) return {0, 0, 0};
+  const double nu = std::clamp(direction[0] * view.toward_sun[0] + direction[1] * view.toward_sun[1] + direction[2] * view.toward_sun[2], -1.0, 1.0);
+  const double ground_mu_s = mu_s_at(r, mu, view.mu_s, nu, *d);
+  const Vec3 psi = multiscattering ? multiscattering(a.bottom_radius, ground_mu_s) : Vec3{0, 0, 0};
+  const Vec3 ground = ground_radiance(a, ground_mu_s, psi);
+  const Vec3 t = transmittance_to_boundary(a, r, mu);
+  return {t[0] * ground[0], t[1] * ground[1], t[2] * ground[2]};
+}
+
+Vec3 marched_sky_radiance(const Atmosphere& a, const AtmosphereView& view, const Vec3& direction, const MultiscatteringTerm& multiscattering,
+                          const SkyViewOptions& options) {
+  if (!view.has_sun) return {0, 0, 0};
+  const Vec3 disk = options.sun_disk ? sun_disk_radiance(a, view, direction, options.limb_darkening) : Vec3{0, 0, 0};
+  double r = std::max(view.r, a.bottom_radius);
+  double mu = std::clamp(direction[0] * view.up[0] + direction[1] * view.up[1] + direction[2] * view.up[2], -1.0, 1.0);
+  const double nu = std::clamp(direction[0] * view.toward_sun[0] + direction[1] * view.toward_sun[1] + direction[2] * view.toward_sun[2], -1.0, 1.0);
+  double mu_s = view.mu_s;
+  if (r > a.top_radius) {  // Hillaire 2020, MoveToTopAtmosphere: start where the ray enters the top
+    const std::optional<double> entry = enter_atmosphere(a, r, mu);
+    if (!entry) return disk;
+    mu_s = mu_s_at(r, mu, mu_s, nu, *entry);
+    mu = mu_at(r, mu, *entry);
+    r = a.top_radius;
+  }
+  const double length = distance_to_boundary(a, r, mu);
+  const ScatteringAlong along = scattering_along(a, r, mu, mu_s, nu, length, multiscattering, options.sampling);
+  Vec3 out{along.radiance[0] + disk[0], along.radiance[1] + disk[1], along.radiance[2] + disk[2]};
+  if (!options.ground || !ray_hits_ground(a, r, mu)) return out;
+  const double ground_mu_s = mu_s_at(r, mu, mu_s, nu, length);
+  const Vec3 psi = multiscattering ? multiscattering(a.bottom_radius, ground_mu_s) : Vec3{0, 0, 0};
+  const Vec3 ground = ground_radiance(a, ground_mu_s, psi);
+  for (size_t c = 0; c < 3; ++c) out[c] += along.transmittance[c] * ground[c];
+  return out;
 }
 
 double view_sun_cosine(double mu, double cos_azimuth, double mu_s) {

@@ -67,9 +67,47 @@ SkyViewDirection sky_view_direction(const AtmosphereView& view, const Vec3& dire
 // gives E = L π sin²α on a surface facing it, so L = E / (π sin²α).
 double sun_disk_radiance_scale(double angular_radius);
 
+// Limb darkening of the sun's disk at `rho` = sin θ / sin α (θ from its centre, α its
+// angular radius): Hillaire 2016 ("Physically Based Sky, Atmosphere and Cloud Rendering
+// in Frostbite", appendix B), after Neckel & Labs 1994 / Hestroffer & Magnan 1998:
+// I(μ)/I(1) = 1 − u(1 − μ^a), u = 1, a = (0.397, 0.503, 0.652) at 680, 550 and 440 nm,
+// μ = √(1 − ρ²) — divided by its mean over the disk's projected solid angle
+// (2π sin θ d(sin θ) = π sin²α · 2ρ dρ), ∫₀¹ μ^a 2μ dμ = 2 / (a + 2), so that the disk's
+// irradiance stays E. 0 outside the disk (ρ > 1).
+Vec3 limb_darkening(double rho);
+
 // The sun's disk per unit E in a unit world `direction`: sun_disk_radiance_scale within its
-// angular radius, times the transmittance toward it from the camera; 0 outside the disk or
-// where the ground is in the way.
-Vec3 sun_disk_radiance(const Atmosphere& atmosphere, const AtmosphereView& view, const Vec3& direction);
+// angular radius (times limb_darkening when asked), times the transmittance toward it from
+// the camera — from where the ray enters the atmosphere for a camera above it, 1 when the
+// ray misses the atmosphere —; 0 outside the disk or where the ground is in the way.
+Vec3 sun_disk_radiance(const Atmosphere& atmosphere, const AtmosphereView& view, const Vec3& direction, bool limb_darkened = false);
+
+// The Lambertian ground's radiance per unit E where the sun's zenith cosine is mu_s
+// (Bruneton 2017's ground radiance, albedo/π × its irradiance): the sun through the air,
+// T_sun · max(mu_s, 0), and the sky's π·Ψ_ms (the isotropic ambient of
+// physics/atmosphere_lighting.h; `psi` = Ψ_ms at the ground, 0 for the sun alone).
+Vec3 ground_radiance(const Atmosphere& atmosphere, double mu_s, const Vec3& psi);
+
+// The ground seen from inside the atmosphere (view.r at most the top's) in a unit world
+// `direction`: ground_radiance times the air's transmittance to it; 0 where the ray misses
+// the ground. Drawn beside a sky-view LUT, which holds the air's in-scattering alone.
+Vec3 seen_ground_radiance(const Atmosphere& atmosphere, const AtmosphereView& view, const Vec3& direction,
+                          const MultiscatteringTerm& multiscattering = {});
+
+// What the camera sees in a unit world `direction` where no surface of the scene is, by a
+// march along the pixel's own ray (Hillaire 2020's RenderSkyRayMarching path, no sky-view
+// LUT), per unit E: a camera above the atmosphere starts where its ray enters the top
+// (MoveToTopAtmosphere) and sees black space where it misses it; the air's in-scattering
+// along the ray (scattering_along); where the ray ends on the ground, the ground's
+// radiance (ground_radiance) times the air's transmittance to it; the sun's disk
+// (sun_disk_radiance). The camera's radius is view.r as it is (not clamped to the top).
+struct SkyViewOptions {
+  SkySampling sampling;
+  bool sun_disk = true;
+  bool limb_darkening = false;
+  bool ground = true;
+};
+Vec3 marched_sky_radiance(const Atmosphere& atmosphere, const AtmosphereView& view, const Vec3& direction,
+                          const MultiscatteringTerm& multiscattering = {}, const SkyViewOptions& options = {});
 
 }  // namespace volgraph::physics

@@ -150,3 +150,8 @@ pass_tests(scatter_integrate "${voxelize_slab}")
 pass_tests(froxel_apply "${voxelize_slab}")
 pass_tests(scene "${voxelize_slab}")
 pass_tests(composite "${voxelize_slab}")
+
+# tests/gpu/atmosphere_sky_test.cpp, atmosphere_sky_view_test.cpp: the LUT passes → scene →
+# sky (both variants); tests/reference/sky_view_twin_test.cpp: the sky's CPU twin.
+pass_tests(sky "(^|/)(Sky|SkyView)\\." "^SkyViewTwin\\.")
+pass_tests(atmosphere_skyview_lut "(^|/)(Sky|SkyView)\\.")

@@ -1,9 +1,29 @@
 // sky: the atmosphere seen where the scene's camera sees no surface (depth at the far
-// plane): the sky-view LUT's radiance in the pixel's direction (its latitude and azimuth
-// from the sun around the camera, Hillaire 2020 §5.3) times the sun's irradiance E, plus
-// the sun's disk — radiance E / (π sin²α) within its angular radius α, dimmed by the
-// atmosphere's transmittance toward it (the transmittance LUT). Surfaces keep the scene's
-// colour (aerial perspective comes with its own pass). Shader: shaders/atmosphere_sky.comp.
+// plane); surfaces keep the scene's colour (aerial perspective comes with its own pass).
+// Each variant is its own technique with its own shader and inputs (variant_programs):
+// - sky_view_lut (default, Hillaire 2020 §5.3): the sky-view LUT's radiance in the pixel's
+//   direction (its latitude and azimuth from the sun around the camera) times the sun's
+//   irradiance E, plus the sun's disk — radiance E / (π sin²α) within its angular radius
+//   α, dimmed by the atmosphere's transmittance toward it (the transmittance LUT).
+//   The ground below the horizon: its Lambertian radiance, lit by the sun through the air
+//   and by the sky's ambient E·π·Ψ_ms, times the transmittance to it (the transmittance
+//   LUT). A camera above the top of the atmosphere, which the LUT (made at the top) cannot
+//   hold, gets the per-pixel march of `raymarch` instead, as Hillaire 2020's demo does
+//   (RenderRayMarchingPS: the sky-view LUT only while viewHeight < TopRadius); the march
+//   reads the multiple-scattering LUT when `multiscattering` is wired (else single
+//   scattering alone). Shader: shaders/atmosphere_sky.comp.
+// - raymarch (Hillaire 2020's RenderSkyRayMarching path): every pixel marches its own ray —
+//   from where it enters the top for a camera in space (black space and the sun's disk
+//   where it misses the atmosphere) to the top or the ground — reading the transmittance and
+//   multiple-scattering LUTs along it, no sky-view LUT (physics::marched_sky_radiance):
+//   the baseline the LUT is measured against. Shader: shaders/atmosphere_sky_raymarch.comp.
+// The sun's disk may be limb-darkened (Hillaire 2016 / Neckel & Labs 1994, normalised so
+// that its irradiance stays E; off by default: Bruneton 2017 and Hillaire 2020 draw a
+// uniform disk, and the uniform disk is what the exact checks test).
+#include <array>
+#include <string>
+#include <vector>
+
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
@@ -18,31 +38,50 @@ namespace volgraph {
 namespace {
 
 struct SkyTable : PassTable {
-  SkyTable() : PassTable("sky", PassKind::compute, "The atmosphere's sky and sun disk behind the scene's surfaces (Hillaire 2020's sky-view LUT).") {
+  SkyTable() : PassTable("sky", PassKind::compute, "The atmosphere's sky and sun disk behind the scene's surfaces.") {
     decl.needs = feature_bit(SceneFeature::atmosphere);
   }
-  // Variants.
-  VariantHandle sky_view_lut = variant("sky_view_lut", "the sky from the sky-view LUT (bilinear), the sun disk through the transmittance LUT");
+  // Variants: the technique (the first is the default), each with the inputs it needs.
+  VariantHandle sky_view_lut =
+      variant("sky_view_lut", "the sky from the sky-view LUT (bilinear), the sun disk through the transmittance LUT (Hillaire 2020)", 0,
+              {"sky_view"});
+  VariantHandle raymarch = variant("raymarch", "every pixel marches its own ray through the transmittance and multiple-scattering LUTs (Hillaire 2020's RenderSkyRayMarching), no sky-view LUT", 0,
+                                   {"multiscattering"});
   // Parameters.
   ParamHandle<bool> sun_disk = flag("sun_disk", true, "draw the sun's disk");
-  // Slots.
+  ParamHandle<bool> limb_darkening = flag("limb_darkening", false, "darken the sun's disk toward its limb (Hillaire 2016 after Neckel & Labs 1994; its irradiance stays E)");
+  ParamHandle<bool> ground = flag("ground", true, "draw the planet's Lambertian ground where a ray meets it (lit by the sun through the air and by the sky)");
+  // The march's sampling (raymarch; sky_view_lut's view from space): as the sky-view LUT's.
+  ParamHandle<double> min_samples = number("min_samples", 40, 1, 512, "", "samples along the shortest rays of the march (Hillaire 2020: 4)");
+  ParamHandle<double> max_samples = number("max_samples", 40, 1, 512, "", "samples along the march's rays of 100 km and longer (Hillaire 2020: 14)");
+  ParamHandle<double> sample_offset = number("sample_offset", 0.5, 0, 1, "", "where in its step each sample of the march sits (Hillaire 2020: 0.3)");
+  ParamHandle<bool> multiscattering_term = flag("multiscattering", true, "add σs · Ψ_ms along the march and Ψ_ms to the ground's light (off: single scattering alone)");
+  // Slots: every variant's common ones, then each variant's own (optional: its variant names them).
   SlotHandle surfaces = input("surfaces", ResourceKind::texture2d, Usage::sampled, "the scene's linear radiance (scene.color)");
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
-  SlotHandle sky_view = input("sky_view", ResourceKind::texture2d, Usage::sampled, "the sky-view LUT (atmosphere_skyview_lut.sky_view)");
+  SlotHandle sky_view = optional_input("sky_view", ResourceKind::texture2d, Usage::sampled,
+                                       "the sky-view LUT (atmosphere_skyview_lut.sky_view), for sky_view_lut");
+  SlotHandle multiscattering = optional_input("multiscattering", ResourceKind::texture2d, Usage::sampled,
+                                              "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering), for raymarch and sky_view_lut's view from space");
   SlotHandle sky_color = output("color", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(),
                                 "the scene's radiance with the sky behind it", {.size_overridable = true});
 };
+
+// The bindings every variant's shader shares (set 0): 0 the atmosphere, 1 the frame
+// (GpuSkyFrame), 2 the surfaces, 3 the depth, 4 a nearest sampler, 5 the transmittance
+// LUT, 6 a linear sampler, 7 the output; each variant's own inputs from binding 8 on.
+constexpr uint32_t kFirstVariantBinding = 8;
 
 class SkyExecution final : public PassExecution {
  public:
   explicit SkyExecution(const SkyTable& table) : t_(table) {}
 
   void setup(PassSetup& s) override {
-    program_ = plumbing::create_compute_program(s.device, "atmosphere_sky.comp");
+    program_ = plumbing::create_compute_program(s.device, shader(s));
     atmosphere_.setup(s, program_);
-    plumbing::check_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
+    plumbing::check_wrapped_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuSkyFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
 
@@ -50,16 +89,33 @@ class SkyExecution final : public PassExecution {
     using rhi::BindGroupEntry;
     const GpuSkyFrame frame = sky_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
-    const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp), linear = c.sampler(rhi::StockSampler::linear_clamp);
-    const rhi::BindGroupId group = c.bind_group(
-        program_.layouts[0],
-        {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.surfaces)),
-         BindGroupEntry::of(3, c.view(t_.depth)), BindGroupEntry::of(4, nearest), BindGroupEntry::of(5, c.view(t_.transmittance)),
-         BindGroupEntry::of(6, c.view(t_.sky_view)), BindGroupEntry::of(7, linear), BindGroupEntry::of(8, c.view(t_.sky_color))});
-    plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.sky_color));
+    std::vector<BindGroupEntry> entries = {
+        BindGroupEntry::of(0, atmosphere_.write(c)),       BindGroupEntry::of(1, frame_),
+        BindGroupEntry::of(2, c.view(t_.surfaces)),         BindGroupEntry::of(3, c.view(t_.depth)),
+        BindGroupEntry::of(4, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(5, c.view(t_.transmittance)),
+        BindGroupEntry::of(6, c.sampler(rhi::StockSampler::linear_clamp)),  BindGroupEntry::of(7, c.view(t_.sky_color))};
+    uint32_t binding = kFirstVariantBinding;
+    for (const rhi::TextureViewId view : variant_inputs(c)) entries.push_back(BindGroupEntry::of(binding++, view));
+    plumbing::dispatch(c.encoder, c.name(), program_, {c.bind_group(program_.layouts[0], std::move(entries))}, c.extent(t_.sky_color));
   }
 
  private:
+  // The variant's shader.
+  std::string shader(const PassSetup& s) const {
+    if (s.variant_is(t_.raymarch)) return "atmosphere_sky_raymarch.comp";
+    return "atmosphere_sky.comp";
+  }
+
+  // The variant's own inputs, in its shader's binding order from kFirstVariantBinding.
+  std::vector<rhi::TextureViewId> variant_inputs(PassContext& c) const {
+    if (c.variant_is(t_.raymarch)) return {c.view(t_.multiscattering)};
+    // sky_view_lut: the multiple-scattering LUT when wired, else the sky-view LUT (a filterable
+    // texture as the binding wants) in its place, never read: the frame turns the term off.
+    return {c.view(t_.sky_view), c.view(has_multiscattering(c) ? t_.multiscattering : t_.sky_view)};
+  }
+
+  bool has_multiscattering(const PassContext& c) const { return c.bound(t_.multiscattering); }
+
   GpuSkyFrame sky_frame(const PassContext& c) const {
     const Atmosphere& a = *c.scene->atmosphere;
     const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
@@ -71,6 +127,14 @@ class SkyExecution final : public PassExecution {
     f.sun[3] = planet.has_sun ? 1.0f : 0.0f;
     f.sun_disk[0] = float(a.sun_angular_radius);
     f.sun_disk[1] = c.param(t_.sun_disk) ? 1.0f : 0.0f;
+    f.sun_disk[2] = c.param(t_.limb_darkening) ? 1.0f : 0.0f;
+    f.sun_disk[3] = c.param(t_.ground) ? 1.0f : 0.0f;
+    f.camera[0] = float(physics::atmosphere_view(*c.scene).r);
+    f.camera[1] = c.param(t_.multiscattering_term) && has_multiscattering(c) ? 1.0f : 0.0f;
+    f.sampling[0] = float(c.param(t_.min_samples));
+    f.sampling[1] = float(c.param(t_.max_samples));
+    f.sampling[2] = 100e3f;  // Hillaire 2020: rays of 100 km and longer take the max
+    f.sampling[3] = float(c.param(t_.sample_offset));
     return f;
   }
 

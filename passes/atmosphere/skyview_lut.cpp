@@ -7,8 +7,8 @@
 // the sun's transmittance from the transmittance LUT). A sky pass reads it for every pixel
 // that sees the sky, times the sun's irradiance. 192 × 108 rgba16f as Hillaire 2020.
 // Depends on the atmosphere, the sun and the camera's altitude: cached on those. A camera
-// above the atmosphere is placed at its top here (the view from space comes with the sky
-// pass). Shader: shaders/atmosphere_skyview_lut.comp.
+// above the atmosphere is placed at its top here (finite, but not its view: the sky pass
+// marches each pixel instead there, passes/atmosphere/sky.cpp). Shader: shaders/atmosphere_skyview_lut.comp.
 #include <algorithm>
 
 #include "graph/execute/pass_execution.h"

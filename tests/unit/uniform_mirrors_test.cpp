@@ -48,7 +48,8 @@ const std::vector<std::string_view> kShaders = {
     "fog_apply_scattering_depth_aware.frag", "raymarch_fog.comp", "raymarch_fog_shadowed.comp", "froxel_temporal.comp",
     "pixel_temporal.comp", "depth_fog.comp", "height_fog.comp", "analytic_fog.comp", "vignette.comp",
     "light_volume_unproject.frag", "light_volume_cells.frag", "light_volume_ends.frag", "light_volume_faces.vert",
-    "light_volume_surface.vert", "light_volume_faces.frag", "light_volume_resolve.frag"};
+    "light_volume_surface.vert", "light_volume_faces.frag", "light_volume_resolve.frag", "atmosphere_sky.comp",
+    "atmosphere_sky_raymarch.comp"};
 
 std::span<const uint32_t> spirv(std::string_view shader) {
   const std::span<const uint32_t> words = shader_spirv(shader);
@@ -228,7 +229,6 @@ TEST(UniformMirrors, PassBlocksMatchTheirShaders) {
   EXPECT_EQ(mirror_error<GpuAtmosphereLutParams>("atmosphere_transmittance_lut.comp", 0, 1, "GpuAtmosphereLutParams"), "");
   EXPECT_EQ(mirror_error<GpuMultiscatteringLutParams>("atmosphere_multiscattering_lut.comp", 0, 1, "GpuMultiscatteringLutParams"), "");
   EXPECT_EQ(mirror_error<GpuSkyViewLutParams>("atmosphere_skyview_lut.comp", 0, 1, "GpuSkyViewLutParams"), "");
-  EXPECT_EQ(mirror_error<GpuSkyFrame>("atmosphere_sky.comp", 0, 1, "GpuSkyFrame"), "");
   EXPECT_EQ(mirror_error<GpuAerialPerspectiveFrame>("atmosphere_aerial_perspective.comp", 0, 1, "GpuAerialPerspectiveFrame"), "");
   for (const char* shader : {"fog_apply_transmittance.frag", "fog_apply_scattering.frag", "fog_apply_transmittance_depth_aware.frag",
                              "fog_apply_scattering_depth_aware.frag"}) {
@@ -264,8 +264,11 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
 
 TEST(UniformMirrors, AtmosphereBlocksMatch) {
   for (const char* shader : {"atmosphere_transmittance_lut.comp", "atmosphere_multiscattering_lut.comp", "atmosphere_skyview_lut.comp",
-                             "atmosphere_sky.comp", "atmosphere_aerial_perspective.comp"}) {
+                             "atmosphere_sky.comp", "atmosphere_sky_raymarch.comp", "atmosphere_aerial_perspective.comp"}) {
     EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>(shader, 0, 0, "GpuAtmosphere"), "") << shader;
+  }
+  for (const char* shader : {"atmosphere_sky.comp", "atmosphere_sky_raymarch.comp"}) {
+    EXPECT_EQ(wrapped_error<GpuSkyFrame>(shader, 0, 1, "GpuSkyFrame"), "") << shader;
   }
 }
 
@@ -308,6 +311,7 @@ TEST(UniformMirrors, NestedStructsMatchTheirGlsl) {
   EXPECT_NESTED_MATCH(physics::GpuMediumCoefficients, "MediumCoefficients");
   EXPECT_NESTED_MATCH(plumbing::ShadowViewBlock, "ShadowView");
   EXPECT_NESTED_MATCH(GpuLightVolumeParams, "LightVolumeParams");
+  EXPECT_NESTED_MATCH(GpuSkyFrame, "SkyPassFrame");
 }
 
 // The reader agrees with reflection where both see a struct: FogFrame is Frame's only
