@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include "graph/config/config.h"
+#include "graph/diagnostics.h"
+#include "passes/passes.h"
 #include "physics/atmosphere.h"
 #include "physics/atmosphere_bruneton.h"
 #include "physics/phase.h"
@@ -246,6 +249,33 @@ TEST(AtmosphereBruneton, SunAndSkyIrradianceOnAHorizontalSurface) {
   // The direct irradiance's cosine: mu_s above the disk's radius, 0 below −radius.
   EXPECT_NEAR(direct_irradiance(kEarth, tables.transmittance, kEarth.bottom_radius, 0.5)[0], 0.5 * transmittance_to_top(kEarth, kEarth.bottom_radius, 0.5)[0], 1e-12);
   EXPECT_EQ(direct_irradiance(kEarth, tables.transmittance, kEarth.bottom_radius, -0.01)[0], 0.0);
+}
+
+// The tables pass refuses a shape its x packing or its horizon split cannot hold, with one message.
+std::string table_shape_error(const std::string& params) {
+  PassRegistry registry;
+  register_builtin_passes(registry);
+  const std::string text = R"({ "output": { "size": [16, 16] },
+    "scene": { "camera": { "position": [0, 1, 5], "target": [0, 1, 0] }, "atmosphere": { "preset": "earth" },
+               "lights": [ { "name": "sun", "type": "directional", "direction": [0, -1, -1], "irradiance": [1, 1, 1] } ] },
+    "graph": { "passes": [ { "name": "lut", "type": "atmosphere_transmittance_lut" },
+                           { "name": "tables", "type": "atmosphere_bruneton_tables", "params": { )" + params + R"( },
+                             "inputs": { "transmittance": "lut.transmittance" } } ],
+               "outputs": ["tables.scattering"] } })";
+  try {
+    load_config_text("tables.json", text, registry);
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.diagnostics().size(), 1u) << e.what();
+    return e.diagnostics().front().message;
+  }
+  return "";
+}
+
+TEST(AtmosphereBrunetonTables, ShapesTheTablesCannotHoldAreRefused) {
+  EXPECT_NE(table_shape_error(R"("nu": 8, "nu_mu_s": 250)").find("must be a multiple of nu (8)"), std::string::npos);
+  EXPECT_NE(table_shape_error(R"("nu": 8, "nu_mu_s": 8)").find("at least 2 mu_s texels"), std::string::npos);
+  EXPECT_NE(table_shape_error(R"("mu": 127)").find("must be even"), std::string::npos);
+  EXPECT_EQ(table_shape_error(R"("nu": 4, "nu_mu_s": 32, "mu": 32)"), "");
 }
 
 }  // namespace
