@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "passes/fog/fog_frame.h"
 
 namespace volgraph {
 
