@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <cstdint>
 
-
 namespace volgraph {
 
 // atmosphere_bruneton_*.comp's Params.
