@@ -29,6 +29,7 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(atmosphere_multiscattering_lut_pass());
   registry.add(atmosphere_skyview_lut_pass());
   registry.add(atmosphere_aerial_perspective_pass());
+  registry.add(atmosphere_bruneton_tables_pass());
   registry.add(sky_pass());
   registry.add(aerial_perspective_apply_pass());
 }

@@ -155,3 +155,12 @@ pass_tests(composite "${voxelize_slab}")
 # sky (both variants); tests/reference/sky_view_twin_test.cpp: the sky's CPU twin.
 pass_tests(sky "(^|/)(Sky|SkyView)\\." "^SkyViewTwin\\.")
 pass_tests(atmosphere_skyview_lut "(^|/)(Sky|SkyView)\\.")
+
+# tests/gpu/atmosphere_bruneton_test.cpp: atmosphere_transmittance_lut → atmosphere_bruneton_tables
+# (→ atmosphere_aerial_perspective bruneton, → scene → sky bruneton); tests/unit/atmosphere_bruneton_test.cpp:
+# the tables' CPU twin and the pass's shape check.
+pass_tests(atmosphere_bruneton_tables "(^|/)AtmosphereBruneton\\." "^AtmosphereBrunetonTables\\.")
+pass_tests(atmosphere_transmittance_lut "(^|/)AtmosphereBruneton\\.")
+pass_tests(atmosphere_aerial_perspective "(^|/)AtmosphereBruneton\\.AerialPerspective")
+pass_tests(sky "(^|/)AtmosphereBruneton\\.SkyPass")
+pass_tests(scene "(^|/)AtmosphereBruneton\\.SkyPass")

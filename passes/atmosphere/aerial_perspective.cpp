@@ -6,14 +6,19 @@
 // single scattering plus σs · Ψ_ms, the sun's transmittance and Ψ_ms from their LUTs).
 // Surfaces, fog and clouds then take L·T + S·E from one lookup
 // (include/atmosphere_aerial_lookup.glsl, with the volumes' frame this pass writes to
-// `lookup`). 32 × 32 × 32 over 32 km as Hillaire 2020. Cached on the atmosphere and the
-// camera. Shader: shaders/atmosphere_aerial_perspective.comp.
+// `lookup`). 32 × 32 × 32 over 32 km as Hillaire 2020. Variant bruneton fills the same
+// volumes from Bruneton 2017's precomputed scattering table
+// (atmosphere_bruneton_tables.scattering: GetSkyRadianceToPoint, the scattering to the
+// ray's boundary from the camera less the transmittance times that from
+// the texel's point). Cached on the atmosphere and the camera. Shaders:
+// shaders/atmosphere_aerial_perspective.comp, atmosphere_aerial_perspective_bruneton.comp.
 #include <algorithm>
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
 #include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/atmosphere/bruneton_uniforms.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
@@ -26,24 +31,30 @@ namespace {
 struct AerialPerspectiveTable : PassTable {
   AerialPerspectiveTable()
       : PassTable("atmosphere_aerial_perspective", PassKind::compute,
-                  "Hillaire 2020's aerial perspective: the air's in-scattering and transmittance in a camera-frustum volume.") {
+                  "The air's in-scattering and transmittance in a camera-frustum volume (Hillaire 2020, or from Bruneton 2017's tables).") {
     decl.needs = feature_bit(SceneFeature::atmosphere);
     decl.cached = true;
     decl.frame_invariant = true;
     decl.reads_scene = part_bit(ScenePart::atmosphere) | part_bit(ScenePart::camera);
   }
   // Variants.
-  VariantHandle hillaire = variant("hillaire", "each texel integrates its ray from the camera to its slice (Hillaire 2020 §5.4)");
+  VariantHandle hillaire = variant("hillaire", "each texel integrates its ray from the camera to its slice (Hillaire 2020 §5.4)", 0,
+                                   {"multiscattering"});
+  VariantHandle bruneton = variant("bruneton", "each texel from two lookups in Bruneton 2017's scattering table (GetSkyRadianceToPoint)", 0,
+                                   {"scattering"});
   // Parameters.
   ParamHandle<int64_t> resolution = integer("resolution", 32, 2, 512, "texels", "columns per side through the frame");
   ParamHandle<int64_t> slices = integer("slices", 32, 1, 512, "", "slices along each ray");
   ParamHandle<double> distance = number("distance", 32e3, 1, 1e7, "m", "how far along each ray the volume reaches");
-  ParamHandle<double> samples = number("samples", 40, 1, 512, "", "midpoint samples from the camera to each slice");
+  ParamHandle<double> samples = number("samples", 40, 1, 512, "", "midpoint samples from the camera to each slice (hillaire)");
+  ParamHandle<int64_t> nu = integer("nu", 8, 2, 64, "texels", "bruneton: the scattering table's nu slices (atmosphere_bruneton_tables.nu)");
   // Slots.
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
-  SlotHandle multiscattering = input("multiscattering", ResourceKind::texture2d, Usage::sampled,
-                                     "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering)");
+  SlotHandle multiscattering = optional_input("multiscattering", ResourceKind::texture2d, Usage::sampled,
+                                              "hillaire: the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering)");
+  SlotHandle scattering = optional_input("scattering", ResourceKind::texture3d, Usage::sampled,
+                                         "bruneton: the scattering table (atmosphere_bruneton_tables.scattering)");
   SlotHandle aerial_scattering = output("aerial_scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
                                         SizeSpec::square_layers_of("resolution", "slices"),
                                         "rgb scattered toward the camera from it to each texel, for a sun of unit illuminance");
@@ -58,16 +69,22 @@ class AerialPerspectiveExecution final : public PassExecution {
   explicit AerialPerspectiveExecution(const AerialPerspectiveTable& table) : t_(table) {}
 
   void setup(PassSetup& s) override {
-    program_ = plumbing::create_compute_program(s.device, "atmosphere_aerial_perspective.comp");
+    bruneton_ = s.variant_is(t_.bruneton);  // the loader made sure the variant's input is wired
+    program_ = plumbing::create_compute_program(s.device, bruneton_ ? "atmosphere_aerial_perspective_bruneton.comp" : "atmosphere_aerial_perspective.comp");
     atmosphere_.setup(s, program_);
     plumbing::check_uniform_mirror<GpuAerialPerspectiveFrame>(program_, 0, 1, s.name() + " frame");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuAerialPerspectiveFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    if (bruneton_) table_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 5, s.name() + " table", table_shape(s));
   }
 
   void record(PassContext& c) override {
     using rhi::BindGroupEntry;
     const GpuAerialPerspectiveFrame frame = aerial_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
+    if (bruneton_) {
+      record_bruneton(c);
+      return;
+    }
     const rhi::BindGroupId group = c.bind_group(
         program_.layouts[0],
         {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.transmittance)),
@@ -81,6 +98,29 @@ class AerialPerspectiveExecution final : public PassExecution {
   }
 
  private:
+  // The scattering table's shape: nu slices of mu_s texels in x, mu in y, r in z.
+  GpuBrunetonTableParams table_shape(const PassSetup& s) const {
+    const Extent e = s.extent(t_.scattering);
+    const int32_t nu = int32_t(s.param(t_.nu));
+    GpuBrunetonTableParams shape{};
+    shape.size[0] = nu;
+    shape.size[1] = std::max<int32_t>(1, int32_t(e.width) / nu);
+    shape.size[2] = int32_t(e.height);
+    shape.size[3] = int32_t(e.depth);
+    return shape;
+  }
+
+  void record_bruneton(PassContext& c) const {
+    using rhi::BindGroupEntry;
+    const rhi::BindGroupId group = c.bind_group(
+        program_.layouts[0],
+        {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.transmittance)),
+         BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(4, c.view(t_.scattering)),
+         BindGroupEntry::of(5, table_), BindGroupEntry::of(6, c.view(t_.aerial_scattering)), BindGroupEntry::of(7, c.view(t_.aerial_transmittance))});
+    const Extent size = c.extent(t_.aerial_scattering);
+    plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, size.depth});
+  }
+
   GpuAerialPerspectiveFrame aerial_frame(const PassContext& c) const {
     const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
     GpuAerialPerspectiveFrame f{};
@@ -110,9 +150,10 @@ class AerialPerspectiveExecution final : public PassExecution {
   }
 
   const AerialPerspectiveTable& t_;
+  bool bruneton_ = false;
   plumbing::ComputeProgram program_;
   atmosphere::AtmosphereBlock atmosphere_;
-  rhi::BufferId frame_;
+  rhi::BufferId frame_, table_;
 };
 
 }  // namespace

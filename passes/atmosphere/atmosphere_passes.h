@@ -10,6 +10,7 @@ PassDecl atmosphere_transmittance_lut_pass();
 PassDecl atmosphere_multiscattering_lut_pass();
 PassDecl atmosphere_skyview_lut_pass();
 PassDecl atmosphere_aerial_perspective_pass();
+PassDecl atmosphere_bruneton_tables_pass();
 PassDecl sky_pass();
 PassDecl aerial_perspective_apply_pass();
 

@@ -17,9 +17,14 @@
 //   where it misses the atmosphere) to the top or the ground — reading the transmittance and
 //   multiple-scattering LUTs along it, no sky-view LUT (physics::marched_sky_radiance):
 //   the baseline the LUT is measured against. Shader: shaders/atmosphere_sky_raymarch.frag.
+// - bruneton (Bruneton 2017's GetSkyRadiance): the sky from the precomputed scattering table
+//   (atmosphere_bruneton_tables), a camera in space entering the atmosphere first, the
+//   sun's disk as above and the ground lit by the sun and the table's sky irradiance
+//   (GetSunAndSkyIrradiance). Shader: shaders/atmosphere_sky_bruneton.frag.
 // The sun's disk may be limb-darkened (Hillaire 2016 / Neckel & Labs 1994, normalised so
 // that its irradiance stays E; off by default: Bruneton 2017 and Hillaire 2020 draw a
 // uniform disk, and the uniform disk is what the exact checks test).
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -28,6 +33,7 @@
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
 #include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/atmosphere/bruneton_uniforms.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
@@ -47,6 +53,8 @@ struct SkyTable : PassTable {
               {"sky_view"});
   VariantHandle raymarch = variant("raymarch", "every pixel marches its own ray through the transmittance and multiple-scattering LUTs (Hillaire 2020's RenderSkyRayMarching), no sky-view LUT", 0,
                                    {"multiscattering"});
+  VariantHandle bruneton = variant("bruneton", "the sky from Bruneton 2017's precomputed scattering table (GetSkyRadiance), the ground by its irradiance table", 0,
+                                   {"scattering", "irradiance"});
   // Parameters.
   ParamHandle<bool> sun_disk = flag("sun_disk", true, "draw the sun's disk");
   ParamHandle<bool> limb_darkening = flag("limb_darkening", false, "darken the sun's disk toward its limb (Hillaire 2016 after Neckel & Labs 1994; its irradiance stays E)");
@@ -55,6 +63,7 @@ struct SkyTable : PassTable {
   ParamHandle<double> min_samples = number("min_samples", 40, 1, 512, "", "samples along the shortest rays of the march (Hillaire 2020: 4)");
   ParamHandle<double> max_samples = number("max_samples", 40, 1, 512, "", "samples along the march's rays of 100 km and longer (Hillaire 2020: 14)");
   ParamHandle<double> sample_offset = number("sample_offset", 0.5, 0, 1, "", "where in its step each sample of the march sits (Hillaire 2020: 0.3)");
+  ParamHandle<int64_t> nu = integer("nu", 8, 2, 64, "texels", "bruneton: the scattering table's nu slices (atmosphere_bruneton_tables.nu)");
   ParamHandle<bool> multiscattering_term = flag("multiscattering", true, "add σs · Ψ_ms along the march and Ψ_ms to the ground's light (off: single scattering alone)");
   // Slots: every variant's common ones, then each variant's own (optional: its variant names them).
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
@@ -64,6 +73,10 @@ struct SkyTable : PassTable {
                                        "the sky-view LUT (atmosphere_skyview_lut.sky_view), for sky_view_lut");
   SlotHandle multiscattering = optional_input("multiscattering", ResourceKind::texture2d, Usage::sampled,
                                               "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering), for raymarch and sky_view_lut's view from space");
+  SlotHandle scattering = optional_input("scattering", ResourceKind::texture3d, Usage::sampled,
+                                         "Bruneton 2017's scattering table (atmosphere_bruneton_tables.scattering), for bruneton");
+  SlotHandle irradiance = optional_input("irradiance", ResourceKind::texture2d, Usage::sampled,
+                                         "Bruneton 2017's sky irradiance table (atmosphere_bruneton_tables.irradiance), for bruneton");
   // The sky is drawn onto the scene's colour where no surface is, so without an
   // atmosphere (the pass culled) the colour passes through unchanged.
   SlotHandle sky_color = inout("color", ResourceKind::texture2d, Usage::color_attachment_load,
@@ -72,9 +85,10 @@ struct SkyTable : PassTable {
 
 // The bindings every variant's shader shares (set 0): 0 the atmosphere, 1 the frame
 // (GpuSkyFrame), 3 the depth, 4 a nearest sampler, 5 the transmittance LUT, 6 a linear
-// sampler; each variant's own inputs from binding 8 on (2 and 7 held the compute
+// sampler (not bruneton's); each variant's own inputs from binding 8 on (2 and 7 held the compute
 // version's colour in and out).
 constexpr uint32_t kFirstVariantBinding = 8;
+constexpr uint32_t kBrunetonTableBinding = 10;  // bruneton: its table's shape after its two inputs
 
 class SkyExecution final : public PassExecution {
  public:
@@ -88,6 +102,7 @@ class SkyExecution final : public PassExecution {
     atmosphere_.setup(s, program_);
     plumbing::check_wrapped_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuSkyFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    if (s.variant_is(t_.bruneton)) table_ = plumbing::create_checked_uniform_block(s.device, program_, 0, kBrunetonTableBinding, s.name() + " table", table_shape(s));
   }
 
   void record(PassContext& c) override {
@@ -96,8 +111,9 @@ class SkyExecution final : public PassExecution {
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     std::vector<BindGroupEntry> entries = {
         BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(3, c.view(t_.depth)),
-        BindGroupEntry::of(4, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(5, c.view(t_.transmittance)),
-        BindGroupEntry::of(6, c.sampler(rhi::StockSampler::linear_clamp))};
+        BindGroupEntry::of(4, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(5, c.view(t_.transmittance))};
+    // bruneton reads its rgba32f tables by texelFetch (unfilterable on WebGPU): no linear sampler.
+    if (!c.variant_is(t_.bruneton)) entries.push_back(BindGroupEntry::of(6, c.sampler(rhi::StockSampler::linear_clamp)));
     uint32_t binding = kFirstVariantBinding;
     for (const rhi::TextureViewId view : variant_inputs(c)) entries.push_back(BindGroupEntry::of(binding++, view));
     rhi::RenderPassDesc pass;
@@ -105,6 +121,7 @@ class SkyExecution final : public PassExecution {
     pass.colors = {{c.view(t_.sky_color), rhi::LoadOp::load}};
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(program_.pipeline);
+    if (c.variant_is(t_.bruneton)) entries.push_back(BindGroupEntry::of(kBrunetonTableBinding, table_));
     c.encoder.set_bind_group(0, c.bind_group(program_.layouts[0], std::move(entries)));
     c.encoder.draw(3);  // fullscreen.vert's one triangle
     c.encoder.end_render_pass();
@@ -114,15 +131,29 @@ class SkyExecution final : public PassExecution {
   // The variant's shader.
   std::string shader(const PassSetup& s) const {
     if (s.variant_is(t_.raymarch)) return "atmosphere_sky_raymarch.frag";
+    if (s.variant_is(t_.bruneton)) return "atmosphere_sky_bruneton.frag";
     return "atmosphere_sky.frag";
   }
 
   // The variant's own inputs, in its shader's binding order from kFirstVariantBinding.
   std::vector<rhi::TextureViewId> variant_inputs(PassContext& c) const {
     if (c.variant_is(t_.raymarch)) return {c.view(t_.multiscattering)};
+    if (c.variant_is(t_.bruneton)) return {c.view(t_.scattering), c.view(t_.irradiance)};
     // sky_view_lut: the multiple-scattering LUT when wired, else the sky-view LUT (a filterable
     // texture as the binding wants) in its place, never read: the frame turns the term off.
     return {c.view(t_.sky_view), c.view(has_multiscattering(c) ? t_.multiscattering : t_.sky_view)};
+  }
+
+  // bruneton: the scattering table's shape, nu slices of mu_s texels in x, mu in y, r in z.
+  GpuBrunetonTableParams table_shape(const PassSetup& s) const {
+    const Extent e = s.extent(t_.scattering);
+    const int32_t slices = int32_t(s.param(t_.nu));
+    GpuBrunetonTableParams shape{};
+    shape.size[0] = slices;
+    shape.size[1] = std::max<int32_t>(1, int32_t(e.width) / slices);
+    shape.size[2] = int32_t(e.height);
+    shape.size[3] = int32_t(e.depth);
+    return shape;
   }
 
   bool has_multiscattering(const PassContext& c) const { return c.bound(t_.multiscattering); }
@@ -152,7 +183,7 @@ class SkyExecution final : public PassExecution {
   const SkyTable& t_;
   plumbing::RenderProgram program_;
   atmosphere::AtmosphereBlock atmosphere_;
-  rhi::BufferId frame_;
+  rhi::BufferId frame_, table_;
 };
 
 }  // namespace

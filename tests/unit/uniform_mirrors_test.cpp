@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "graph/rhi/spirv_reflect.h"
+#include "passes/atmosphere/bruneton_uniforms.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/fog/temporal.h"
 #include "passes/plumbing/light_list.h"
@@ -273,6 +274,22 @@ TEST(UniformMirrors, AtmosphereBlocksMatch) {
   for (const char* shader : {"aerial_perspective_apply_transmittance.frag", "aerial_perspective_apply_scattering.frag"}) {
     EXPECT_EQ(wrapped_error<GpuAerialLookup>(shader, 0, 0, "GpuAerialLookup"), "") << shader;
   }
+  // Bruneton 2017's tables and their readers.
+  for (const char* shader : {"atmosphere_bruneton_direct_irradiance.comp", "atmosphere_bruneton_single_scattering.comp",
+                             "atmosphere_bruneton_scattering_density.comp", "atmosphere_bruneton_indirect_irradiance.comp",
+                             "atmosphere_bruneton_multiple_scattering.comp", "atmosphere_aerial_perspective_bruneton.comp",
+                             "atmosphere_sky_bruneton.frag"}) {
+    EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>(shader, 0, 0, "GpuAtmosphere"), "") << shader;
+  }
+  for (const char* shader : {"atmosphere_bruneton_direct_irradiance.comp", "atmosphere_bruneton_single_scattering.comp",
+                             "atmosphere_bruneton_scattering_density.comp", "atmosphere_bruneton_indirect_irradiance.comp",
+                             "atmosphere_bruneton_multiple_scattering.comp"}) {
+    EXPECT_EQ(mirror_error<GpuBrunetonTableParams>(shader, 0, 1, "GpuBrunetonTableParams"), "") << shader;
+  }
+  EXPECT_EQ(mirror_error<GpuBrunetonTableParams>("atmosphere_aerial_perspective_bruneton.comp", 0, 5, "GpuBrunetonTableParams"), "");
+  EXPECT_EQ(mirror_error<GpuBrunetonTableParams>("atmosphere_sky_bruneton.frag", 0, 10, "GpuBrunetonTableParams"), "");
+  EXPECT_EQ(mirror_error<GpuAerialPerspectiveFrame>("atmosphere_aerial_perspective_bruneton.comp", 0, 1, "GpuAerialPerspectiveFrame"), "");
+  EXPECT_EQ(wrapped_error<GpuSkyFrame>("atmosphere_sky_bruneton.frag", 0, 1, "GpuSkyFrame"), "");
 }
 
 TEST(UniformMirrors, ShadowViewBlocksMatch) {

@@ -1,0 +1,47 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// atmosphere_aerial_perspective, variant bruneton: per texel (x, y, k), the camera's ray
+// through the centre of column (x, y) of the frame and the air over its first (k + ½)
+// slices from Bruneton 2017's precomputed tables (include/atmosphere_bruneton.glsl:
+// GetSkyRadianceToPoint, S(camera) − T · S(point)), for a sun of unit irradiance.
+#include "include/atmosphere_bruneton.glsl"
+#include "include/atmosphere_sky_lookup.glsl"
+#include "include/view_rays.glsl"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
+layout(set = 0, binding = 1) uniform Frame {
+  ViewRays view;
+  vec4 planet_up;   // xyz: the camera's zenith, w: its radius
+  vec4 toward_sun;  // xyz: toward the sun, w: its zenith cosine at the camera
+  vec4 volume;      // x: metres a slice, y: 1 when there is a sun
+  vec4 sampling;    // unused by this variant
+} frame;
+layout(set = 0, binding = 2) uniform texture2D transmittance;
+layout(set = 0, binding = 3) uniform sampler nearest;
+layout(set = 0, binding = 4) uniform texture3D scattering;
+layout(set = 0, binding = 5) uniform Table {
+  ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
+  ivec4 order;  // unused here
+} table;
+layout(set = 0, binding = 6, rgba16f) uniform writeonly image3D aerial_scattering;
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image3D aerial_transmittance;
+
+void main() {
+  const ivec3 size = imageSize(aerial_scattering);
+  const ivec3 texel = ivec3(gl_GlobalInvocationID.xyz);
+  if (any(greaterThanEqual(texel, size))) return;
+  const vec2 ndc = vec2((float(texel.x) + 0.5) / float(size.x) * 2.0 - 1.0, 1.0 - (float(texel.y) + 0.5) / float(size.y) * 2.0);
+  const vec3 direction = normalize(view_ray(frame.view, ndc));
+  const SkyFrame sky = SkyFrame(frame.planet_up.xyz, frame.planet_up.w, frame.toward_sun.xyz, frame.toward_sun.w);
+  const float mu = clamp(dot(direction, sky.up), -1.0, 1.0);
+  const float nu = clamp(dot(direction, sky.toward_sun), -1.0, 1.0);
+  const float len = min((float(texel.z) + 0.5) * frame.volume.x, distance_to_boundary(atmosphere.a, sky.r, mu));
+  const BrunetonRadiance air =
+      bruneton_sky_radiance_to_point(atmosphere.a, transmittance, scattering, nearest, table.size, sky.r, mu, sky.mu_s, nu, len);
+  // Without a sun the in-scattering is nothing and the transmittance the air's.
+  const vec3 radiance = frame.volume.y > 0.0 ? max(air.radiance, vec3(0.0)) : vec3(0.0);
+  imageStore(aerial_scattering, texel, vec4(radiance, 1.0));
+  imageStore(aerial_transmittance, texel, vec4(air.transmittance, 1.0));
+}
