@@ -231,6 +231,11 @@ class Loader {
       for (const auto& item : inputs->json().items()) {
         const std::string slot = item.key();
         const Node in = inputs->child(slot);
+        // null unwires what an included file wired (an optional input a variant leaves unread).
+        if (in.json().is_null()) {
+          std::erase_if(p.inputs, [&](const InputWiring& w) { return w.slot == slot; });
+          continue;
+        }
         const auto source = in.string();
         if (!source) continue;
         std::erase_if(p.inputs, [&](const InputWiring& w) { return w.slot == slot; });

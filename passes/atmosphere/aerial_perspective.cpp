@@ -81,6 +81,9 @@ class AerialPerspectiveExecution final : public PassExecution {
     using rhi::BindGroupEntry;
     const GpuAerialPerspectiveFrame frame = aerial_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
+    // The volumes' frame for their readers, whichever variant fills them.
+    const GpuAerialLookup lookup = aerial_lookup(c);
+    c.encoder.update_buffer(c.buffer(t_.lookup), 0, std::as_bytes(std::span(&lookup, 1)));
     if (bruneton_) {
       record_bruneton(c);
       return;
@@ -93,8 +96,6 @@ class AerialPerspectiveExecution final : public PassExecution {
          BindGroupEntry::of(7, c.view(t_.aerial_transmittance))});
     const Extent size = c.extent(t_.aerial_scattering);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, size.depth});
-    const GpuAerialLookup lookup = aerial_lookup(c);
-    c.encoder.update_buffer(c.buffer(t_.lookup), 0, std::as_bytes(std::span(&lookup, 1)));
   }
 
  private:

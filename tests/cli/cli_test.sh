@@ -327,6 +327,13 @@ got: $(cat "$tmp/err")"
       done
     done
     configs=$(cd "$(dirname "$config")" && pwd)
+    # Bruneton's variant of the same demo: an amendment unwires (null) the Hillaire LUTs the
+    # bruneton variants do not read, so the compiler culls them.
+    "$volgraph" plan "$configs/demo_atmosphere_noon_bruneton.json" >"$tmp/plan" || fail "plan of the bruneton demo"
+    for pass in atmosphere_multiscattering atmosphere_sky_view; do
+      grep -q "^  $pass  unused" "$tmp/plan" || fail "$pass is not culled under the bruneton variants: $(cat "$tmp/plan")"
+    done
+    grep -q "^  [0-9]*\. atmosphere_bruneton/direct_irradiance " "$tmp/plan" || fail "no atmosphere_bruneton_tables in the bruneton demo's plan"
     printf '{ "include": ["%s/scenes/primitives.json", "%s/graphs/atmosphere.json"] }' "$configs" "$configs" >"$tmp/no_air.json"
     "$volgraph" plan "$tmp/no_air.json" >"$tmp/plan" || fail "plan without an atmosphere: $(cat "$tmp/plan")"
     for pass in atmosphere_transmittance atmosphere_multiscattering atmosphere_sky_view atmosphere_aerial sky air; do

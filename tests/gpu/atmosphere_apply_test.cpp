@@ -7,7 +7,8 @@
 //   and the ramp in front of the first texel), the distance from the read-back depth and the
 //   volume interpolated on the CPU: an emissive sphere around the camera, once past the
 //   first texel (radius 2.5 slices) and once inside the ramp (0.2 slice), within two fp16
-//   steps plus the depth's float rounding;
+//   steps plus the depth's float rounding; the same with the volumes of the bruneton
+//   variant (its lookup frame written as the hillaire variant's);
 // - sky pixels (nothing drawn) keep the sky's colour exactly.
 #include <algorithm>
 #include <cmath>
@@ -42,8 +43,13 @@ std::string plane_config() {
 // A sphere of `radius` m around the camera, emitting radiance 1 and reflecting nothing,
 // seen through the air; the aerial-perspective volume as large as the frame (each pixel
 // centre a column's centre), 8 slices over 8 km.
-std::string sphere_config(double radius) {
+std::string sphere_config(double radius, const std::string& variant) {
   const std::string r = std::to_string(radius);
+  const std::string bruneton = variant == "bruneton" ? R"(
+    { "name": "tables", "type": "atmosphere_bruneton_tables", "params": { "nu": 4, "nu_mu_s": 32, "mu": 16, "r": 4, "orders": 2 },
+      "inputs": { "transmittance": "lut.transmittance" } },)" : "";
+  const std::string volume_inputs = variant == "bruneton" ? R"("scattering": "tables.scattering")" : R"("multiscattering": "ms.multiscattering")";
+  const std::string volume_params = variant == "bruneton" ? R"(, "nu": 4)" : "";
   return std::string(R"({ "output": { "size": [16, 16] },
   "scene": { "camera": { "position": [0, 2, 0], "target": [0, 2.5, -10], "fov_y_deg": 60, "near": 0.5, "far": 20000 },
              "materials": { "glow": { "albedo": [0, 0, 0], "emissive": [1, 1, 1] } },
@@ -54,9 +60,10 @@ std::string sphere_config(double radius) {
   "graph": { "passes": [
     { "name": "lit", "type": "scene" },
     { "name": "lut", "type": "atmosphere_transmittance_lut" },
-    { "name": "ms", "type": "atmosphere_multiscattering_lut", "inputs": { "transmittance": "lut.transmittance" } },
-    { "name": "aerial", "type": "atmosphere_aerial_perspective", "params": { "resolution": 16, "slices": 8, "distance": 8000 },
-      "inputs": { "transmittance": "lut.transmittance", "multiscattering": "ms.multiscattering" } },
+    { "name": "ms", "type": "atmosphere_multiscattering_lut", "inputs": { "transmittance": "lut.transmittance" } },)" + bruneton + R"(
+    { "name": "aerial", "type": "atmosphere_aerial_perspective", "variant": ")" + variant + R"(",
+      "params": { "resolution": 16, "slices": 8, "distance": 8000)" + volume_params + R"( },
+      "inputs": { "transmittance": "lut.transmittance", )" + volume_inputs + R"( } },
     { "name": "air", "type": "aerial_perspective_apply",
       "inputs": { "color": "lit.color", "depth": "lit.depth", "aerial_scattering": "aerial.aerial_scattering",
                   "aerial_transmittance": "aerial.aerial_transmittance", "lookup": "aerial.lookup" } } ],
@@ -146,9 +153,9 @@ void expect_apply_matches_its_twin(Executor& executor, const Scene& scene, doubl
 }
 
 TEST_P(AtmosphereApply, ReadsTheAirAtEachSurfacesDistance) {
-  for (const double radius : {2500.0, 100.0}) {
-    SCOPED_TRACE("sphere radius " + std::to_string(radius));
-    const LoadedConfig config = load(sphere_config(radius));
+  for (const auto& [radius, variant] : {std::pair{2500.0, "hillaire"}, {100.0, "hillaire"}, {2500.0, "bruneton"}}) {
+    SCOPED_TRACE("sphere radius " + std::to_string(radius) + ", " + variant);
+    const LoadedConfig config = load(sphere_config(radius, variant));
     Executor executor(device(), config.graph, &config.config.scene, {});
     executor.run_frame();
     expect_apply_matches_its_twin(executor, config.config.scene, radius, 8000);
