@@ -99,16 +99,10 @@ class AerialPerspectiveExecution final : public PassExecution {
   }
 
  private:
-  // The scattering table's shape: nu slices of mu_s texels in x, mu in y, r in z.
+  // bruneton: the scattering table's shape (its nu slices a parameter, as the tables').
   GpuBrunetonTableParams table_shape(const PassSetup& s) const {
     const Extent e = s.extent(t_.scattering);
-    const int32_t nu = int32_t(s.param(t_.nu));
-    GpuBrunetonTableParams shape{};
-    shape.size[0] = nu;
-    shape.size[1] = std::max<int32_t>(1, int32_t(e.width) / nu);
-    shape.size[2] = int32_t(e.height);
-    shape.size[3] = int32_t(e.depth);
-    return shape;
+    return bruneton_table_shape(e.width, e.height, e.depth, s.param(t_.nu));
   }
 
   void record_bruneton(PassContext& c) const {

@@ -144,16 +144,10 @@ class SkyExecution final : public PassExecution {
     return {c.view(t_.sky_view), c.view(has_multiscattering(c) ? t_.multiscattering : t_.sky_view)};
   }
 
-  // bruneton: the scattering table's shape, nu slices of mu_s texels in x, mu in y, r in z.
+  // bruneton: the scattering table's shape (its nu slices a parameter, as the tables').
   GpuBrunetonTableParams table_shape(const PassSetup& s) const {
     const Extent e = s.extent(t_.scattering);
-    const int32_t slices = int32_t(s.param(t_.nu));
-    GpuBrunetonTableParams shape{};
-    shape.size[0] = slices;
-    shape.size[1] = std::max<int32_t>(1, int32_t(e.width) / slices);
-    shape.size[2] = int32_t(e.height);
-    shape.size[3] = int32_t(e.depth);
-    return shape;
+    return bruneton_table_shape(e.width, e.height, e.depth, s.param(t_.nu));
   }
 
   bool has_multiscattering(const PassContext& c) const { return c.bound(t_.multiscattering); }
