@@ -54,6 +54,8 @@ options (reference; ab, sweep and tune for their CPU reference):
   --spp N                      samples per pixel on a regular sub-pixel grid, N a square (1, 4, 9, …);
                                default 1: pixel centres, as the GPU samples
   --tolerance X                relative error allowed in each stretch of the media integral (default 1e-5)
+  --paths N                    Monte Carlo paths a ray for the atmosphere's scattering orders past the first
+                               (default 64; 0: single scattering alone, exact to the quadrature)
 
 options (render, ab):
   --backend vulkan|webgpu      default vulkan; webgpu: Dawn (its Vulkan backend on lavapipe here)
@@ -134,6 +136,13 @@ int samples_per_axis(const std::string& text) {
   return int(root);
 }
 
+// --paths N: the atmosphere's Monte Carlo paths a ray, a whole number in [0, 65536].
+int path_count(const std::string& text) {
+  const std::optional<unsigned long> n = digits_value(text, 65536);
+  if (!n) throw UsageError("--paths expects a whole number in [0, 65536], got " + quoted(text));
+  return int(*n);
+}
+
 double tolerance_value(const std::string& text) {
   char* end = nullptr;
   const double tolerance = std::strtod(text.c_str(), &end);
@@ -192,6 +201,7 @@ void reference_options(CLI::App& app, Args& args) {
   value_option(app, "--threads", [&](const std::string& v) { args.threads = int(count_value("--threads", v, kMaxThreads)); });
   value_option(app, "--spp", [&](const std::string& v) { args.samples_per_axis = samples_per_axis(v); });
   value_option(app, "--tolerance", [&](const std::string& v) { args.tolerance = tolerance_value(v); });
+  value_option(app, "--paths", [&](const std::string& v) { args.atmosphere_paths = path_count(v); });
 }
 
 namespace {

@@ -51,6 +51,7 @@ struct Args {
   int threads = 0;             // reference: 0 for the hardware's
   int samples_per_axis = 1;    // reference: √spp
   double tolerance = 1e-5;     // reference: the media integral's relative tolerance
+  int atmosphere_paths = 64;   // reference: Monte Carlo paths a ray for the atmosphere's orders ≥ 2 (0: single scattering)
   bool timings = false, validation = false;
   std::string timings_out;
   std::vector<std::string> dumps;
@@ -75,7 +76,7 @@ void plan_options(CLI::App& app, Args& args);       // --json --dot
 void output_option(CLI::App& app, Args& args);      // -o/--output OUT
 void render_options(CLI::App& app, Args& args);     // --backend --device --frames --timings --timings-out
                                                     // --validation --dump
-void reference_options(CLI::App& app, Args& args);  // --threads --spp --tolerance
+void reference_options(CLI::App& app, Args& args);  // --threads --spp --tolerance --paths
 void ab_options(CLI::App& app, Args& args);         // --pass --a --b --a-graph --b-graph --reference
 void timing_options(CLI::App& app, Args& args);     // --runs --warmup
 void sweep_options(CLI::App& app, Args& args);      // --point --reference --emit-jobs --merge --size --backend --device --validation

@@ -275,7 +275,7 @@ int run_ab(const Args& args, const PassRegistry& registry) {
   } else {
     const auto start = std::chrono::steady_clock::now();
     const RgbImage ref = c.reference == "cpu"
-                             ? render_reference(a.loaded, {unsigned(args.threads), args.tolerance, uint32_t(args.samples_per_axis)})
+                             ? render_reference(a.loaded, {unsigned(args.threads), args.tolerance, uint32_t(args.samples_per_axis), uint32_t(args.atmosphere_paths)})
                              : read_reference_image(c.reference, size.width, size.height, "--reference");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::string command = c.reference == "cpu" ? reference_command(args, size, "reference.pfm") : "(the image " + c.reference + ")";
@@ -303,7 +303,7 @@ RgbImage sweep_reference(const Args& args, const SweepSpec& spec, const LoadedCo
   std::error_code ec;
   if (fs::exists(kept, ec)) return read_reference_image(kept, spec.size.width, spec.size.height, "the kept reference");
   std::cerr << "sweep: rendering the CPU reference at " << spec.size.width << "x" << spec.size.height << "\n";
-  const RgbImage ref = render_reference(base, {unsigned(args.threads), args.tolerance, uint32_t(args.samples_per_axis)});
+  const RgbImage ref = render_reference(base, {unsigned(args.threads), args.tolerance, uint32_t(args.samples_per_axis), uint32_t(args.atmosphere_paths)});
   write_image(kept, Image{ref.width, ref.height, rgba_from_rgb(ref)}, "-o");
   return ref;
 }

@@ -35,6 +35,7 @@
 #include "passes/passes.h"
 #include "reference/image_render.h"
 #include "reference/media.h"
+#include "reference/atmosphere_reference.h"
 #include "reference/renderer.h"
 
 namespace volgraph {
@@ -276,7 +277,9 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
   try {
     reference::IntegrationSettings integration;
     integration.relative_tolerance = args.tolerance;
-    renderer.emplace(loaded.config.scene, integration);
+    reference::AtmosphereReferenceSettings atmosphere;
+    atmosphere.samples = uint32_t(args.atmosphere_paths);
+    renderer.emplace(loaded.config.scene, integration, atmosphere);
     if (const std::string why = renderer->media().under_resolved(); !why.empty()) std::cerr << "volgraph reference: warning: " << why << "\n";
   } catch (const std::runtime_error& e) {  // a model or texture the loader accepted but cannot be read now
     throw ConfigError({{{args.config, "/scene", 0}, e.what()}});

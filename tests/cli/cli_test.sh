@@ -327,6 +327,13 @@ got: $(cat "$tmp/err")"
       done
     done
     configs=$(cd "$(dirname "$config")" && pwd)
+    # The reference's Monte Carlo paths for the air's higher orders: 0 leaves single
+    # scattering alone (a darker sky), a bad count is refused with exit 2 and no image.
+    "$volgraph" reference "$configs/tests/atmosphere_sky.json" --size 8x4 --paths 0 -o "$tmp/single.pfm" 2>/dev/null || fail "reference --paths 0"
+    "$volgraph" reference "$configs/tests/atmosphere_sky.json" --size 8x4 --paths 4 -o "$tmp/orders.pfm" 2>/dev/null || fail "reference --paths 4"
+    ! cmp -s "$tmp/single.pfm" "$tmp/orders.pfm" || fail "--paths changes nothing"
+    code=0; "$volgraph" reference "$configs/tests/atmosphere_sky.json" --paths -1 -o "$tmp/bad.pfm" 2>"$tmp/err" || code=$?
+    [ "$code" -eq 2 ] && [ ! -e "$tmp/bad.pfm" ] && grep -q -- "--paths expects" "$tmp/err" || fail "--paths -1: exit $code, $(cat "$tmp/err")"
     # Bruneton's variant of the same demo: an amendment unwires (null) the Hillaire LUTs the
     # bruneton variants do not read, so the compiler culls them.
     "$volgraph" plan "$configs/demo_atmosphere_noon_bruneton.json" >"$tmp/plan" || fail "plan of the bruneton demo"

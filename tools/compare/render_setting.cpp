@@ -4,6 +4,7 @@
 
 #include "graph/diagnostics.h"
 #include "graph/execute/executor.h"
+#include "reference/atmosphere_reference.h"
 #include "reference/image_render.h"
 #include "reference/pixel_masks.h"
 #include "reference/renderer.h"
@@ -97,7 +98,9 @@ std::string clock_note(const rhi::Device& device) {
 RgbImage render_reference(const LoadedConfig& loaded, const ReferenceSettings& settings) {
   reference::IntegrationSettings integration;
   integration.relative_tolerance = settings.tolerance;
-  const reference::Renderer renderer(loaded.config.scene, integration);
+  reference::AtmosphereReferenceSettings atmosphere;
+  atmosphere.samples = settings.atmosphere_paths;
+  const reference::Renderer renderer(loaded.config.scene, integration, atmosphere);
   const Extent size = loaded.config.output_size;
   const reference::ReferenceImage image = reference::render_image(
       renderer, {.width = size.width, .height = size.height, .samples_per_axis = settings.samples_per_axis, .threads = settings.threads});

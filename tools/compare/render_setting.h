@@ -48,6 +48,7 @@ struct ReferenceSettings {
   unsigned threads = 0;
   double tolerance = 1e-5;
   uint32_t samples_per_axis = 1;
+  uint32_t atmosphere_paths = 64;  // the atmosphere's Monte Carlo paths a ray (orders ≥ 2)
 };
 RgbImage render_reference(const LoadedConfig& loaded, const ReferenceSettings& settings);
 
