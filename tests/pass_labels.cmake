@@ -164,3 +164,12 @@ pass_tests(atmosphere_transmittance_lut "(^|/)AtmosphereBruneton\\.")
 pass_tests(atmosphere_aerial_perspective "(^|/)AtmosphereBruneton\\.AerialPerspective")
 pass_tests(sky "(^|/)AtmosphereBruneton\\.SkyPass")
 pass_tests(scene "(^|/)AtmosphereBruneton\\.SkyPass")
+
+# tests/gpu/atmosphere_apply_test.cpp: scene (lit through the air), and scene → the LUTs →
+# atmosphere_aerial_perspective (both variants) → aerial_perspective_apply.
+pass_tests(scene "(^|/)AtmosphereApply\\.")
+pass_tests(aerial_perspective_apply "(^|/)AtmosphereApply\\.ReadsTheAir")
+pass_tests(atmosphere_aerial_perspective "(^|/)AtmosphereApply\\.ReadsTheAir")
+pass_tests(atmosphere_transmittance_lut "(^|/)AtmosphereApply\\.ReadsTheAir")
+pass_tests(atmosphere_multiscattering_lut "(^|/)AtmosphereApply\\.ReadsTheAir")
+pass_tests(atmosphere_bruneton_tables "(^|/)AtmosphereApply\\.ReadsTheAir")
