@@ -290,8 +290,8 @@ BrunetonRadiance sky_radiance_to_point(const Atmosphere& a, const BrunetonTables
   const double r_p = clamp_radius(a, radius_at(r, mu, d));
   const double mu_p = clamp_cosine((r * mu + d) / r_p), mu_s_p = clamp_cosine((r * mu_s + d * nu) / r_p);
   const RayleighAndMie s_p = scattering_at(a, tables, r_p, mu_p, mu_s_p, nu, hits_ground);
-  // Bruneton 2017's smoothstep on the single Mie term against artefacts below the horizon.
   const Vec3 rayleigh = axpy(s.rayleigh, -1, times(out.transmittance, s_p.rayleigh));
+  // Bruneton 2017's smoothstep on the single Mie term against artefacts below the horizon.
   const Vec3 mie = times(axpy(s.mie, -1, times(out.transmittance, s_p.mie)), smoothstep(0.0, 0.01, mu_s));
   out.radiance = with_phases(a, rayleigh, mie, nu);
   return out;
