@@ -51,16 +51,27 @@ Vec3 sun_transmittance_from(const Atmosphere& a, const TransmittanceToTop& t, do
   return times(top_transmittance(a, t, r, mu_s), fraction);
 }
 
-// Bruneton 2017, GetCombinedScattering: the combined texel (rgb Rayleigh + orders ≥ 2,
-// alpha single Mie's red) at (r, mu, mu_s, nu), two trilinear lookups blended in nu.
-std::array<double, 4> combined_scattering(const Atmosphere& a, const BrunetonTables& tables, double r, double mu, double mu_s, double nu,
-                                          bool ray_hits_ground) {
-  const ScatteringUvwz uvwz = scattering_uvwz(a, r, mu, mu_s, nu, ray_hits_ground, tables.size);
-  const ScatteringLookup at = scattering_lookup_coords(uvwz, tables.size);
-  const std::array<double, 4> s0 = tables.scattering->sample(at.x0, at.y, at.z), s1 = tables.scattering->sample(at.x1, at.y, at.z);
-  std::array<double, 4> out{};
-  for (int c = 0; c < 4; ++c) out[size_t(c)] = s0[size_t(c)] * (1 - at.lerp) + s1[size_t(c)] * at.lerp;
+// Bruneton 2017, GetScattering: a table's rgb at (r, mu, mu_s, nu), two trilinear lookups
+// blended in nu.
+Vec3 table_scattering(const Atmosphere& a, const BrunetonTableSize& size, const BrunetonTable& table, double r, double mu, double mu_s,
+                      double nu, bool ray_hits_ground) {
+  const ScatteringUvwz uvwz = scattering_uvwz(a, r, mu, mu_s, nu, ray_hits_ground, size);
+  const ScatteringLookup at = scattering_lookup_coords(uvwz, size);
+  const std::array<double, 4> s0 = table.sample(at.x0, at.y, at.z), s1 = table.sample(at.x1, at.y, at.z);
+  Vec3 out{};
+  for (size_t c = 0; c < 3; ++c) out[c] = s0[c] * (1 - at.lerp) + s1[c] * at.lerp;
   return out;
+}
+
+// Bruneton 2017, GetSkyRadiance's two lookups (separate textures): the Rayleigh + orders ≥ 2
+// and the single Mie scattering at (r, mu, mu_s, nu).
+struct RayleighAndMie {
+  Vec3 rayleigh, mie;
+};
+RayleighAndMie scattering_at(const Atmosphere& a, const BrunetonTables& tables, double r, double mu, double mu_s, double nu,
+                             bool ray_hits_ground) {
+  return {table_scattering(a, tables.size, *tables.scattering, r, mu, mu_s, nu, ray_hits_ground),
+          table_scattering(a, tables.size, *tables.single_mie_scattering, r, mu, mu_s, nu, ray_hits_ground)};
 }
 
 // Rayleigh rgb · p_R(nu) + Mie rgb · p_M(nu) (Bruneton 2017, GetSkyRadiance's return).
@@ -230,17 +241,6 @@ Vec3 direct_irradiance(const Atmosphere& a, const TransmittanceToTop& t, double 
   return times(top_transmittance(a, t, r, mu_s), cosine);
 }
 
-Vec3 extrapolated_single_mie(const Atmosphere& a, const std::array<double, 4>& combined) {
-  // Bruneton 2017, GetExtrapolatedSingleMieScattering (Bruneton & Neyret 2008, Eq. 7).
-  if (combined[0] <= 0) return {0, 0, 0};
-  Vec3 out{};
-  for (size_t c = 0; c < 3; ++c) {
-    out[c] = combined[c] * combined[3] / combined[0] * (a.rayleigh_scattering[0] / a.mie_scattering[0]) *
-             (a.mie_scattering[c] / a.rayleigh_scattering[c]);
-  }
-  return out;
-}
-
 BrunetonRadiance sky_radiance(const Atmosphere& a, const BrunetonTables& tables, const Vec3& camera_in, const Vec3& view_ray,
                               const Vec3& sun_direction) {
   // Bruneton 2017, GetSkyRadiance: a camera in space first moves to the top along its ray.
@@ -259,8 +259,8 @@ BrunetonRadiance sky_radiance(const Atmosphere& a, const BrunetonTables& tables,
   const double nu = clamp_cosine(dot3(view_ray, sun_direction));
   const bool hits_ground = ray_hits_ground(a, r, mu);
   out.transmittance = hits_ground ? Vec3{0, 0, 0} : top_transmittance(a, tables.transmittance, r, mu);
-  const std::array<double, 4> s = combined_scattering(a, tables, r, mu, mu_s, nu, hits_ground);
-  out.radiance = with_phases(a, {s[0], s[1], s[2]}, extrapolated_single_mie(a, s), nu);
+  const RayleighAndMie s = scattering_at(a, tables, r, mu, mu_s, nu, hits_ground);
+  out.radiance = with_phases(a, s.rayleigh, s.mie, nu);
   return out;
 }
 
@@ -286,16 +286,14 @@ BrunetonRadiance sky_radiance_to_point(const Atmosphere& a, const BrunetonTables
   const double d = length3(axpy(point, -1, camera));
   const bool hits_ground = ray_hits_ground(a, r, mu);
   out.transmittance = transmittance_between(a, tables.transmittance, r, mu, d, hits_ground);
-  const std::array<double, 4> s = combined_scattering(a, tables, r, mu, mu_s, nu, hits_ground);
+  const RayleighAndMie s = scattering_at(a, tables, r, mu, mu_s, nu, hits_ground);
   const double r_p = clamp_radius(a, radius_at(r, mu, d));
   const double mu_p = clamp_cosine((r * mu + d) / r_p), mu_s_p = clamp_cosine((r * mu_s + d * nu) / r_p);
-  const std::array<double, 4> s_p = combined_scattering(a, tables, r_p, mu_p, mu_s_p, nu, hits_ground);
-  std::array<double, 4> between{};
-  for (size_t c = 0; c < 3; ++c) between[c] = s[c] - out.transmittance[c] * s_p[c];
-  between[3] = s[3] - out.transmittance[0] * s_p[3];
+  const RayleighAndMie s_p = scattering_at(a, tables, r_p, mu_p, mu_s_p, nu, hits_ground);
+  const Vec3 rayleigh = axpy(s.rayleigh, -1, times(out.transmittance, s_p.rayleigh));
   // Bruneton 2017's smoothstep on the single Mie term against artefacts below the horizon.
-  const Vec3 mie = times(extrapolated_single_mie(a, between), smoothstep(0.0, 0.01, mu_s));
-  out.radiance = with_phases(a, {between[0], between[1], between[2]}, mie, nu);
+  const Vec3 mie = times(axpy(s.mie, -1, times(out.transmittance, s_p.mie)), smoothstep(0.0, 0.01, mu_s));
+  out.radiance = with_phases(a, rayleigh, mie, nu);
   return out;
 }
 

@@ -6,8 +6,9 @@
 //   (x = nu_index · mu_s_size + mu_s texel), mu in y with the horizon at v = 1/2 (rays that
 //   hit the ground below it, those that reach the top above it), r in z. Each texel holds
 //   the scattering for a sun of unit irradiance (E = 1) without the phase functions:
-//   Rayleigh (plus the higher orders divided by the Rayleigh phase) in rgb, single Mie's
-//   red in alpha ("combined" textures; the other Mie channels are extrapolated).
+//   Rayleigh (plus the higher orders divided by the Rayleigh phase) in rgb. Single Mie
+//   (rgb) is a table of its own, the same shape (Bruneton 2017 without
+//   COMBINED_SCATTERING_TEXTURES: no extrapolation of its green and blue from its red).
 // - Irradiance: the sky's irradiance on a horizontal surface (orders ≥ 1 of the light
 //   reaching it indirectly) by (r, mu_s), both affine.
 // The transmittance table is physics/atmosphere_lut.h's (the same parametrisation).
@@ -79,7 +80,8 @@ using TransmittanceToTop = std::function<Vec3(double r, double mu)>;
 // What the lookups read.
 struct BrunetonTables {
   BrunetonTableSize size;
-  const BrunetonTable* scattering = nullptr;  // size.width() × mu × r
+  const BrunetonTable* scattering = nullptr;             // size.width() × mu × r: Rayleigh + orders ≥ 2 (rgb)
+  const BrunetonTable* single_mie_scattering = nullptr;  // the same shape: single Mie (rgb)
   const BrunetonTable* irradiance = nullptr;  // irradiance_width × irradiance_height
   TransmittanceToTop transmittance;
 };
@@ -101,21 +103,17 @@ SingleScattering single_scattering(const Atmosphere& atmosphere, const Transmitt
 // (r, mu_s) for a sun of unit irradiance (the average cosine over its visible disk).
 Vec3 direct_irradiance(const Atmosphere& atmosphere, const TransmittanceToTop& transmittance, double r, double mu_s);
 
-// Bruneton 2017, GetExtrapolatedSingleMieScattering: single Mie rgb from the combined
-// texel's rgb and alpha.
-Vec3 extrapolated_single_mie(const Atmosphere& atmosphere, const std::array<double, 4>& combined);
-
 // A lookup's result: radiance per unit E toward the camera and the transmittance.
 struct BrunetonRadiance {
   Vec3 radiance{0, 0, 0};
   Vec3 transmittance{1, 1, 1};
 };
-// Bruneton 2017, GetSkyRadiance (no light shafts): the sky along unit `view_ray` from
+// Bruneton 2017, GetSkyRadiance (no light shafts, separate single Mie): the sky along unit `view_ray` from
 // `camera` (planet frame, the centre at the origin; above the top it enters first),
 // toward unit `sun_direction`; the transmittance to the ray's end (0 where it hits the ground).
 BrunetonRadiance sky_radiance(const Atmosphere& atmosphere, const BrunetonTables& tables, const Vec3& camera, const Vec3& view_ray,
                               const Vec3& sun_direction);
-// Bruneton 2017, GetSkyRadianceToPoint (no light shafts): the air between `camera` and `point`.
+// Bruneton 2017, GetSkyRadianceToPoint (no light shafts, separate single Mie): the air between `camera` and `point`.
 BrunetonRadiance sky_radiance_to_point(const Atmosphere& atmosphere, const BrunetonTables& tables, const Vec3& camera,
                                        const Vec3& point, const Vec3& sun_direction);
 // Bruneton 2017, GetSunAndSkyIrradiance: at `point` on a surface of unit `normal`, the sun's

@@ -21,6 +21,7 @@ layout(set = 0, binding = 1) uniform Frame {
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4) uniform texture3D scattering;
+layout(set = 0, binding = 8) uniform texture3D single_mie_scattering;  // single Mie (rgb), same shape
 layout(set = 0, binding = 5) uniform Table {
   ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
   ivec4 order;  // unused here
@@ -39,7 +40,7 @@ void main() {
   const float nu = clamp(dot(direction, sky.toward_sun), -1.0, 1.0);
   const float len = min((float(texel.z) + 0.5) * frame.volume.x, distance_to_boundary(atmosphere.a, sky.r, mu));
   const BrunetonRadiance air =
-      bruneton_sky_radiance_to_point(atmosphere.a, transmittance, scattering, nearest, table.size, sky.r, mu, sky.mu_s, nu, len);
+      bruneton_sky_radiance_to_point(atmosphere.a, transmittance, scattering, single_mie_scattering, nearest, table.size, sky.r, mu, sky.mu_s, nu, len);
   // Without a sun the in-scattering is nothing and the transmittance the air's.
   const vec3 radiance = frame.volume.y > 0.0 ? max(air.radiance, vec3(0.0)) : vec3(0.0);
   imageStore(aerial_scattering, texel, vec4(radiance, 1.0));

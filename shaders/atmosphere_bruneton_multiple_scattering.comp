@@ -4,7 +4,7 @@
 // toward the texel's point from its ray (Bruneton 2017, ComputeMultipleScatteringTexture:
 // the density of order n times the transmittance, 50 trapezoids to the nearest boundary)
 // into delta_multiple, and the scattering sum's next value: the previous one plus it over
-// the Rayleigh phase (the combined texel's rgb is read with p_R(nu) at lookup).
+// the Rayleigh phase (the table's rgb is read with p_R(nu) at lookup).
 #include "include/atmosphere_bruneton.glsl"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;

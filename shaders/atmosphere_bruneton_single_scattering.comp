@@ -3,8 +3,8 @@
 // atmosphere_bruneton_tables/single_scattering: per scattering texel (r, mu, mu_s, nu), the
 // Rayleigh and Mie single scattering for a sun of unit irradiance without the phases
 // (Bruneton 2017, ComputeSingleScatteringTexture: 50 trapezoids to the nearest boundary)
-// into delta_rayleigh and delta_mie, and the scattering sum started as the combined texel
-// (Rayleigh rgb, Mie red in alpha).
+// into delta_rayleigh and delta_mie, the scattering sum started as Rayleigh (rgb), and the
+// single Mie table (rgb: Bruneton 2017 without COMBINED_SCATTERING_TEXTURES).
 #include "include/atmosphere_bruneton.glsl"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
@@ -19,6 +19,7 @@ layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image3D delta_rayleigh;
 layout(set = 0, binding = 5, rgba32f) uniform writeonly image3D delta_mie;
 layout(set = 0, binding = 6, rgba32f) uniform writeonly image3D scattering_sum;
+layout(set = 0, binding = 7, rgba32f) uniform writeonly image3D single_mie_scattering;
 
 
 void main() {
@@ -45,5 +46,6 @@ void main() {
   mie *= dx * a.mie_scattering.rgb;
   imageStore(delta_rayleigh, texel, vec4(rayleigh, 1.0));
   imageStore(delta_mie, texel, vec4(mie, 1.0));
-  imageStore(scattering_sum, texel, vec4(rayleigh, mie.r));
+  imageStore(scattering_sum, texel, vec4(rayleigh, 0.0));
+  imageStore(single_mie_scattering, texel, vec4(mie, 0.0));
 }

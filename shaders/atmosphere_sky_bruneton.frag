@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // sky, variant bruneton: where the depth is at the far plane, the sky from Bruneton 2017's
-// precomputed scattering table in the pixel's direction (include/atmosphere_bruneton.glsl:
+// precomputed scattering and single Mie tables in the pixel's direction (include/atmosphere_bruneton.glsl:
 // GetSkyRadiance, a camera above the atmosphere entering it first), plus the sun's disk
 // through the transmittance LUT (include/atmosphere_sky_lookup.glsl) and the Lambertian
 // ground lit by the sun and the sky's irradiance table (GetSunAndSkyIrradiance) times the
@@ -16,8 +16,9 @@ layout(set = 0, binding = 4) uniform sampler nearest;
 layout(set = 0, binding = 5) uniform texture2D transmittance;
 // The variant's own inputs (passes/atmosphere/sky.cpp variant_inputs), then its table's shape.
 layout(set = 0, binding = 8) uniform texture3D scattering;
-layout(set = 0, binding = 9) uniform texture2D irradiance;
-layout(set = 0, binding = 10) uniform Table {
+layout(set = 0, binding = 9) uniform texture3D single_mie_scattering;
+layout(set = 0, binding = 10) uniform texture2D irradiance;
+layout(set = 0, binding = 11) uniform Table {
   ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
   ivec4 order;  // unused here
 } table;
@@ -48,7 +49,7 @@ void main() {
   const SkyFrame sky = sky_frame(frame.f, false);  // the camera's radius as it is: the lookups enter from space
   const float mu = clamp(dot(direction, sky.up), -1.0, 1.0);
   const float nu = clamp(dot(direction, sky.toward_sun), -1.0, 1.0);
-  vec3 radiance = bruneton_sky_radiance(a, transmittance, scattering, nearest, table.size, sky.r, mu, sky.mu_s, nu).radiance;
+  vec3 radiance = bruneton_sky_radiance(a, transmittance, scattering, single_mie_scattering, nearest, table.size, sky.r, mu, sky.mu_s, nu).radiance;
   radiance = max(radiance, vec3(0.0));
   if (options.sun_disk) radiance += sun_disk_radiance(a, transmittance, nearest, sky, direction, options.angular_radius, options.limb_darkening);
   if (options.ground) radiance += bruneton_ground(a, sky.r, mu, sky.mu_s, nu);

@@ -8,7 +8,7 @@
 // (include/atmosphere_aerial_lookup.glsl, with the volumes' frame this pass writes to
 // `lookup`). 32 × 32 × 32 over 32 km as Hillaire 2020. Variant bruneton fills the same
 // volumes from Bruneton 2017's precomputed scattering table
-// (atmosphere_bruneton_tables.scattering: GetSkyRadianceToPoint, the scattering to the
+// (atmosphere_bruneton_tables.scattering and .single_mie_scattering: GetSkyRadianceToPoint, the scattering to the
 // ray's boundary from the camera less the transmittance times that from
 // the texel's point). Cached on the atmosphere and the camera. Shaders:
 // shaders/atmosphere_aerial_perspective.comp, atmosphere_aerial_perspective_bruneton.comp.
@@ -41,7 +41,7 @@ struct AerialPerspectiveTable : PassTable {
   VariantHandle hillaire = variant("hillaire", "each texel integrates its ray from the camera to its slice (Hillaire 2020 §5.4)", 0,
                                    {"multiscattering"});
   VariantHandle bruneton = variant("bruneton", "each texel from two lookups in Bruneton 2017's scattering table (GetSkyRadianceToPoint)", 0,
-                                   {"scattering"});
+                                   {"scattering", "single_mie_scattering"});
   // Parameters.
   ParamHandle<int64_t> resolution = integer("resolution", 32, 2, 512, "texels", "columns per side through the frame");
   ParamHandle<int64_t> slices = integer("slices", 32, 1, 512, "", "slices along each ray");
@@ -55,6 +55,8 @@ struct AerialPerspectiveTable : PassTable {
                                               "hillaire: the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering)");
   SlotHandle scattering = optional_input("scattering", ResourceKind::texture3d, Usage::sampled,
                                          "bruneton: the scattering table (atmosphere_bruneton_tables.scattering)");
+  SlotHandle single_mie_scattering = optional_input("single_mie_scattering", ResourceKind::texture3d, Usage::sampled,
+                                                    "bruneton: the single Mie table (atmosphere_bruneton_tables.single_mie_scattering)");
   SlotHandle aerial_scattering = output("aerial_scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
                                         SizeSpec::square_layers_of("resolution", "slices"),
                                         "rgb scattered toward the camera from it to each texel, for a sun of unit illuminance");
@@ -111,7 +113,8 @@ class AerialPerspectiveExecution final : public PassExecution {
         program_.layouts[0],
         {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.transmittance)),
          BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(4, c.view(t_.scattering)),
-         BindGroupEntry::of(5, table_), BindGroupEntry::of(6, c.view(t_.aerial_scattering)), BindGroupEntry::of(7, c.view(t_.aerial_transmittance))});
+         BindGroupEntry::of(5, table_), BindGroupEntry::of(6, c.view(t_.aerial_scattering)), BindGroupEntry::of(7, c.view(t_.aerial_transmittance)),
+         BindGroupEntry::of(8, c.view(t_.single_mie_scattering))});
     const Extent size = c.extent(t_.aerial_scattering);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, size.depth});
   }

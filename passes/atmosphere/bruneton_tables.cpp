@@ -1,6 +1,7 @@
-// atmosphere_bruneton_tables (Bruneton & Neyret 2008; Bruneton 2017, Precompute): the
-// scattering table (r, mu, mu_s, nu → the combined texel: Rayleigh and the higher orders
-// in rgb, single Mie's red in alpha, for a sun of unit irradiance) and the sky's irradiance
+// atmosphere_bruneton_tables (Bruneton & Neyret 2008; Bruneton 2017, Precompute without
+// COMBINED_SCATTERING_TEXTURES): the scattering table (r, mu, mu_s, nu → Rayleigh and the
+// higher orders in rgb, for a sun of unit irradiance), the single Mie table beside it (rgb,
+// the same shape: no extrapolation of green and blue from red) and the sky's irradiance
 // table (r, mu_s), from the transmittance LUT, by iterated scattering orders. The pass runs
 // as steps the graph orders and synchronises, each one dispatch:
 //   direct_irradiance, single_scattering, then for each order n = 2 … kMaxOrders
@@ -73,7 +74,9 @@ struct BrunetonTablesTable : PassTable {
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
   SlotHandle scattering = output("scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba32_float, scattering_size(),
-                                 "per (r, mu, mu_s, nu) for a sun of unit E: Rayleigh + orders ≥ 2 over p_R (rgb), single Mie red (a)");
+                                 "per (r, mu, mu_s, nu) for a sun of unit E: Rayleigh + orders ≥ 2 over p_R (rgb)");
+  SlotHandle single_mie_scattering = output("single_mie_scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba32_float,
+                                            scattering_size(), "per (r, mu, mu_s, nu) for a sun of unit E: single Mie without its phase (rgb)");
   SlotHandle irradiance = output("irradiance", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float,
                                  SizeSpec::rect_of("irradiance_width", "irradiance_height"),
                                  "the sky's irradiance on a horizontal surface per (r, mu_s), for a sun of unit E (rgb)");
@@ -85,14 +88,14 @@ struct BrunetonTablesTable : PassTable {
   SlotHandle delta_mie = scattering_table("delta_mie", "single Mie scattering, rgb");
   SlotHandle delta_multiple = scattering_table("delta_multiple", "the last order's radiance (orders ≥ 2), rgb");
   SlotHandle density = scattering_table("density", "the radiance scattered per metre toward the ray, of the order being made");
-  std::array<SlotHandle, 2> scattering_sum = {scattering_table("scattering_sum_even", "the combined texel summed to an even order"),
-                                              scattering_table("scattering_sum_odd", "the combined texel summed to an odd order")};
+  std::array<SlotHandle, 2> scattering_sum = {scattering_table("scattering_sum_even", "the scattering texel summed to an even order"),
+                                              scattering_table("scattering_sum_odd", "the scattering texel summed to an odd order")};
   // Steps.
   StepHandle direct = step("direct_irradiance", PassKind::compute,
                            {{transmittance, Usage::sampled}, {delta_irradiance, Usage::storage_write}, {irradiance_sum[1], Usage::storage_write}});
   StepHandle single = step("single_scattering", PassKind::compute,
                            {{transmittance, Usage::sampled}, {delta_rayleigh, Usage::storage_write}, {delta_mie, Usage::storage_write},
-                            {scattering_sum[1], Usage::storage_write}});
+                            {scattering_sum[1], Usage::storage_write}, {single_mie_scattering, Usage::storage_write}});
   struct OrderSteps {
     StepHandle density, indirect, multiple;
   };
@@ -183,7 +186,7 @@ class BrunetonTablesExecution final : public PassExecution {
       dispatch(c, single_, c.extent(t_.delta_rayleigh),
                {BindGroupEntry::of(0, atmosphere_buffer_), BindGroupEntry::of(1, params_[0]), BindGroupEntry::of(2, c.view(t_.transmittance)),
                 BindGroupEntry::of(3, nearest), BindGroupEntry::of(4, c.view(t_.delta_rayleigh)), BindGroupEntry::of(5, c.view(t_.delta_mie)),
-                BindGroupEntry::of(6, c.view(t_.scattering_sum[1]))});
+                BindGroupEntry::of(6, c.view(t_.scattering_sum[1])), BindGroupEntry::of(7, c.view(t_.single_mie_scattering))});
       return;
     }
     const int orders = int(c.param(t_.orders));

@@ -54,7 +54,7 @@ struct SkyTable : PassTable {
   VariantHandle raymarch = variant("raymarch", "every pixel marches its own ray through the transmittance and multiple-scattering LUTs (Hillaire 2020's RenderSkyRayMarching), no sky-view LUT", 0,
                                    {"multiscattering"});
   VariantHandle bruneton = variant("bruneton", "the sky from Bruneton 2017's precomputed scattering table (GetSkyRadiance), the ground by its irradiance table", 0,
-                                   {"scattering", "irradiance"});
+                                   {"scattering", "single_mie_scattering", "irradiance"});
   // Parameters.
   ParamHandle<bool> sun_disk = flag("sun_disk", true, "draw the sun's disk");
   ParamHandle<bool> limb_darkening = flag("limb_darkening", false, "darken the sun's disk toward its limb (Hillaire 2016 after Neckel & Labs 1994; its irradiance stays E)");
@@ -75,6 +75,8 @@ struct SkyTable : PassTable {
                                               "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering), for raymarch and sky_view_lut's view from space");
   SlotHandle scattering = optional_input("scattering", ResourceKind::texture3d, Usage::sampled,
                                          "Bruneton 2017's scattering table (atmosphere_bruneton_tables.scattering), for bruneton");
+  SlotHandle single_mie_scattering = optional_input("single_mie_scattering", ResourceKind::texture3d, Usage::sampled,
+                                                    "Bruneton 2017's single Mie table (atmosphere_bruneton_tables.single_mie_scattering), for bruneton");
   SlotHandle irradiance = optional_input("irradiance", ResourceKind::texture2d, Usage::sampled,
                                          "Bruneton 2017's sky irradiance table (atmosphere_bruneton_tables.irradiance), for bruneton");
   // The sky is drawn onto the scene's colour where no surface is, so without an
@@ -88,7 +90,7 @@ struct SkyTable : PassTable {
 // sampler (not bruneton's); each variant's own inputs from binding 8 on (2 and 7 held the compute
 // version's colour in and out).
 constexpr uint32_t kFirstVariantBinding = 8;
-constexpr uint32_t kBrunetonTableBinding = 10;  // bruneton: its table's shape after its two inputs
+constexpr uint32_t kBrunetonTableBinding = 11;  // bruneton: its table's shape after its three inputs
 
 class SkyExecution final : public PassExecution {
  public:
@@ -138,7 +140,7 @@ class SkyExecution final : public PassExecution {
   // The variant's own inputs, in its shader's binding order from kFirstVariantBinding.
   std::vector<rhi::TextureViewId> variant_inputs(PassContext& c) const {
     if (c.variant_is(t_.raymarch)) return {c.view(t_.multiscattering)};
-    if (c.variant_is(t_.bruneton)) return {c.view(t_.scattering), c.view(t_.irradiance)};
+    if (c.variant_is(t_.bruneton)) return {c.view(t_.scattering), c.view(t_.single_mie_scattering), c.view(t_.irradiance)};
     // sky_view_lut: the multiple-scattering LUT when wired, else the sky-view LUT (a filterable
     // texture as the binding wants) in its place, never read: the frame turns the term off.
     return {c.view(t_.sky_view), c.view(has_multiscattering(c) ? t_.multiscattering : t_.sky_view)};

@@ -175,16 +175,9 @@ vec3 bruneton_transmittance(AtmosphereParameters a, texture2D lut, sampler neare
               far.b > 0.0 ? min(near.b / far.b, 1.0) : 0.0);
 }
 
-// Bruneton 2017, GetExtrapolatedSingleMieScattering (Bruneton & Neyret 2008, Eq. 7).
-vec3 bruneton_extrapolated_mie(AtmosphereParameters a, vec4 combined) {
-  if (combined.r <= 0.0) return vec3(0.0);
-  return combined.rgb * combined.a / combined.r * (a.rayleigh_scattering.r / a.mie_scattering.r) *
-         (a.mie_scattering.rgb / a.rayleigh_scattering.rgb);
-}
-
 // Rayleigh rgb · p_R(nu) + Mie rgb · p_M(nu) (Bruneton 2017, GetSkyRadiance's return).
-vec3 bruneton_with_phases(AtmosphereParameters a, vec4 combined, vec3 mie, float nu) {
-  return combined.rgb * phase_rayleigh(nu) + mie * mie_phase(a, nu);
+vec3 bruneton_with_phases(AtmosphereParameters a, vec3 rayleigh, vec3 mie, float nu) {
+  return rayleigh * phase_rayleigh(nu) + mie * mie_phase(a, nu);
 }
 
 // A camera above the atmosphere moves to the top along its ray (Bruneton 2017, GetSkyRadiance's
@@ -206,24 +199,28 @@ struct BrunetonRadiance {
   vec3 transmittance;
 };
 
-// Bruneton 2017, GetSkyRadiance (no light shafts): the camera at radius r, the view at
-// zenith cosine mu and at cosine nu from the sun, the sun at zenith cosine mu_s.
-BrunetonRadiance bruneton_sky_radiance(AtmosphereParameters a, texture2D transmittance_lut, texture3D scattering, sampler nearest,
-                                       ivec4 size, float r, float mu, float mu_s, float nu) {
+// Bruneton 2017, GetSkyRadiance (no light shafts; separate scattering and single Mie
+// textures): the camera at radius r, the view at zenith cosine mu and at cosine nu from the
+// sun, the sun at zenith cosine mu_s.
+BrunetonRadiance bruneton_sky_radiance(AtmosphereParameters a, texture2D transmittance_lut, texture3D scattering,
+                                       texture3D single_mie_scattering, sampler nearest, ivec4 size, float r, float mu, float mu_s,
+                                       float nu) {
   BrunetonRadiance result = BrunetonRadiance(vec3(0.0), vec3(1.0));
   if (!bruneton_enter(a, r, mu, mu_s, nu)) return result;
   r = bruneton_clamp_radius(a, r);
   const bool hits_ground = ray_hits_ground(a, r, mu);
   result.transmittance = hits_ground ? vec3(0.0) : transmittance_lookup(a, transmittance_lut, nearest, r, mu);
-  const vec4 s = bruneton_scattering(a, scattering, nearest, size, r, mu, mu_s, nu, hits_ground);
-  result.radiance = bruneton_with_phases(a, s, bruneton_extrapolated_mie(a, s), nu);
+  const vec3 s = bruneton_scattering(a, scattering, nearest, size, r, mu, mu_s, nu, hits_ground).rgb;
+  const vec3 mie = bruneton_scattering(a, single_mie_scattering, nearest, size, r, mu, mu_s, nu, hits_ground).rgb;
+  result.radiance = bruneton_with_phases(a, s, mie, nu);
   return result;
 }
 
-// Bruneton 2017, GetSkyRadianceToPoint (no light shafts): S(camera) − T · S(point) over the
-// first d m of the ray.
+// Bruneton 2017, GetSkyRadianceToPoint (no light shafts; separate scattering and single Mie
+// textures): S(camera) − T · S(point) over the first d m of the ray.
 BrunetonRadiance bruneton_sky_radiance_to_point(AtmosphereParameters a, texture2D transmittance_lut, texture3D scattering,
-                                                sampler nearest, ivec4 size, float r, float mu, float mu_s, float nu, float d) {
+                                                texture3D single_mie_scattering, sampler nearest, ivec4 size, float r, float mu,
+                                                float mu_s, float nu, float d) {
   BrunetonRadiance result = BrunetonRadiance(vec3(0.0), vec3(1.0));
   if (!(d > 0.0)) return result;
   // From space, the part of the ray before the top holds no air.
@@ -232,14 +229,15 @@ BrunetonRadiance bruneton_sky_radiance_to_point(AtmosphereParameters a, texture2
   r = bruneton_clamp_radius(a, r);
   const bool hits_ground = ray_hits_ground(a, r, mu);
   result.transmittance = bruneton_transmittance(a, transmittance_lut, nearest, r, mu, d, hits_ground);
-  const vec4 s = bruneton_scattering(a, scattering, nearest, size, r, mu, mu_s, nu, hits_ground);
   const float r_p = bruneton_clamp_radius(a, radius_at(r, mu, d));
   const float mu_p = clamp((r * mu + d) / r_p, -1.0, 1.0), mu_s_p = clamp((r * mu_s + d * nu) / r_p, -1.0, 1.0);
-  const vec4 s_p = bruneton_scattering(a, scattering, nearest, size, r_p, mu_p, mu_s_p, nu, hits_ground);
-  const vec4 between = vec4(s.rgb - result.transmittance * s_p.rgb, s.a - result.transmittance.r * s_p.a);
+  const vec3 s = bruneton_scattering(a, scattering, nearest, size, r, mu, mu_s, nu, hits_ground).rgb;
+  const vec3 s_p = bruneton_scattering(a, scattering, nearest, size, r_p, mu_p, mu_s_p, nu, hits_ground).rgb;
+  const vec3 m = bruneton_scattering(a, single_mie_scattering, nearest, size, r, mu, mu_s, nu, hits_ground).rgb;
+  const vec3 m_p = bruneton_scattering(a, single_mie_scattering, nearest, size, r_p, mu_p, mu_s_p, nu, hits_ground).rgb;
   // Bruneton 2017's smoothstep on single Mie against artefacts with the sun below the horizon.
-  const vec3 mie = bruneton_extrapolated_mie(a, between) * smoothstep(0.0, 0.01, mu_s);
-  result.radiance = bruneton_with_phases(a, between, mie, nu);
+  const vec3 mie = (m - result.transmittance * m_p) * smoothstep(0.0, 0.01, mu_s);
+  result.radiance = bruneton_with_phases(a, s - result.transmittance * s_p, mie, nu);
   return result;
 }
 

@@ -48,7 +48,7 @@ std::string sphere_config(double radius, const std::string& variant) {
   const std::string bruneton = variant == "bruneton" ? R"(
     { "name": "tables", "type": "atmosphere_bruneton_tables", "params": { "nu": 4, "nu_mu_s": 32, "mu": 16, "r": 4, "orders": 2 },
       "inputs": { "transmittance": "lut.transmittance" } },)" : "";
-  const std::string volume_inputs = variant == "bruneton" ? R"("scattering": "tables.scattering")" : R"("multiscattering": "ms.multiscattering")";
+  const std::string volume_inputs = variant == "bruneton" ? R"("scattering": "tables.scattering", "single_mie_scattering": "tables.single_mie_scattering")" : R"("multiscattering": "ms.multiscattering")";
   const std::string volume_params = variant == "bruneton" ? R"(, "nu": 4)" : "";
   return std::string(R"({ "output": { "size": [16, 16] },
   "scene": { "camera": { "position": [0, 2, 0], "target": [0, 2.5, -10], "fov_y_deg": 60, "near": 0.5, "far": 20000 },

@@ -163,29 +163,34 @@ TEST(AtmosphereBruneton, TableSamplingIsExactAtCentresAndLinearBetween) {
   EXPECT_DOUBLE_EQ(t.sample(0.5, 0.25, 0.25)[2], 4.0);
 }
 
-// A scattering table filled on the CPU by single scattering alone (the texel's own
-// single_scattering), so the lookups can be checked against the quantity they interpolate.
-BrunetonTable single_scattering_table(const Atmosphere& a, const BrunetonTableSize& size) {
+// The scattering and single Mie tables filled on the CPU by single scattering alone (the
+// texel's own single_scattering), so the lookups can be checked against the quantity they
+// interpolate.
+struct SingleScatteringTables {
+  BrunetonTable rayleigh, mie;
+};
+SingleScatteringTables single_scattering_tables(const Atmosphere& a, const BrunetonTableSize& size) {
   const TransmittanceToTop t = cheap_transmittance(a);
-  BrunetonTable table{size.width(), size.mu, size.r, {}};
+  SingleScatteringTables tables{{size.width(), size.mu, size.r, {}}, {size.width(), size.mu, size.r, {}}};
   for (int z = 0; z < size.r; ++z) {
     for (int y = 0; y < size.mu; ++y) {
       for (int x = 0; x < size.width(); ++x) {
         const SingleScattering s = single_scattering(a, t, scattering_texel_params(a, x, y, z, size), 50);
-        table.rgba.insert(table.rgba.end(), {float(s.rayleigh[0]), float(s.rayleigh[1]), float(s.rayleigh[2]), float(s.mie[0])});
+        tables.rayleigh.rgba.insert(tables.rayleigh.rgba.end(), {float(s.rayleigh[0]), float(s.rayleigh[1]), float(s.rayleigh[2]), 0.0f});
+        tables.mie.rgba.insert(tables.mie.rgba.end(), {float(s.mie[0]), float(s.mie[1]), float(s.mie[2]), 0.0f});
       }
     }
   }
-  return table;
+  return tables;
 }
 
 TEST(AtmosphereBruneton, SkyRadianceAtATexelIsTheTexelsSingleScatteringWithPhases) {
   const BrunetonTableSize size{8, 8, 16, 4, 8, 4};
-  const BrunetonTable scattering = single_scattering_table(kEarth, size);
+  const SingleScatteringTables scattering = single_scattering_tables(kEarth, size);
   const BrunetonTable irradiance{size.irradiance_width, size.irradiance_height, 1, std::vector<float>(size_t(4 * 8 * 4), 0.0f)};
-  const BrunetonTables tables{size, &scattering, &irradiance, cheap_transmittance(kEarth)};
+  const BrunetonTables tables{size, &scattering.rayleigh, &scattering.mie, &irradiance, cheap_transmittance(kEarth)};
   // The camera on the ground, the view and the sun at a texel's (mu, mu_s, nu): the lookup
-  // returns that texel (Rayleigh · p_R + the extrapolated Mie · p_M) to the float's rounding.
+  // returns that texel (Rayleigh · p_R + Mie · p_M, every channel of both) to the float's rounding.
   const ScatteringParams p = scattering_texel_params(kEarth, 2 * size.mu_s + 5, 11, 0, size);
   ASSERT_DOUBLE_EQ(p.nu, 2 * 2 / 7.0 - 1);  // a texel whose nu the clamp leaves alone
   const Vec3 camera{0, p.r, 0};
@@ -194,24 +199,18 @@ TEST(AtmosphereBruneton, SkyRadianceAtATexelIsTheTexelsSingleScatteringWithPhase
   const Vec3 sun{sun_x, p.mu_s, std::sqrt(std::max(0.0, 1 - sun_x * sun_x - p.mu_s * p.mu_s))};
   const BrunetonRadiance sky = sky_radiance(kEarth, tables, camera, view, sun);
   const SingleScattering s = single_scattering(kEarth, tables.transmittance, p);
-  // Mie's green and blue as the combined texel extrapolates them from its red.
-  const Vec3 mie_rgb = extrapolated_single_mie(kEarth, {s.rayleigh[0], s.rayleigh[1], s.rayleigh[2], s.mie[0]});
-  EXPECT_NEAR(mie_rgb[0], s.mie[0], 1e-15);
   for (size_t c = 0; c < 3; ++c) {
-    const double mie = mie_rgb[c];
-    const double expected = s.rayleigh[c] * phase_rayleigh(p.nu) + mie * mie_phase(kEarth, p.nu);
+    const double expected = s.rayleigh[c] * phase_rayleigh(p.nu) + s.mie[c] * mie_phase(kEarth, p.nu);
     EXPECT_NEAR(sky.radiance[c], expected, 2e-6 * expected + 1e-12) << c;
   }
-  // The Mie extrapolation is exact for the red channel.
-  EXPECT_NEAR(extrapolated_single_mie(kEarth, {1, 2, 3, 0.5})[0], 0.5, 1e-15);
   EXPECT_NEAR(sky.transmittance[0], tables.transmittance(p.r, p.mu)[0], 1e-12);
 }
 
 TEST(AtmosphereBruneton, RadianceToPointIsNothingForNoDistanceAndTheSkyForTheWholeRay) {
   const BrunetonTableSize size{8, 8, 16, 4, 8, 4};
-  const BrunetonTable scattering = single_scattering_table(kEarth, size);
+  const SingleScatteringTables scattering = single_scattering_tables(kEarth, size);
   const BrunetonTable irradiance{size.irradiance_width, size.irradiance_height, 1, std::vector<float>(size_t(4 * 8 * 4), 0.0f)};
-  const BrunetonTables tables{size, &scattering, &irradiance, cheap_transmittance(kEarth)};
+  const BrunetonTables tables{size, &scattering.rayleigh, &scattering.mie, &irradiance, cheap_transmittance(kEarth)};
   const Vec3 camera{0, kEarth.bottom_radius + 500, 0};
   const Vec3 view{std::sqrt(1 - 0.09), 0.3, 0};
   const Vec3 sun{0, 0.5, std::sqrt(0.75)};
@@ -237,7 +236,7 @@ TEST(AtmosphereBruneton, SunAndSkyIrradianceOnAHorizontalSurface) {
   BrunetonTable irradiance{size.irradiance_width, size.irradiance_height, 1, {}};
   for (int i = 0; i < size.irradiance_width * size.irradiance_height; ++i) irradiance.rgba.insert(irradiance.rgba.end(), {0.1f, 0.2f, 0.3f, 0});
   const BrunetonTable scattering{size.width(), size.mu, size.r, std::vector<float>(size_t(4 * size.width() * size.mu * size.r), 0.0f)};
-  const BrunetonTables tables{size, &scattering, &irradiance, exact_transmittance(kEarth)};
+  const BrunetonTables tables{size, &scattering, &scattering, &irradiance, exact_transmittance(kEarth)};
   const Vec3 point{0, kEarth.bottom_radius, 0}, up{0, 1, 0}, sun{0, 0.6, 0.8};
   const SunAndSkyIrradiance e = sun_and_sky_irradiance(kEarth, tables, point, up, sun);
   EXPECT_NEAR(e.sky[1], 0.2, 1e-7);

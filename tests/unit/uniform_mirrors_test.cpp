@@ -287,7 +287,7 @@ TEST(UniformMirrors, AtmosphereBlocksMatch) {
     EXPECT_EQ(mirror_error<GpuBrunetonTableParams>(shader, 0, 1, "GpuBrunetonTableParams"), "") << shader;
   }
   EXPECT_EQ(mirror_error<GpuBrunetonTableParams>("atmosphere_aerial_perspective_bruneton.comp", 0, 5, "GpuBrunetonTableParams"), "");
-  EXPECT_EQ(mirror_error<GpuBrunetonTableParams>("atmosphere_sky_bruneton.frag", 0, 10, "GpuBrunetonTableParams"), "");
+  EXPECT_EQ(mirror_error<GpuBrunetonTableParams>("atmosphere_sky_bruneton.frag", 0, 11, "GpuBrunetonTableParams"), "");
   EXPECT_EQ(mirror_error<GpuAerialPerspectiveFrame>("atmosphere_aerial_perspective_bruneton.comp", 0, 1, "GpuAerialPerspectiveFrame"), "");
   EXPECT_EQ(wrapped_error<GpuSkyFrame>("atmosphere_sky_bruneton.frag", 0, 1, "GpuSkyFrame"), "");
 }
