@@ -29,6 +29,7 @@
 #include "physics/media.h"
 #include "physics/phase.h"
 #include "physics/temporal.h"
+#include "physics/translucency.h"
 #include "shaders/include/phase_codes.h"
 #include "graph/rhi/spirv_reflect.h"
 #include "tests/gpu/shaders/gpu_test_shaders.h"
@@ -559,6 +560,46 @@ TEST_P(PhysicsTwins, MediaAverageMatchesItsCpuTwin) {
   EXPECT_GT(partial, 300u) << "segments a volume fills in part";
   std::printf("media average GPU vs CPU twin: chord ends %.3g m, mean densities %.3g, σ %.3g of the full σ (%zu chords, %zu partial means)\n",
               worst_end, worst_mean, worst_sigma, chords, partial);
+}
+
+// std430 mirror of translucency_twins.comp's Case.
+struct TranslucencyCase {
+  float ray[4];   // to_incident, eta (the normal +y)
+  float slab[4];  // F0, cos θ, colour, distance
+};
+
+// translucency.glsl against physics/translucency.h in float: incidence from 0 to 89° for
+// eta 1 (exactly straight on), air→glass, glass→air (past its critical angle: total
+// internal reflection on both), water; Schlick, σt from a colour, the slab, F0. Within
+// 4 float ulps relative (1e-6) on the vectors and 1e-5 on exp/log/pow of lavapipe and Dawn.
+TEST_P(PhysicsTwins, TranslucencyMatchesItsCpuTwin) {
+  std::vector<TranslucencyCase> table;
+  for (const float eta : {1.0f, 1.0f / 1.5f, 1.5f, 1.0f / 1.33f}) {
+    for (int k = 0; k < 90; k += 7) {
+      const float theta = float(k) * float(M_PI) / 180.0f;
+      table.push_back({{std::sin(theta), std::cos(theta), 0.0f, eta}, {0.04f, std::cos(theta), 0.05f + 0.01f * float(k), 0.1f}});
+    }
+  }
+  const std::vector<std::byte> bytes = run_twin_shader(device(), "translucency_twins.comp",
+                                                       {{std::as_bytes(std::span(table)), rhi::buffer_usage::storage}},
+                                                       table.size(), table.size() * 32);
+  const auto* got = reinterpret_cast<const float*>(bytes.data());
+  int total_internal = 0;
+  for (size_t i = 0; i < table.size(); ++i) {
+    const TranslucencyCase& c = table[i];
+    const std::optional<physics::Vec3Of<float>> t = physics::refract_bec<float>({c.ray[0], c.ray[1], c.ray[2]}, {0, 1, 0}, c.ray[3]);
+    ASSERT_EQ(got[8 * i + 3] > 0.5f, bool(t)) << "case " << i << ": total internal reflection on one side only";
+    total_internal += t ? 0 : 1;
+    for (size_t k = 0; t && k < 3; ++k) EXPECT_NEAR(got[8 * i + k], (*t)[k], 1e-6f) << "case " << i;
+    if (c.ray[3] == 1.0f && t) {
+      for (size_t k = 0; k < 3; ++k) EXPECT_EQ(got[8 * i + k], -c.ray[k]) << "IOR 1 is straight on, exactly";
+    }
+    const float sigma_t = physics::sigma_t_from_color(c.slab[2], c.slab[3]);
+    const float want[4] = {physics::fresnel_schlick(c.slab[0], c.slab[1]), sigma_t, physics::slab_transmittance(sigma_t, c.slab[3], c.slab[1]),
+                           physics::fresnel_f0(1.0f, 1.0f / c.ray[3])};
+    for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(got[8 * i + 4 + k], want[k], 1e-5f * std::abs(want[k]) + 1e-7f) << "case " << i << " value " << k;
+  }
+  EXPECT_GT(total_internal, 0) << "the table reaches past glass's critical angle";
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, PhysicsTwins, ::testing::ValuesIn(gpu_backends()), backend_test_name);

@@ -1,0 +1,104 @@
+// physics/translucency.h against what optics gives exactly (RTR4 §14.5; double unless
+// stated):
+// - Fresnel at normal incidence for n = 1.5 is 0.04; Schlick's form equals F0 at normal
+//   incidence and 1 at grazing, and rises monotonically between;
+// - Bec's refraction obeys Snell's law (n₁ sin θi = n₂ sin θt) and gives a unit vector on the
+//   far side, within 1e-12; IOR 1 leaves the direction exactly unchanged (float and double);
+//   total internal reflection exactly beyond the critical angle asin(n₂/n₁);
+// - a slab of σt = −ln(c)/d transmits c at normal incidence (to rounding) and e^(−σt d/cos θt)
+//   at an angle; transmittance 0 and 1, thickness 0 and grazing rays give finite values.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "physics/translucency.h"
+
+namespace volgraph::physics {
+namespace {
+
+using V = Vec3Of<double>;
+
+double dot3(const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// The unit vector at angle `theta` from the +y normal, in the xy plane, toward +x.
+V toward(double theta) { return {std::sin(theta), std::cos(theta), 0}; }
+
+TEST(Translucency, FresnelAtNormalIncidenceForGlassIsFourPercent) {
+  EXPECT_DOUBLE_EQ(fresnel_f0(1.0, 1.5), 0.04);
+  EXPECT_DOUBLE_EQ(fresnel_f0(1.5, 1.0), 0.04);
+  EXPECT_EQ(fresnel_f0(1.33, 1.33), 0.0);
+  EXPECT_DOUBLE_EQ(fresnel_schlick(0.04, 1.0), 0.04);
+  EXPECT_DOUBLE_EQ(fresnel_schlick(0.04, 0.0), 1.0);
+  double previous = 0.04;
+  for (double c = 0.95; c >= 0; c -= 0.05) {
+    const double f = fresnel_schlick(0.04, c);
+    EXPECT_GT(f, previous) << "cos " << c;
+    previous = f;
+  }
+}
+
+TEST(Translucency, BecsRefractionObeysSnellsLaw) {
+  const V normal{0, 1, 0};
+  for (const double eta : {1.0 / 1.5, 1.0 / 1.33, 1.5, 1.2}) {
+    const double critical = eta > 1 ? std::asin(1 / eta) : M_PI / 2;
+    for (double theta = 0; theta < M_PI / 2; theta += 0.01) {
+      const std::optional<V> t = refract_bec(toward(theta), normal, eta);
+      if (theta > critical + 1e-9) {
+        EXPECT_FALSE(t) << "eta " << eta << " theta " << theta << ": beyond the critical angle";
+        continue;
+      }
+      if (theta < critical - 1e-9) ASSERT_TRUE(t) << "eta " << eta << " theta " << theta;
+      if (!t) continue;
+      EXPECT_NEAR(dot3(*t, *t), 1, 1e-12);
+      EXPECT_LE(dot3(*t, normal), 0) << "the transmitted ray goes into the far side";
+      const double sin_t = std::sqrt((*t)[0] * (*t)[0] + (*t)[2] * (*t)[2]);
+      EXPECT_NEAR(sin_t, eta * std::sin(theta), 1e-12) << "Snell: n₁ sin θi = n₂ sin θt";
+      EXPECT_LE((*t)[0], 0) << "it continues across the normal, away from the incident side";
+    }
+  }
+}
+
+TEST(Translucency, IorOneLeavesTheDirectionExactlyUnchanged) {
+  const V normal{0, 1, 0};
+  for (double theta = 0; theta < 1.55; theta += 0.1) {
+    const V l = toward(theta);
+    const std::optional<V> t = refract_bec(l, normal, 1.0);
+    ASSERT_TRUE(t);
+    for (size_t i = 0; i < 3; ++i) EXPECT_EQ((*t)[i], -l[i]) << "theta " << theta;
+    const Vec3Of<float> lf{float(l[0]), float(l[1]), float(l[2])};
+    const std::optional<Vec3Of<float>> tf = refract_bec(lf, {0.0f, 1.0f, 0.0f}, 1.0f);
+    ASSERT_TRUE(tf);
+    for (size_t i = 0; i < 3; ++i) EXPECT_EQ((*tf)[i], -lf[i]) << "float, theta " << theta;
+  }
+}
+
+TEST(Translucency, TotalInternalReflectionBeyondTheCriticalAngle) {
+  const double eta = 1.5;  // glass to air
+  const double critical = std::asin(1 / eta);
+  EXPECT_TRUE(refract_bec(toward(critical - 1e-6), {0, 1, 0}, eta));
+  EXPECT_FALSE(refract_bec(toward(critical + 1e-6), {0, 1, 0}, eta));
+}
+
+TEST(Translucency, ASlabTransmitsItsColourAtNormalIncidenceAndLessAtAnAngle) {
+  for (const double color : {0.9, 0.5, 0.01}) {
+    const double d = 0.03;
+    const double sigma_t = sigma_t_from_color(color, d);
+    EXPECT_NEAR(slab_transmittance(sigma_t, d, 1.0), color, 1e-15);
+    const double cos_t = std::cos(0.6);
+    EXPECT_NEAR(slab_transmittance(sigma_t, d, cos_t), std::pow(color, 1 / cos_t), 1e-15) << "the longer path at an angle";
+  }
+}
+
+TEST(Translucency, LimitsStayFinite) {
+  EXPECT_EQ(sigma_t_from_color(1.0, 0.1), 0.0);
+  const double opaque = sigma_t_from_color(0.0, 0.1);
+  EXPECT_TRUE(std::isfinite(opaque));
+  EXPECT_LT(slab_transmittance(opaque, 0.1, 1.0), 1e-29);
+  EXPECT_EQ(slab_transmittance(opaque, 0.0, 1.0), 1.0) << "thickness 0";
+  EXPECT_EQ(slab_transmittance(opaque, 0.1, 0.0), 0.0) << "a grazing ray through an absorbing slab";
+  EXPECT_EQ(slab_transmittance(0.0, 0.1, 0.0), 1.0) << "a grazing ray through a clear slab";
+  EXPECT_TRUE(std::isfinite(sigma_t_from_color(0.0f, 0.1f)));
+}
+
+}  // namespace
+}  // namespace volgraph::physics
