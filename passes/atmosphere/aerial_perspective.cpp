@@ -140,10 +140,8 @@ class AerialPerspectiveExecution final : public PassExecution {
     l.view = fog::pack_view_rays(c.scene->camera, c.frame_size());
     l.volume[0] = float(c.param(t_.distance));
     l.volume[1] = float(c.param(t_.slices));
-    const Atmosphere& a = *c.scene->atmosphere;
-    if (atmosphere::planet_frame(*c.scene).has_sun) {
-      for (size_t i = 0; i < 3; ++i) l.sun[i] = float(c.scene->lights[size_t(a.sun_light)].irradiance[i]);
-    }
+    const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
+    std::copy(std::begin(planet.sun), std::begin(planet.sun) + 3, l.sun);  // its w stays 0: the block has no flag
     return l;
   }
 

@@ -25,6 +25,10 @@ PlanetFrame planet_frame(const Scene& scene) {
   f.planet_up[3] = float(std::min(view.r, scene.atmosphere->top_radius));
   f.toward_sun[3] = float(view.mu_s);
   f.has_sun = view.has_sun;
+  if (!view.has_sun) return f;
+  const Vec3& e = scene.lights[size_t(scene.atmosphere->sun_light)].irradiance;
+  for (size_t i = 0; i < 3; ++i) f.sun[i] = float(e[i]);
+  f.sun[3] = 1.0f;
   return f;
 }
 

@@ -34,6 +34,7 @@ class AtmosphereBlock {
 struct PlanetFrame {
   float planet_up[4];
   float toward_sun[4];
+  float sun[4];  // rgb: the sun's E at the top of the atmosphere, w: 1 when there is a sun (all 0 without)
   bool has_sun;
 };
 PlanetFrame planet_frame(const Scene& scene);

@@ -161,8 +161,7 @@ class SkyExecution final : public PassExecution {
     f.view = fog::pack_view_rays(c.scene->camera, c.extent(t_.sky_color));
     std::copy(std::begin(planet.planet_up), std::end(planet.planet_up), f.planet_up);
     std::copy(std::begin(planet.toward_sun), std::end(planet.toward_sun), f.toward_sun);
-    for (size_t i = 0; i < 3 && planet.has_sun; ++i) f.sun[i] = float(c.scene->lights[size_t(a.sun_light)].irradiance[i]);
-    f.sun[3] = planet.has_sun ? 1.0f : 0.0f;
+    std::copy(std::begin(planet.sun), std::end(planet.sun), f.sun);
     f.sun_disk[0] = float(a.sun_angular_radius);
     f.sun_disk[1] = c.param(t_.sun_disk) ? 1.0f : 0.0f;
     f.sun_disk[2] = c.param(t_.limb_darkening) ? 1.0f : 0.0f;
