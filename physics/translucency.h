@@ -68,4 +68,99 @@ Real slab_transmittance(Real sigma_t, Real thickness, Real cos_transmitted) {
   return std::exp(-sigma_t * thickness / c);
 }
 
+// The interface's reflectance seen at `cos_view` from outside: Schlick's F for indices 1
+// and `ior`, and none at all without an interface (ior 1, where Schlick's grazing term
+// would reflect light at a boundary that is not there).
+template <typename Real>
+Real interface_reflectance(Real ior, Real cos_view) {
+  if (ior == Real(1)) return Real(0);
+  return fresnel_schlick(fresnel_f0(Real(1), ior), cos_view);
+}
+
+// cos θt inside a medium of index `ior` for a ray arriving from outside (index 1) at
+// cos θi (Snell's law: sin θt = sin θi / ior).
+template <typename Real>
+Real refracted_cosine(Real ior, Real cos_incident) {
+  const Real c = std::clamp(std::abs(cos_incident), Real(0), Real(1));
+  return std::sqrt(std::max(Real(0), Real(1) - (Real(1) - c * c) / (ior * ior)));
+}
+
+// The path through a thin shell `thickness` m thick seen at cos θi: the shell is crossed
+// at the refracted angle, thickness / cos θt (RTR4 §14.5.1, after Drobot's thin shells).
+template <typename Real>
+Real shell_path_length(Real thickness, Real ior, Real cos_incident) {
+  const Real c = refracted_cosine(ior, cos_incident);
+  return c > Real(0) ? thickness / c : (thickness > Real(0) ? Real(1e30) : Real(0));
+}
+
+// What a translucent surface does to a ray, per channel: it adds `radiance` and passes
+// `transmittance` of what lies behind it, C = radiance + transmittance ⊙ C_behind (one
+// layer of RTR4 §14.5.1's blending; the blending passes compose layers by it).
+template <typename Real>
+struct SurfaceLayer {
+  Vec3Of<Real> radiance{};
+  Vec3Of<Real> transmittance{};
+};
+
+// What the layer is made of, as a pass or the reference has it at one point.
+template <typename Real>
+struct LayerInputs {
+  Real alpha = 1;                 // coverage
+  Real transmission = 0;          // of the light the interface does not reflect
+  Vec3Of<Real> albedo{};          // ρ: the diffuse colour, and the tint of what passes
+  Vec3Of<Real> emissive{};        // radiance
+  Vec3Of<Real> irradiance{};      // E reaching the surface (lights, shadows and ambient)
+  Vec3Of<Real> environment{};     // radiance the specular reflection sees
+  Real reflectance = 0;           // F where the ray enters (interface_reflectance)
+  Real exit_reflectance = 0;      // F where it leaves again (a shell's or solid's far side; 0 thin-walled)
+  Vec3Of<Real> path_transmittance{Real(1), Real(1), Real(1)};  // Beer–Lambert inside
+};
+
+// glTF 2.0's dielectric layering (its Appendix B fresnel_mix, with KHR_materials_
+// transmission's mix of diffuse and transmitted lobes) over coverage α:
+//   radiance      = α [F L_env + (1 − F)(1 − t) ρ/π E + emissive]
+//   transmittance = (1 − α) + α (1 − F) t ρ T_path (1 − F_exit).
+template <typename Real>
+SurfaceLayer<Real> surface_layer(const LayerInputs<Real>& in) {
+  SurfaceLayer<Real> out;
+  const Real a = std::clamp(in.alpha, Real(0), Real(1)), t = std::clamp(in.transmission, Real(0), Real(1));
+  const Real f = std::clamp(in.reflectance, Real(0), Real(1)), f_exit = std::clamp(in.exit_reflectance, Real(0), Real(1));
+  constexpr Real kInvPi = Real(0.318309886183790671537767526745028724);
+  for (size_t c = 0; c < 3; ++c) {
+    const Real diffuse = (Real(1) - f) * (Real(1) - t) * in.albedo[c] * kInvPi * in.irradiance[c];
+    out.radiance[c] = a * (f * in.environment[c] + diffuse + in.emissive[c]);
+    out.transmittance[c] = (Real(1) - a) + a * (Real(1) - f) * t * in.albedo[c] * in.path_transmittance[c] * (Real(1) - f_exit);
+  }
+  return out;
+}
+
+// A layer seen through media between the camera and it (their in-scattered radiance S
+// and transmittance T up to the layer), composed so that its transmittance can multiply
+// what lies behind already fogged over the whole ray: with C_fogged = S(0, d_o) +
+// T(0, d_o) C, S(0, d_o) = S + T S(d, d_o) and T(0, d_o) = T T(d, d_o), the exact
+//   S + T [radiance + transmittance ⊙ (S(d, d_o) + T(d, d_o) C)]
+// is radiance' + transmittance ⊙ C_fogged with radiance' = T radiance + (1 − transmittance) S.
+template <typename Real>
+SurfaceLayer<Real> fogged_layer(const SurfaceLayer<Real>& layer, const Vec3Of<Real>& in_scattered, const Vec3Of<Real>& media_transmittance) {
+  SurfaceLayer<Real> out = layer;
+  for (size_t c = 0; c < 3; ++c) {
+    out.radiance[c] = media_transmittance[c] * layer.radiance[c] + (Real(1) - layer.transmittance[c]) * in_scattered[c];
+  }
+  return out;
+}
+
+// McGuire & Bavoil 2013's weight for a layer at view depth `depth` m of opacity `opacity`
+// (their weight for a wide depth range), clamped to [1e-2, 3e3]; then held so one layer
+// of radiance `peak` adds at most 2⁻⁶ of half float's largest value (65504) to the
+// accumulation: 64 such layers cannot overflow it.
+template <typename Real>
+Real oit_weight(Real depth, Real opacity, Real peak) {
+  const Real z = std::abs(depth);
+  const Real z5 = z / Real(5), z200 = z / Real(200);
+  const Real z200_3 = z200 * z200 * z200;
+  const Real w = std::clamp(Real(10) / (Real(1e-5) + z5 * z5 + z200_3 * z200_3), Real(1e-2), Real(3e3));
+  const Real budget = Real(65504) / Real(64);
+  return std::clamp(opacity, Real(0), Real(1)) * std::min(w, budget / std::max(peak, Real(1)));
+}
+
 }  // namespace volgraph::physics

@@ -847,6 +847,7 @@ LoadedConfig load(const std::string& name, const std::string* text, const PassRe
   loader.diagnostics().throw_if_any();
   apply_overrides(config, o, loader.diagnostics());
   loader.diagnostics().throw_if_any();
+  registry.annotate(config.scene);
   return Wiring(config, registry, loader.sizes(), loader.diagnostics()).run();
 }
 

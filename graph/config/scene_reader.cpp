@@ -106,8 +106,8 @@ void read_material(const Node& n, const std::string& name, Material& m) {
     if (auto path = t->existing_path()) m.albedo_texture = *path;
   }
   read(n, "emissive", m.emissive, 0, kMaxRadiance);
-  read(n, "transmission", m.transmission, 0, 1);
-  read(n, "ior", m.ior, 1, 4);
+  read(n, "transmission", m.translucency.transmission, 0, 1);
+  read(n, "ior", m.translucency.ior, 1, 4);
 }
 
 void read_object(const Node& n, const Scene& scene, Object& o) {

@@ -32,7 +32,7 @@ SceneFeatures Scene::features() const {
   if (local) f |= feature_bit(SceneFeature::local_volumes);
   for (const Object& o : objects) {
     const Material* m = find_material(o.material);
-    if (m && m->transmission > 0) f |= feature_bit(SceneFeature::translucent_objects);
+    if ((m && m->translucency.translucent()) || o.translucent_in_file) f |= feature_bit(SceneFeature::translucent_objects);
   }
   if (atmosphere) f |= feature_bit(SceneFeature::atmosphere);
   return f;
@@ -139,8 +139,16 @@ void hash_geometry(SceneHasher& h, const Scene& scene) {
     h.add(m.albedo);
     h.add(m.albedo_texture);
     h.add(m.emissive);
-    h.add(m.transmission);
-    h.add(m.ior);
+    const Translucency& t = m.translucency;
+    h.add(t.alpha);
+    h.add(int64_t(t.alpha_mode));
+    h.add(t.alpha_cutoff);
+    h.add(t.transmission);
+    h.add(t.ior);
+    h.add(t.attenuation_color);
+    h.add(t.attenuation_distance);
+    h.add(int64_t(t.volume));
+    h.add(t.thickness);
   }
   h.add(int64_t(scene.objects.size()));
   for (const Object& o : scene.objects) {

@@ -29,13 +29,42 @@ struct Camera {
   double far = 1000;
 };
 
+// How a material's coverage α is used (glTF 2.0 alphaMode): ignored, cut at a threshold
+// (texels below it are holes, in the shadow maps too), or blended.
+enum class AlphaMode : uint8_t { opaque, mask, blend };
+
+// What lies beneath a transmitting surface (KHR_materials_volume's thickness): nothing
+// (thin-walled: the light is tinted at the surface alone), a shell `thickness` m thick
+// crossed at the refracted angle, or a solid object whose path is measured along the
+// ray (to its back faces, or to an opaque surface inside it).
+enum class VolumeKind : uint8_t { thin_walled, shell, solid };
+
+// How a surface passes light (RTR4 §14.5; glTF 2.0 alphaMode, KHR_materials_transmission,
+// _ior and _volume): coverage α, and a dielectric interface of index `ior` through which
+// a fraction `transmission` of the light not reflected passes, tinted by the albedo and
+// attenuated inside by Beer–Lambert with σt per channel = −ln(attenuation_color) /
+// attenuation_distance (RTR4 eq. 14.23). A surface is translucent (drawn by the
+// translucency passes, not the opaque scene) when it blends or transmits.
+struct Translucency {
+  double alpha = 1;  // coverage, 0–1
+  AlphaMode alpha_mode = AlphaMode::opaque;
+  double alpha_cutoff = 0.5;  // mask: coverage below it is a hole
+  double transmission = 0;    // 0–1 of the light the interface does not reflect
+  double ior = 1.5;
+  Vec3 attenuation_color{1, 1, 1};     // transmittance after attenuation_distance inside
+  double attenuation_distance = 1e30;  // m (1e30: no absorption)
+  VolumeKind volume = VolumeKind::thin_walled;
+  double thickness = 0;  // m: the shell's; solid: the path where no back faces are measured
+  bool translucent() const { return alpha_mode == AlphaMode::blend || transmission > 0; }
+};
+
+// A surface's material: Lambertian reflection of albedo ρ, emission, and how it passes light.
 struct Material {
   std::string name;
   Vec3 albedo{0.8, 0.8, 0.8};
   std::string albedo_texture;  // path as resolved against the config's folder; "" for none
   Vec3 emissive{0, 0, 0};      // radiance
-  double transmission = 0;     // > 0: translucent
-  double ior = 1.5;
+  Translucency translucency;
   Where where;
 };
 
@@ -49,6 +78,9 @@ struct Object {
   std::string material;      // "" for a glTF's own materials
   Transform transform;
   bool cast_shadows = true;
+  // gltf: whether any primitive's material is translucent (filled in after the scene is
+  // read by the registry's scene annotator, passes/plumbing/gltf.h: graph/ reads no glTF).
+  bool translucent_in_file = false;
   Where where;
 };
 

@@ -27,6 +27,14 @@ struct GltfPrimitive {
   Vec3 emissive{0, 0, 0};    // linear radiance factor
   GltfTexture base_color_texture;  // sRGB, multiplies base_color
   GltfTexture emissive_texture;    // sRGB, multiplies emissive
+  // alphaMode, alphaCutoff and baseColorFactor's alpha (the base colour texture's alpha
+  // multiplies it); KHR_materials_transmission, _ior and _volume, the volume's thickness
+  // carried into the scene's metres by the node's scale (thicknessFactor is in the mesh's
+  // space, attenuationDistance in the world's). thicknessFactor 0 is thin-walled; above 0
+  // the volume is solid, its thickness the estimate where no back faces are measured.
+  Translucency translucency;
+  GltfTexture transmission_texture;  // linear, its red channel multiplies transmission
+  GltfTexture thickness_texture;     // linear, its green channel multiplies thickness
 };
 
 struct GltfImage {
@@ -47,5 +55,10 @@ struct GltfModel {
 // Throws std::runtime_error with what is wrong with the file, or naming the extension when
 // the file requires one volgraph does not support (glTF 2.0 §3.12: a loader must refuse it).
 GltfModel load_gltf(const std::string& path);
+
+// The registry's scene annotator (PassRegistry::set_scene_annotator): marks each glTF
+// object whose file has a translucent primitive (Object::translucent_in_file); files that
+// do not load are left unmarked (the scene pass's checks report them).
+void mark_translucent_gltf_objects(Scene& scene);
 
 }  // namespace volgraph::plumbing

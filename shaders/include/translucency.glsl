@@ -43,4 +43,70 @@ vec3 slab_transmittance(vec3 sigma_t, float thickness, float cos_transmitted) {
   return exp(-sigma_t * thickness / c);
 }
 
+// Schlick's F for indices 1 and ior; 0 without an interface (ior 1).
+float interface_reflectance(float ior, float cos_view) {
+  if (ior == 1.0) return 0.0;
+  return fresnel_schlick(fresnel_f0(1.0, ior), cos_view);
+}
+
+// cos θt inside (index ior) for a ray from outside at cos θi (Snell's law).
+float refracted_cosine(float ior, float cos_incident) {
+  const float c = clamp(abs(cos_incident), 0.0, 1.0);
+  return sqrt(max(0.0, 1.0 - (1.0 - c * c) / (ior * ior)));
+}
+
+// A thin shell crossed at the refracted angle: thickness / cos θt (RTR4 §14.5.1, Drobot).
+float shell_path_length(float thickness, float ior, float cos_incident) {
+  const float c = refracted_cosine(ior, cos_incident);
+  return c > 0.0 ? thickness / c : (thickness > 0.0 ? 1e30 : 0.0);
+}
+
+// C = radiance + transmittance ⊙ C_behind, per channel.
+struct SurfaceLayer {
+  vec3 radiance;
+  vec3 transmittance;
+};
+
+struct LayerInputs {
+  float alpha;
+  float transmission;
+  vec3 albedo;
+  vec3 emissive;
+  vec3 irradiance;
+  vec3 environment;
+  float reflectance;
+  float exit_reflectance;
+  vec3 path_transmittance;
+};
+
+// glTF 2.0's dielectric layering over coverage α:
+//   radiance = α [F L_env + (1 − F)(1 − t) ρ/π E + emissive],
+//   transmittance = (1 − α) + α (1 − F) t ρ T_path (1 − F_exit).
+SurfaceLayer surface_layer(LayerInputs l) {
+  const float a = clamp(l.alpha, 0.0, 1.0), t = clamp(l.transmission, 0.0, 1.0);
+  const float f = clamp(l.reflectance, 0.0, 1.0), f_exit = clamp(l.exit_reflectance, 0.0, 1.0);
+  const vec3 diffuse = (1.0 - f) * (1.0 - t) * l.albedo * 0.318309886 * l.irradiance;
+  SurfaceLayer s;
+  s.radiance = a * (f * l.environment + diffuse + l.emissive);
+  s.transmittance = vec3(1.0 - a) + a * (1.0 - f) * t * l.albedo * l.path_transmittance * (1.0 - f_exit);
+  return s;
+}
+
+// The layer seen through media of in-scattered S and transmittance T in front of it:
+// radiance' = T radiance + (1 − transmittance) S (physics::fogged_layer derives it).
+SurfaceLayer fogged_layer(SurfaceLayer layer, vec3 in_scattered, vec3 media_transmittance) {
+  layer.radiance = media_transmittance * layer.radiance + (vec3(1.0) - layer.transmittance) * in_scattered;
+  return layer;
+}
+
+// McGuire & Bavoil 2013's wide-range depth weight, clamped to [1e-2, 3e3] and held so one
+// layer of radiance `peak` adds at most 65504/64 to a half-float accumulation.
+float oit_weight(float depth, float opacity, float peak) {
+  const float z = abs(depth);
+  const float z5 = z / 5.0, z200 = z / 200.0;
+  const float z200_3 = z200 * z200 * z200;
+  const float w = clamp(10.0 / (1e-5 + z5 * z5 + z200_3 * z200_3), 1e-2, 3e3);
+  return clamp(opacity, 0.0, 1.0) * min(w, (65504.0 / 64.0) / max(peak, 1.0));
+}
+
 #endif
