@@ -95,6 +95,10 @@ inline Mat4 model_matrix(const Transform& t) {
 
 // The inverse transpose of a transform's 3×3 part (in a Mat4): it carries normals.
 inline Mat4 normal_matrix(const Mat4& t) { return Mat4(glm::transpose(glm::inverse(glm::dmat3(t)))); }
+// How much a transform stretches lengths, on average over directions of a volume: the
+// cube root of its 3×3 determinant's magnitude (exact for a uniform scale). Carries a
+// length given in an object's space (a glTF volume's thickness) into the world's.
+inline double length_scale(const Mat4& t) { return std::cbrt(std::abs(glm::determinant(glm::dmat3(t)))); }
 
 inline Mat4 view_projection(const Camera& c, double aspect) {
   return perspective(c.fov_y_deg, aspect, c.near, c.far) * look_at(c.position, c.target, c.up);
