@@ -2,6 +2,8 @@
 
 #include "passes/atmosphere/atmosphere_passes.h"
 #include "passes/fog/fog_passes.h"
+#include "passes/plumbing/gltf.h"
+#include "passes/translucency/translucency_passes.h"
 
 namespace volgraph {
 
@@ -31,7 +33,10 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(atmosphere_aerial_perspective_pass());
   registry.add(atmosphere_bruneton_tables_pass());
   registry.add(sky_pass());
+  registry.add(translucency_pass());
   registry.add(aerial_perspective_apply_pass());
+  // glTF objects with translucent materials need the translucency pass (graph/ reads no glTF).
+  registry.set_scene_annotator(plumbing::mark_translucent_gltf_objects);
 }
 
 }  // namespace volgraph

@@ -92,6 +92,9 @@ struct SceneTable : PassTable {
                             "linear radiance", {.format_overridable = true, .size_overridable = true});
   SlotHandle depth = output("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float, SizeSpec::of_output(),
                             "scene depth, for later passes (fog, translucency)");
+  SlotHandle frame = output("frame", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(kSceneFrameBytes),
+                            "the surfaces' lighting block (shaders/include/scene_uniforms.glsl's Frame), for the passes that "
+                            "shade surfaces after it (translucency): the same lights, ambient and fog");
 };
 
 // Rasterises the scene's objects, lit (shaders/scene.vert, scene.frag).
@@ -124,7 +127,10 @@ class SceneExecution final : public PassExecution {
 
   void record(PassContext& c) override {
     using rhi::BindGroupEntry;
-    write_frame(c);
+    const GpuSceneFrame f = frame_of(c);
+    const auto bytes = std::as_bytes(std::span(&f, 1));
+    c.device.write_buffer(frame_, 0, bytes);                // for this pass's shaders
+    c.encoder.update_buffer(c.buffer(t_.frame), 0, bytes);  // for the passes after it
     const Vec3& bg = c.scene->background;
     rhi::RenderPassDesc pass;
     pass.label = c.name();
@@ -148,7 +154,7 @@ class SceneExecution final : public PassExecution {
   }
 
  private:
-  void write_frame(PassContext& c) {
+  GpuSceneFrame frame_of(PassContext& c) {
     const Scene& scene = *c.scene;
     const Extent size = c.extent(t_.color);
     GpuSceneFrame f{};
@@ -159,7 +165,7 @@ class SceneExecution final : public PassExecution {
     for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i] + M_PI * sky[i]);
     f.light_list = plumbing::pack_lights(lighting_.lights(scene));
     f.media = physics::pack_media(fogs_of(scene.media));
-    c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&f, 1)));
+    return f;
   }
 
   const SceneTable& t_;

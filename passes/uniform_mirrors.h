@@ -41,6 +41,9 @@ struct GpuSceneFrame {
   }
 };
 
+// The scene pass's `frame` output: GpuSceneFrame, padded to 256 bytes.
+constexpr uint64_t kSceneFrameBytes = (sizeof(GpuSceneFrame) + 255) / 256 * 256;
+
 // depth_fog.comp's Params.
 struct GpuDepthFogParams {
   float fog[4];    // start (m), end (m), density (1/m), the variant's DEPTH_FOG_* code

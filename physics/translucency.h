@@ -149,6 +149,14 @@ SurfaceLayer<Real> fogged_layer(const SurfaceLayer<Real>& layer, const Vec3Of<Re
   return out;
 }
 
+// −ln T of one channel, T held at ≥ 1e-4 (an optical depth of at most 9.2 a layer: a sum
+// of 64 stays far inside half float's range). Weighted blended OIT adds these: their sum's
+// e^− is the layers' transmittances multiplied, in any order.
+template <typename Real>
+Real transmittance_depth(Real transmittance) {
+  return -std::log(std::max(transmittance, Real(1e-4)));
+}
+
 // McGuire & Bavoil 2013's weight for a layer at view depth `depth` m of opacity `opacity`
 // (their weight for a wide depth range), clamped to [1e-2, 3e3]; then held so one layer
 // of radiance `peak` adds at most 2⁻⁶ of half float's largest value (65504) to the

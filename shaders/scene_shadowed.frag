@@ -1,15 +1,5 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Opaque scene with one light shadowed by a shadow map (set 2).
-#include "include/shadow_lookup.glsl"
-
-layout(set = 2, binding = 0) uniform texture2D shadow_depth;
-layout(set = 2, binding = 1) uniform sampler shadow_sampler;
-layout(set = 2, binding = 2) uniform ShadowBlock { ShadowView view; } shadow;
-
-float light_visibility(int light, vec3 p) {
-  if (!shadows_light(shadow.view, light)) return 1.0;
-  return shadow_visibility(shadow_depth, shadow_sampler, shadow.view, p);
-}
-
+#include "include/shadow_set.glsl"
 #include "include/scene_shading.glsl"

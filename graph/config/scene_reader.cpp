@@ -97,8 +97,38 @@ void read_camera(const Node& n, Camera& c) {
   }
 }
 
+// glTF's alphaMode, KHR_materials_transmission, _ior and _volume, as config keys. An
+// `alpha` below 1 without an `alpha_mode` blends (the only mode where it shows).
+void read_translucency(const Node& n, Translucency& t) {
+  read(n, "alpha", t.alpha, 0, 1);
+  if (t.alpha < 1) t.alpha_mode = AlphaMode::blend;
+  if (const auto mode = n.member("alpha_mode")) {
+    if (auto m = choice<AlphaMode>(*mode, {{"opaque", AlphaMode::opaque}, {"mask", AlphaMode::mask}, {"blend", AlphaMode::blend}})) {
+      t.alpha_mode = *m;
+    }
+  }
+  read(n, "alpha_cutoff", t.alpha_cutoff, 0, 1);
+  read(n, "transmission", t.transmission, 0, 1);
+  read(n, "ior", t.ior, 1, 4);
+  // 0 is allowed: the medium absorbs everything past its surface (physics::sigma_t_from_color).
+  read(n, "attenuation_color", t.attenuation_color, 0, 1);
+  read(n, "attenuation_distance", t.attenuation_distance, 1e-6, 1e30);
+  read(n, "thickness", t.thickness, 0, kHuge);
+  if (const auto volume = n.member("volume")) {
+    if (auto v = choice<VolumeKind>(*volume, {{"thin_walled", VolumeKind::thin_walled}, {"shell", VolumeKind::shell}, {"solid", VolumeKind::solid}})) {
+      t.volume = *v;
+    }
+    if (t.volume == VolumeKind::shell && t.thickness <= 0) {
+      volume->error("a shell needs its wall's thickness; expected \"thickness\" > 0 m beside \"volume\": \"shell\"");
+    }
+  }
+}
+
 void read_material(const Node& n, const std::string& name, Material& m) {
-  if (!n.object({"albedo", "albedo_texture", "emissive", "transmission", "ior"})) return;
+  if (!n.object({"albedo", "albedo_texture", "emissive", "alpha", "alpha_mode", "alpha_cutoff", "transmission", "ior",
+                 "attenuation_color", "attenuation_distance", "volume", "thickness"})) {
+    return;
+  }
   m.name = name;
   m.where = n.where();
   read(n, "albedo", m.albedo, 0, 1);
@@ -106,8 +136,7 @@ void read_material(const Node& n, const std::string& name, Material& m) {
     if (auto path = t->existing_path()) m.albedo_texture = *path;
   }
   read(n, "emissive", m.emissive, 0, kMaxRadiance);
-  read(n, "transmission", m.translucency.transmission, 0, 1);
-  read(n, "ior", m.translucency.ior, 1, 4);
+  read_translucency(n, m.translucency);
 }
 
 void read_object(const Node& n, const Scene& scene, Object& o) {

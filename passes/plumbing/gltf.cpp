@@ -116,6 +116,57 @@ std::vector<double> texture_coordinates(const tinygltf::Model& m, const tinygltf
   return uv;
 }
 
+// A number at `key` of an extension's object, or `fallback` when absent or not a number.
+double number(const tinygltf::Value& object, const char* key, double fallback) {
+  if (!object.IsObject() || !object.Has(key)) return fallback;
+  const tinygltf::Value& v = object.Get(key);
+  return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+}
+
+// The texture index of a textureInfo at `key` of an extension's object; −1 when absent.
+int texture_index(const tinygltf::Value& object, const char* key) {
+  if (!object.IsObject() || !object.Has(key)) return -1;
+  const tinygltf::Value& info = object.Get(key);
+  return info.IsObject() && info.Has("index") && info.Get("index").IsNumber() ? info.Get("index").GetNumberAsInt() : -1;
+}
+
+const tinygltf::Value* extension(const tinygltf::Material& mat, const char* name) {
+  const auto found = mat.extensions.find(name);
+  return found == mat.extensions.end() ? nullptr : &found->second;
+}
+
+AlphaMode alpha_mode(const std::string& gltf_mode) {
+  if (gltf_mode == "BLEND") return AlphaMode::blend;
+  if (gltf_mode == "MASK") return AlphaMode::mask;
+  return AlphaMode::opaque;
+}
+
+// glTF 2.0's alphaMode, KHR_materials_transmission, _ior and _volume as scene.h's
+// Translucency; the volume's thickness carried from the mesh's space into the model's by
+// the node's `thickness_scale` (KHR_materials_volume: thicknessFactor is in the mesh's
+// space, attenuationDistance in the world's).
+void read_translucency(const tinygltf::Model& m, const tinygltf::Material& mat, double thickness_scale, GltfPrimitive& out) {
+  Translucency& t = out.translucency;
+  const auto& f = mat.pbrMetallicRoughness.baseColorFactor;
+  if (f.size() == 4) t.alpha = f[3];
+  t.alpha_mode = alpha_mode(mat.alphaMode);
+  t.alpha_cutoff = mat.alphaCutoff;
+  if (const tinygltf::Value* transmission = extension(mat, "KHR_materials_transmission")) {
+    t.transmission = std::clamp(number(*transmission, "transmissionFactor", 0), 0.0, 1.0);
+    out.transmission_texture = texture(m, texture_index(*transmission, "transmissionTexture"));
+  }
+  if (const tinygltf::Value* ior = extension(mat, "KHR_materials_ior")) t.ior = std::clamp(number(*ior, "ior", 1.5), 1.0, 4.0);
+  if (const tinygltf::Value* volume = extension(mat, "KHR_materials_volume")) {
+    t.thickness = std::max(number(*volume, "thicknessFactor", 0), 0.0) * thickness_scale;
+    t.volume = t.thickness > 0 ? VolumeKind::solid : VolumeKind::thin_walled;
+    t.attenuation_distance = std::clamp(number(*volume, "attenuationDistance", 1e30), 1e-6, 1e30);
+    if (volume->Has("attenuationColor") && volume->Get("attenuationColor").IsArray() && volume->Get("attenuationColor").ArrayLen() == 3) {
+      for (int i = 0; i < 3; ++i) t.attenuation_color[size_t(i)] = std::clamp(volume->Get("attenuationColor").Get(i).GetNumberAsDouble(), 0.0, 1.0);
+    }
+    out.thickness_texture = texture(m, texture_index(*volume, "thicknessTexture"));
+  }
+}
+
 GltfPrimitive primitive(const tinygltf::Model& m, const tinygltf::Primitive& p, const Mat4& to_model) {
   GltfPrimitive out;
   const auto position = p.attributes.find("POSITION");
@@ -167,6 +218,7 @@ GltfPrimitive primitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
     out.base_color_texture = texture(m, mat->pbrMetallicRoughness.baseColorTexture.index);
     if (mat->emissiveFactor.size() == 3) out.emissive = {mat->emissiveFactor[0], mat->emissiveFactor[1], mat->emissiveFactor[2]};
     out.emissive_texture = texture(m, mat->emissiveTexture.index);
+    read_translucency(m, *mat, length_scale(to_model), out);
   }
   return out;
 }
@@ -188,12 +240,26 @@ void note_once(std::vector<std::string>& notes, std::string note) {
   if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(std::move(note));
 }
 
-// Materials' features the passes do not draw: extensions and alpha modes other than opaque.
+// The material extensions the passes draw (the translucency passes, scene.h's Translucency).
+bool drawn_extension(const std::string& name) {
+  return name == "KHR_materials_transmission" || name == "KHR_materials_ior" || name == "KHR_materials_volume";
+}
+
+// Materials' features the passes do not draw: other extensions, the textures of the drawn
+// ones (their factors alone are used), and primitive modes other than triangles.
 std::vector<std::string> ignored_features(const tinygltf::Model& m) {
   std::vector<std::string> notes;
   for (const tinygltf::Material& mat : m.materials) {
-    for (const auto& [extension, value] : mat.extensions) note_once(notes, extension + " (ignored: drawn opaque)");
-    if (!mat.alphaMode.empty() && mat.alphaMode != "OPAQUE") note_once(notes, "alphaMode " + mat.alphaMode + " (drawn opaque)");
+    for (const auto& [name, value] : mat.extensions) {
+      if (!drawn_extension(name)) note_once(notes, name + " (ignored: drawn opaque)");
+    }
+    if (const tinygltf::Value* t = extension(mat, "KHR_materials_transmission"); t && texture_index(*t, "transmissionTexture") >= 0) {
+      note_once(notes, "KHR_materials_transmission transmissionTexture (ignored: the factor alone)");
+    }
+    if (const tinygltf::Value* v = extension(mat, "KHR_materials_volume"); v && texture_index(*v, "thicknessTexture") >= 0) {
+      note_once(notes, "KHR_materials_volume thicknessTexture (ignored: the factor alone)");
+    }
+    if (mat.alphaMode == "MASK") note_once(notes, "alphaMode MASK (cut in the camera's view; the shadow maps are not cut)");
   }
   for (const tinygltf::Mesh& mesh : m.meshes) {
     for (const tinygltf::Primitive& p : mesh.primitives) {
@@ -251,6 +317,19 @@ GltfModel load_gltf(const std::string& path) {
     model.images.push_back({path + " image " + std::to_string(i) + (name.empty() ? "" : " (" + name + ")"), std::move(m.images[i].image)});
   }
   return model;
+}
+
+void mark_translucent_gltf_objects(Scene& scene) {
+  for (Object& object : scene.objects) {
+    if (object.shape != Shape::gltf) continue;
+    try {
+      const GltfModel model = load_gltf(object.file);
+      object.translucent_in_file = std::any_of(model.primitives.begin(), model.primitives.end(),
+                                               [](const GltfPrimitive& p) { return p.translucency.translucent(); });
+    } catch (const std::exception&) {
+      // Left unmarked: the scene pass's checks report the file.
+    }
+  }
 }
 
 }  // namespace volgraph::plumbing

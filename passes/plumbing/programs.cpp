@@ -1,5 +1,6 @@
 #include "passes/plumbing/programs.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -42,19 +43,52 @@ ComputeProgram create_compute_program(rhi::Device& device, const std::string& sh
   return program;
 }
 
-RenderProgram create_render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex,
-                                    const std::string& fragment) {
+namespace {
+
+bool same_entries(const rhi::BindGroupLayoutDesc& a, const rhi::BindGroupLayoutDesc& b) {
+  if (a.entries.size() != b.entries.size()) return false;
+  for (size_t i = 0; i < a.entries.size(); ++i) {
+    const rhi::LayoutEntry &x = a.entries[i], &y = b.entries[i];
+    if (x.binding != y.binding || x.visibility != y.visibility || x.type != y.type || x.texture_kind != y.texture_kind ||
+        x.storage_format != y.storage_format || x.filtered != y.filtered || x.storage_access != y.storage_access) {
+      return false;
+    }
+  }
+  return true;
+}
+
+RenderProgram render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex, const std::string& fragment,
+                             const RenderProgram* layouts_of) {
   std::vector<rhi::ShaderStageCode> stages = {{spirv_of(vertex), rhi::shader_stage::vertex}};
   if (!fragment.empty()) stages.push_back({spirv_of(fragment), rhi::shader_stage::fragment});
   RenderProgram program;
   program.layout_descs = rhi::reflect_bind_group_layouts(stages, desc.label);
-  program.layouts = create_layouts(device, program.layout_descs);
+  if (layouts_of) {
+    const bool same = layouts_of->layout_descs.size() == program.layout_descs.size() &&
+                      std::equal(program.layout_descs.begin(), program.layout_descs.end(), layouts_of->layout_descs.begin(), same_entries);
+    if (!same) throw std::logic_error(desc.label + ": its shaders' sets differ from the program whose layouts it shares");
+    program.layouts = layouts_of->layouts;
+  } else {
+    program.layouts = create_layouts(device, program.layout_descs);
+  }
   program.uniform_blocks = rhi::reflect_uniform_blocks(stages, desc.label);
   desc.vertex_module = device.create_shader_module(vertex, stages[0].spirv);
   if (!fragment.empty()) desc.fragment_module = device.create_shader_module(fragment, stages[1].spirv);
   desc.layouts = program.layouts;
   program.pipeline = device.create_render_pipeline(desc);
   return program;
+}
+
+}  // namespace
+
+RenderProgram create_render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex,
+                                    const std::string& fragment) {
+  return render_program(device, std::move(desc), vertex, fragment, nullptr);
+}
+
+RenderProgram create_render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex,
+                                    const std::string& fragment, const RenderProgram& layouts_of) {
+  return render_program(device, std::move(desc), vertex, fragment, &layouts_of);
 }
 
 void dispatch(rhi::CommandEncoder& encoder, const std::string& label, const ComputeProgram& program,

@@ -38,6 +38,11 @@ ComputeProgram create_compute_program(rhi::Device& device, const std::string& sh
 // shaders (`fragment` empty: depth only).
 RenderProgram create_render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex,
                                     const std::string& fragment);
+// A program that takes `layouts_of`'s bind group layouts, so the bind groups made for one
+// serve both (the translucency passes' draws share the objects' groups). Its shaders must
+// declare the same sets, binding for binding (throws std::logic_error otherwise).
+RenderProgram create_render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex,
+                                    const std::string& fragment, const RenderProgram& layouts_of);
 
 // One compute pass labelled `label`: the program's pipeline, `groups` bound at sets 0, 1, …
 // (a null id leaves its set unbound) and one invocation per element of `invocations`.

@@ -5,6 +5,7 @@
 #include "physics/camera.h"
 #include "passes/plumbing/gltf.h"
 #include "passes/plumbing/meshes.h"
+#include "physics/translucency.h"
 
 namespace volgraph::plumbing {
 
@@ -45,6 +46,19 @@ MaterialTextures config_textures(const Material* m) {
   return t;
 }
 
+// The block's translucency (shaders/include/object_uniforms.glsl's codes), lengths carried
+// from the object's space into the world's by the model matrix's `scale`.
+void pack_translucency(const Translucency& t, double scale, GpuObjectBlock& block) {
+  block.translucency[0] = float(t.alpha);
+  block.translucency[1] = float(t.transmission);
+  block.translucency[2] = float(t.ior);
+  block.translucency[3] = float(t.thickness * scale);
+  for (size_t i = 0; i < 3; ++i) block.attenuation[i] = float(sigma_t_from_color(t.attenuation_color[i], t.attenuation_distance * scale));
+  block.attenuation[3] = float(int(t.volume));
+  block.alpha_test[0] = float(int(t.alpha_mode));
+  block.alpha_test[1] = float(t.alpha_cutoff);
+}
+
 }  // namespace
 
 rhi::VertexBufferLayout SceneGeometry::vertex_layout() {
@@ -65,15 +79,23 @@ std::vector<rhi::BindGroupEntry> SceneGeometry::texture_entries(const MaterialTe
 
 void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
   using namespace rhi;
+  Vec3 object_min{1e30, 1e30, 1e30}, object_max{-1e30, -1e30, -1e30};
   for (size_t v = 0; v < object.vertices.size(); v += kMeshVertexFloats) {
     const Vec3 p = transform_point(object.model, {object.vertices[v], object.vertices[v + 1], object.vertices[v + 2]});
     for (size_t k = 0; k < 3; ++k) {
-      min_[k] = std::min(min_[k], p[k]);
-      max_[k] = std::max(max_[k], p[k]);
+      object_min[k] = std::min(object_min[k], p[k]);
+      object_max[k] = std::max(object_max[k], p[k]);
     }
+  }
+  for (size_t k = 0; k < 3; ++k) {
+    min_[k] = std::min(min_[k], object_min[k]);
+    max_[k] = std::max(max_[k], object_max[k]);
   }
   GpuObject g;
   g.index_count = uint32_t(object.indices.size());
+  g.translucent = object.translucency.translucent();
+  g.volume = object.translucency.volume;
+  g.center = physics::scaled(physics::add(object_min, object_max), 0.5);
   g.vertices = device.create_buffer({"object vertices", object.vertices.size() * 4, buffer_usage::vertex});
   device.write_buffer(g.vertices, 0, std::as_bytes(std::span(object.vertices)));
   g.indices = device.create_buffer({"object indices", object.indices.size() * 4, buffer_usage::index});
@@ -85,6 +107,7 @@ void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
     block.albedo[i] = float(object.albedo[i]);
     block.emissive[i] = float(object.emissive[i]);
   }
+  pack_translucency(object.translucency, length_scale(object.model), block);
   g.uniforms = device.create_buffer({"object", sizeof(GpuObjectBlock), buffer_usage::uniform});
   device.write_buffer(g.uniforms, 0, std::as_bytes(std::span(&block, 1)));
   std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, g.uniforms)};
@@ -107,24 +130,34 @@ SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, const Rend
       for (const GltfPrimitive& p : gltf.primitives) {
         // The images must outlive the loads the cache makes while binding (inside add).
         const MaterialTextures textures = gltf_textures(gltf, p);
-        add(device, {p.vertices, p.indices, model, p.base_color, p.emissive, textures});
+        add(device, {p.vertices, p.indices, model, p.base_color, p.emissive, p.translucency, textures});
       }
       continue;
     }
     const Mesh mesh = primitive_mesh(object.shape, object.size);
     const Material* m = scene.find_material(object.material);
     const MaterialTextures textures = config_textures(m);
-    add(device, {mesh.vertices, mesh.indices, model, m ? m->albedo : Vec3{0.8, 0.8, 0.8}, m ? m->emissive : Vec3{0, 0, 0}, textures});
+    const Material fallback;
+    const Material& material = m ? *m : fallback;
+    add(device, {mesh.vertices, mesh.indices, model, material.albedo, material.emissive, material.translucency, textures});
   }
 }
 
-void SceneGeometry::draw(rhi::CommandEncoder& encoder, uint32_t set) const {
+void SceneGeometry::draw(rhi::CommandEncoder& encoder, uint32_t set, Surfaces which) const {
   for (const GpuObject& o : objects_) {
-    encoder.set_bind_group(set, o.group);
-    encoder.set_vertex_buffer(0, o.vertices);
-    encoder.set_index_buffer(o.indices, rhi::IndexFormat::uint32);
-    encoder.draw_indexed(o.index_count);
+    if (o.translucent == (which == Surfaces::translucent)) draw(encoder, set, o);
   }
+}
+
+void SceneGeometry::draw(rhi::CommandEncoder& encoder, uint32_t set, const GpuObject& o) {
+  encoder.set_bind_group(set, o.group);
+  encoder.set_vertex_buffer(0, o.vertices);
+  encoder.set_index_buffer(o.indices, rhi::IndexFormat::uint32);
+  encoder.draw_indexed(o.index_count);
+}
+
+bool SceneGeometry::any(Surfaces which) const {
+  return std::any_of(objects_.begin(), objects_.end(), [&](const GpuObject& o) { return o.translucent == (which == Surfaces::translucent); });
 }
 
 }  // namespace volgraph::plumbing

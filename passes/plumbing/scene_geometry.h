@@ -33,16 +33,27 @@ struct GpuObjectBlock {
   float normal_matrix[16];
   float albedo[4];
   float emissive[4];
-  static constexpr std::array<uint64_t, 4> offsets() {
-    return {offsetof(GpuObjectBlock, model), offsetof(GpuObjectBlock, normal_matrix), offsetof(GpuObjectBlock, albedo),
-            offsetof(GpuObjectBlock, emissive)};
+  float translucency[4];  // coverage α, transmission, IOR, shell or solid thickness (m, world)
+  float attenuation[4];   // σt per channel (1/m, world), volume kind (kVolume* codes)
+  float alpha_test[4];    // alpha mode (kAlpha* codes), cutoff
+  static constexpr std::array<uint64_t, 7> offsets() {
+    return {offsetof(GpuObjectBlock, model),        offsetof(GpuObjectBlock, normal_matrix), offsetof(GpuObjectBlock, albedo),
+            offsetof(GpuObjectBlock, emissive),     offsetof(GpuObjectBlock, translucency),  offsetof(GpuObjectBlock, attenuation),
+            offsetof(GpuObjectBlock, alpha_test)};
   }
 };
+
+// Which of the scene's surfaces a pass draws: the opaque ones (alpha mode opaque or mask,
+// no transmission) or the translucent ones (Translucency::translucent).
+enum class Surfaces : uint8_t { opaque, translucent };
 
 struct GpuObject {
   rhi::BufferId vertices, indices, uniforms;
   rhi::BindGroupId group;
   uint32_t index_count = 0;
+  bool translucent = false;
+  VolumeKind volume = VolumeKind::thin_walled;
+  Vec3 center{0, 0, 0};  // of its world-space bounds (translucent draws sort by it)
 };
 
 // A material's texture images (null: a factor alone).
@@ -67,8 +78,12 @@ class SceneGeometry {
   // World-space bounds of every object (for fitting light projections).
   Vec3 bounds_min() const { return min_; }
   Vec3 bounds_max() const { return max_; }
-  // Binds set `set` and draws every object (the pipeline is set by the caller).
-  void draw(rhi::CommandEncoder& encoder, uint32_t set) const;
+  // Binds set `set` and draws every object of the kind (the pipeline is set by the caller).
+  void draw(rhi::CommandEncoder& encoder, uint32_t set, Surfaces which = Surfaces::opaque) const;
+  // Binds set `set` and draws one object.
+  static void draw(rhi::CommandEncoder& encoder, uint32_t set, const GpuObject& object);
+  // Whether any object is of the kind.
+  bool any(Surfaces which) const;
 
  private:
   struct ObjectData {
@@ -76,6 +91,7 @@ class SceneGeometry {
     const std::vector<uint32_t>& indices;
     const physics::Mat4& model;
     Vec3 albedo, emissive;
+    const Translucency& translucency;
     const MaterialTextures& textures;
   };
   void add(rhi::Device& device, const ObjectData& object);

@@ -10,5 +10,7 @@ layout(set = 1, binding = 3) uniform sampler material_sampler;
 
 vec3 material_albedo(vec3 factor, vec2 uv) { return factor * texture(sampler2D(base_color_texture, material_sampler), uv).rgb; }
 vec3 material_emission(vec3 factor, vec2 uv) { return factor * texture(sampler2D(emissive_texture, material_sampler), uv).rgb; }
+// Coverage α: the factor times the base colour texture's alpha (stored linear).
+float material_coverage(float factor, vec2 uv) { return factor * texture(sampler2D(base_color_texture, material_sampler), uv).a; }
 
 #endif

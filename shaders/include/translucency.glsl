@@ -99,6 +99,10 @@ SurfaceLayer fogged_layer(SurfaceLayer layer, vec3 in_scattered, vec3 media_tran
   return layer;
 }
 
+// −ln T per channel, T held at ≥ 1e-4 (an optical depth of at most 9.2 a layer: a sum of
+// 64 stays far inside half float's range, and e^−9.2 is black to an 8-bit image).
+vec3 transmittance_depth(vec3 transmittance) { return -log(max(transmittance, vec3(1e-4))); }
+
 // McGuire & Bavoil 2013's wide-range depth weight, clamped to [1e-2, 3e3] and held so one
 // layer of radiance `peak` adds at most 65504/64 to a half-float accumulation.
 float oit_weight(float depth, float opacity, float peak) {

@@ -1,0 +1,316 @@
+// translucency: the scene's translucent surfaces (RTR4 §14.5.1) over the lit, fogged
+// opaque colour. Each surface is a layer, C = radiance + transmittance ⊙ C_behind
+// (physics::surface_layer, shaders/include/translucent_surface.glsl), lit as the opaque
+// scene is (the scene pass's own frame block), and seen through the froxel volume's
+// media in front of it where one is wired (physics::fogged_layer). Variants compose the
+// layers:
+// - sorted: object by object from the farthest (their bounds' centres) to the nearest,
+//   each drawn twice — × its transmittance, then + its radiance (coloured transmittance
+//   with plain blending) — a double-sided one back faces first. Exact where each object
+//   covers a pixel at most once per face set (convex objects, planes).
+// - weighted_oit: every surface in one draw in any order (McGuire & Bavoil 2013, with
+//   McGuire 2015's coloured transmission): the transmittances multiply exactly (their
+//   optical depths add), the radiance is a depth-weighted mean; resolved onto the colour
+//   in two draws.
+// Solid objects' paths inside end at their back faces (a step draws them into back_depth)
+// or at the opaque surface, whichever is nearer: convex solids, one per pixel.
+#include "graph/execute/pass_execution.h"
+#include "graph/scene/scene.h"
+#include "passes/fog/fog_frame.h"
+#include "passes/plumbing/programs.h"
+#include "passes/plumbing/scene_geometry.h"
+#include "passes/plumbing/scene_lighting.h"
+#include "passes/plumbing/shadow_view.h"
+#include "passes/plumbing/textures.h"
+#include "passes/translucency/translucency_passes.h"
+#include "passes/uniform_mirrors.h"
+#include "physics/camera.h"
+
+namespace volgraph {
+namespace {
+
+// std140 mirror of translucent_surface.glsl's TranslucencyBlock.
+struct GpuTranslucencyBlock {
+  float camera[4];       // xyz position, w near (m)
+  float environment[4];  // rgb radiance the specular reflection sees, w far (m)
+  float options[4];      // x: 1 where a froxel volume is wired
+  static constexpr std::array<uint64_t, 3> offsets() {
+    return {offsetof(GpuTranslucencyBlock, camera), offsetof(GpuTranslucencyBlock, environment), offsetof(GpuTranslucencyBlock, options)};
+  }
+};
+
+struct TranslucencyTable : PassTable {
+  TranslucencyTable()
+      : PassTable("translucency", PassKind::graphics,
+                  "Translucent surfaces (coverage, coloured transmittance through a thin wall, shell or solid, Fresnel reflection) "
+                  "over the scene's colour, lit as the opaque scene and fogged at their own depth.") {
+    decl.needs = feature_bit(SceneFeature::translucent_objects);
+  }
+  // Variants.
+  VariantHandle sorted = variant("sorted", "objects from the farthest to the nearest, each × its transmittance then + its radiance");
+  VariantHandle weighted_oit = variant(
+      "weighted_oit", "weighted blended order-independent transparency (McGuire & Bavoil 2013; coloured transmission, McGuire 2015)");
+  // Parameters.
+  ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
+  // Slots.
+  SlotHandle color = inout("color", ResourceKind::texture2d, Usage::color_attachment_load, "the scene's linear radiance, fogged");
+  SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the opaque scene's depth", {.format = Format::d32_float});
+  SlotHandle frame = input("frame", ResourceKind::buffer, Usage::uniform_read, "the scene pass's lighting block (scene.frame)");
+  SlotHandle shadow_map = optional_input("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map",
+                                         {.format = Format::d32_float});
+  SlotHandle light_view = optional_input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view");
+  SlotHandle fog_frame = optional_input("fog_frame", ResourceKind::buffer, Usage::uniform_read, "froxel_voxelize's frame block");
+  SlotHandle integrated_scattering = optional_input("integrated_scattering", ResourceKind::texture3d, Usage::sampled,
+                                                    "from scatter_integrate: the media in front of each surface");
+  SlotHandle integrated_transmittance =
+      optional_input("integrated_transmittance", ResourceKind::texture3d, Usage::sampled, "from scatter_integrate");
+  // Internal targets.
+  SlotHandle back_depth = internal("back_depth", ResourceKind::texture2d, Format::d32_float, SizeSpec::of_output(),
+                                   "the nearest back face of the solid translucent objects");
+  SlotHandle oit_accumulation = internal("oit_accumulation", ResourceKind::texture2d, Format::rgba16_float, SizeSpec::of_output(),
+                                         "weighted_oit: Σ w·radiance, Σ w·opacity");
+  SlotHandle oit_optical_depth = internal("oit_optical_depth", ResourceKind::texture2d, Format::rgba16_float, SizeSpec::of_output(),
+                                      "weighted_oit: Σ −ln T per channel, the layers' transmittances multiplied");
+  // Steps.
+  StepHandle back_faces = step("back_faces", PassKind::graphics, with_surface_inputs({{back_depth, Usage::depth_attachment}}));
+  StepHandle surfaces = step("surfaces", PassKind::graphics,
+                             with_surface_inputs({{color, Usage::color_attachment_load}, {back_depth, Usage::sampled}}));
+  StepHandle accumulate = step("accumulate", PassKind::graphics,
+                               with_surface_inputs({{oit_accumulation, Usage::color_attachment}, {oit_optical_depth, Usage::color_attachment},
+                                                    {back_depth, Usage::sampled}}));
+  StepHandle resolve = step("resolve", PassKind::graphics,
+                            {{color, Usage::color_attachment_load}, {oit_accumulation, Usage::sampled}, {oit_optical_depth, Usage::sampled}});
+
+ private:
+  // What every step that shades surfaces reads, beside its own targets.
+  std::vector<std::pair<SlotHandle, Usage>> with_surface_inputs(std::vector<std::pair<SlotHandle, Usage>> uses) const {
+    for (const SlotHandle s : {depth, shadow_map, integrated_scattering, integrated_transmittance}) uses.push_back({s, Usage::sampled});
+    for (const SlotHandle s : {frame, light_view, fog_frame}) uses.push_back({s, Usage::uniform_read});
+    return uses;
+  }
+};
+
+// The surfaces' programs: one per blend and face set, sharing one set of bind group layouts.
+struct SurfacePrograms {
+  plumbing::RenderProgram transmittance_back, radiance_back, transmittance_front, radiance_front;  // sorted
+  plumbing::RenderProgram accumulate_all, accumulate_front;                                       // weighted_oit
+  plumbing::RenderProgram back_depth;                                                             // the back faces' depth
+};
+
+class TranslucencyExecution final : public PassExecution {
+ public:
+  explicit TranslucencyExecution(const TranslucencyTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    using rhi::BlendMode;
+    using rhi::CullMode;
+    const Format color = s.desc(t_.color).format;
+    const auto surface = [&](const char* label, const char* fragment, std::vector<rhi::ColorTargetState> targets, CullMode cull,
+                             const plumbing::RenderProgram* like) {
+      rhi::RenderPipelineDesc pd;
+      pd.label = s.name() + " " + label;
+      pd.vertex_buffers = {plumbing::SceneGeometry::vertex_layout()};
+      pd.colors = std::move(targets);
+      pd.cull = cull;
+      return like ? plumbing::create_render_program(s.device, pd, "scene.vert", fragment, *like)
+                  : plumbing::create_render_program(s.device, pd, "scene.vert", fragment);
+    };
+    SurfacePrograms& p = programs_;
+    p.transmittance_back = surface("× transmittance (back faces)", "translucency_transmittance.frag", {{color, BlendMode::multiply}},
+                                   CullMode::front, nullptr);
+    const plumbing::RenderProgram* like = &p.transmittance_back;
+    p.radiance_back = surface("+ radiance (back faces)", "translucency_radiance.frag", {{color, BlendMode::additive}}, CullMode::front, like);
+    p.transmittance_front = surface("× transmittance", "translucency_transmittance.frag", {{color, BlendMode::multiply}}, CullMode::back, like);
+    p.radiance_front = surface("+ radiance", "translucency_radiance.frag", {{color, BlendMode::additive}}, CullMode::back, like);
+    const std::vector<rhi::ColorTargetState> oit = {{Format::rgba16_float, BlendMode::additive}, {Format::rgba16_float, BlendMode::additive}};
+    p.accumulate_all = surface("accumulate", "translucency_accumulate.frag", oit, CullMode::none, like);
+    p.accumulate_front = surface("accumulate (front faces)", "translucency_accumulate.frag", oit, CullMode::back, like);
+    {
+      rhi::RenderPipelineDesc pd;
+      pd.label = s.name() + " back faces' depth";
+      pd.vertex_buffers = {plumbing::SceneGeometry::vertex_layout()};
+      pd.depth = {Format::d32_float, true, rhi::CompareFunction::less};
+      pd.cull = CullMode::front;
+      p.back_depth = plumbing::create_render_program(s.device, pd, "scene.vert", "translucency_depth.frag", *like);
+    }
+    resolve_ = {resolve_program(s, color, BlendMode::multiply, "translucency_oit_revealage.frag"),
+                resolve_program(s, color, BlendMode::additive, "translucency_oit_radiance.frag")};
+    plumbing::check_uniform_mirror<GpuSceneFrame>(*like, 0, 0, s.name() + " frame (the scene pass's)");
+    plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(*like, 2, 2, s.name() + " light_view");
+    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(*like, 3, 0, s.name() + " fog_frame");
+    block_ = plumbing::create_checked_uniform_block(s.device, *like, 0, 1, s.name() + " translucency", GpuTranslucencyBlock{});
+    geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, *like);
+    textures_ = std::make_unique<plumbing::TextureCache>(s.device);
+    make_stand_ins(s);
+  }
+
+  void record(PassContext& c) override {
+    if (c.step_is(t_.back_faces)) return record_back_faces(c);
+    if (c.step_is(t_.surfaces) && c.variant_is(t_.sorted)) return record_sorted(c);
+    if (c.step_is(t_.accumulate) && c.variant_is(t_.weighted_oit)) return record_accumulate(c);
+    if (c.step_is(t_.resolve) && c.variant_is(t_.weighted_oit)) return record_resolve(c);
+  }
+
+ private:
+  static plumbing::RenderProgram resolve_program(const PassSetup& s, Format color, rhi::BlendMode blend, const char* fragment) {
+    rhi::RenderPipelineDesc pd;
+    pd.label = s.name() + " " + fragment;
+    pd.colors = {{color, blend}};
+    return plumbing::create_render_program(s.device, pd, "fullscreen.vert", fragment);
+  }
+
+  // What the sets bind where nothing is wired: a shadow view that shadows no light, a
+  // froxel frame and volume the shader does not read (options.x = 0).
+  void make_stand_ins(PassSetup& s) {
+    plumbing::ShadowViewBlock no_shadow{};
+    no_shadow.params[3] = -1;
+    no_shadow_view_ = plumbing::create_uniform_buffer(s.device, s.name() + " no shadow view", std::as_bytes(std::span(&no_shadow, 1)));
+    const fog::GpuFogFrame no_fog{};
+    no_fog_frame_ = plumbing::create_uniform_buffer(s.device, s.name() + " no froxel frame", std::as_bytes(std::span(&no_fog, 1)));
+    rhi::TextureDesc volume;
+    volume.label = s.name() + " no froxel volume";
+    volume.kind = ResourceKind::texture3d;
+    volume.format = Format::rgba16_float;
+    volume.size = {1, 1, 1};
+    volume.usage = rhi::texture_usage::sampled | rhi::texture_usage::copy_dst;
+    no_volume_texture_ = s.device.create_texture(volume);
+    const std::array<std::byte, 8> zero{};
+    s.device.write_texture(no_volume_texture_, zero);
+    no_volume_ = s.device.create_view(no_volume_texture_);
+  }
+
+  void write_block(PassContext& c) {
+    const Scene& scene = *c.scene;
+    GpuTranslucencyBlock b{};
+    for (size_t i = 0; i < 3; ++i) b.camera[i] = float(scene.camera.position[i]);
+    b.camera[3] = float(scene.camera.near);
+    // The environment the reflection sees: the background, or under an atmosphere the sky's mean radiance.
+    const Vec3 environment = scene.atmosphere ? lighting_.sky_ambient_radiance(scene) : scene.background;
+    for (size_t i = 0; i < 3; ++i) b.environment[i] = float(environment[i]);
+    b.environment[3] = float(scene.camera.far);
+    b.options[0] = fogged(c) ? 1.0f : 0.0f;
+    c.device.write_buffer(block_, 0, std::as_bytes(std::span(&b, 1)));
+  }
+
+  bool fogged(const PassSetup& c) const {
+    return c.bound(t_.fog_frame) && c.bound(t_.integrated_scattering) && c.bound(t_.integrated_transmittance);
+  }
+  bool shadowed(const PassSetup& c) const { return c.bound(t_.shadow_map) && c.bound(t_.light_view) && c.param(t_.shadows); }
+
+  // Sets 0, 2 and 3 of the surface programs; `back` the solid objects' back-face depth
+  // (a stand-in while it is being drawn).
+  void bind_surface_sets(PassContext& c, rhi::TextureViewId back) {
+    using rhi::BindGroupEntry;
+    const plumbing::RenderProgram& p = programs_.transmittance_back;
+    const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
+    c.encoder.set_bind_group(0, c.bind_group(p.layouts[0], {BindGroupEntry::of(0, c.buffer(t_.frame)), BindGroupEntry::of(1, block_),
+                                                            BindGroupEntry::of(2, c.view(t_.depth)), BindGroupEntry::of(3, back),
+                                                            BindGroupEntry::of(4, nearest)}));
+    const bool shadow = shadowed(c);
+    c.encoder.set_bind_group(2, c.bind_group(p.layouts[2], {BindGroupEntry::of(0, shadow ? c.view(t_.shadow_map) : textures_->white()),
+                                                            BindGroupEntry::of(1, nearest),
+                                                            BindGroupEntry::of(2, shadow ? c.buffer(t_.light_view) : no_shadow_view_)}));
+    const bool fog = fogged(c);
+    c.encoder.set_bind_group(3, c.bind_group(p.layouts[3], {BindGroupEntry::of(0, fog ? c.buffer(t_.fog_frame) : no_fog_frame_),
+                                                            BindGroupEntry::of(1, fog ? c.view(t_.integrated_scattering) : no_volume_),
+                                                            BindGroupEntry::of(2, fog ? c.view(t_.integrated_transmittance) : no_volume_),
+                                                            BindGroupEntry::of(3, c.sampler(rhi::StockSampler::trilinear_clamp))}));
+  }
+
+  // The translucent objects from the farthest to the nearest (their bounds' centres).
+  std::vector<const plumbing::GpuObject*> back_to_front(const Scene& scene) const {
+    std::vector<const plumbing::GpuObject*> order;
+    for (const plumbing::GpuObject& o : geometry_->objects()) {
+      if (o.translucent) order.push_back(&o);
+    }
+    const auto distance = [&](const plumbing::GpuObject* o) {
+      const Vec3 d = physics::sub(o->center, scene.camera.position);
+      return physics::dot(d, d);
+    };
+    std::stable_sort(order.begin(), order.end(), [&](auto* a, auto* b) { return distance(a) > distance(b); });
+    return order;
+  }
+
+  void record_back_faces(PassContext& c) {
+    write_block(c);
+    rhi::RenderPassDesc pass;
+    pass.label = c.name();
+    pass.depth = {c.view(t_.back_depth), rhi::LoadOp::clear, 1.0f, false};
+    c.encoder.begin_render_pass(pass);
+    c.encoder.set_pipeline(programs_.back_depth.pipeline);
+    bind_surface_sets(c, textures_->white());
+    for (const plumbing::GpuObject& o : geometry_->objects()) {
+      if (o.translucent && o.volume == VolumeKind::solid) plumbing::SceneGeometry::draw(c.encoder, 1, o);
+    }
+    c.encoder.end_render_pass();
+  }
+
+  void record_sorted(PassContext& c) {
+    rhi::RenderPassDesc pass;
+    pass.label = c.name();
+    pass.colors = {{c.view(t_.color), rhi::LoadOp::load}};
+    c.encoder.begin_render_pass(pass);
+    bind_surface_sets(c, c.view(t_.back_depth));
+    const SurfacePrograms& p = programs_;
+    for (const plumbing::GpuObject* o : back_to_front(*c.scene)) {
+      // A solid is seen through its front faces (its inside path reaches the back ones).
+      if (o->volume != VolumeKind::solid) draw_twice(c, *o, p.transmittance_back, p.radiance_back);
+      draw_twice(c, *o, p.transmittance_front, p.radiance_front);
+    }
+    c.encoder.end_render_pass();
+  }
+
+  static void draw_twice(PassContext& c, const plumbing::GpuObject& o, const plumbing::RenderProgram& attenuate,
+                         const plumbing::RenderProgram& add) {
+    for (const plumbing::RenderProgram* program : {&attenuate, &add}) {
+      c.encoder.set_pipeline(program->pipeline);
+      plumbing::SceneGeometry::draw(c.encoder, 1, o);
+    }
+  }
+
+  void record_accumulate(PassContext& c) {
+    rhi::RenderPassDesc pass;
+    pass.label = c.name();
+    pass.colors = {{c.view(t_.oit_accumulation), rhi::LoadOp::clear, {0, 0, 0, 0}}, {c.view(t_.oit_optical_depth), rhi::LoadOp::clear, {0, 0, 0, 0}}};
+    c.encoder.begin_render_pass(pass);
+    bind_surface_sets(c, c.view(t_.back_depth));
+    for (const plumbing::GpuObject& o : geometry_->objects()) {
+      if (!o.translucent) continue;
+      c.encoder.set_pipeline(o.volume == VolumeKind::solid ? programs_.accumulate_front.pipeline : programs_.accumulate_all.pipeline);
+      plumbing::SceneGeometry::draw(c.encoder, 1, o);
+    }
+    c.encoder.end_render_pass();
+  }
+
+  void record_resolve(PassContext& c) {
+    using rhi::BindGroupEntry;
+    rhi::RenderPassDesc pass;
+    pass.label = c.name();
+    pass.colors = {{c.view(t_.color), rhi::LoadOp::load}};
+    c.encoder.begin_render_pass(pass);
+    for (const plumbing::RenderProgram* p : {&resolve_[0], &resolve_[1]}) {
+      c.encoder.set_pipeline(p->pipeline);
+      c.encoder.set_bind_group(0, c.bind_group(p->layouts[0], {BindGroupEntry::of(0, c.view(t_.oit_accumulation)),
+                                                               BindGroupEntry::of(1, c.view(t_.oit_optical_depth)),
+                                                               BindGroupEntry::of(2, c.sampler(rhi::StockSampler::nearest_clamp))}));
+      c.encoder.draw(3);  // fullscreen.vert's one triangle
+    }
+    c.encoder.end_render_pass();
+  }
+
+  const TranslucencyTable& t_;
+  SurfacePrograms programs_;
+  std::array<plumbing::RenderProgram, 2> resolve_;
+  rhi::BufferId block_, no_shadow_view_, no_fog_frame_;
+  rhi::TextureId no_volume_texture_;
+  rhi::TextureViewId no_volume_;
+  std::unique_ptr<plumbing::SceneGeometry> geometry_;
+  std::unique_ptr<plumbing::TextureCache> textures_;
+  plumbing::SceneLighting lighting_;
+};
+
+}  // namespace
+
+PassDecl translucency_pass() { return pass_type<TranslucencyTable, TranslucencyExecution>(); }
+
+}  // namespace volgraph

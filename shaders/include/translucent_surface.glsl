@@ -1,0 +1,82 @@
+// The translucency passes' fragment body: one translucent surface as a layer (C = radiance
+// + transmittance ⊙ C_behind, physics/translucency.h's surface_layer), lit as the opaque
+// scene is (surface_irradiance.glsl), seen through the froxel volume's media in front of
+// it when one is wired (fogged_layer), and handed to `write_layer`, which the including
+// shader defines with `light_visibility` before including this file. Fragments behind the
+// opaque surface are dropped (the opaque depth is sampled: no depth attachment).
+#ifndef VOLGRAPH_TRANSLUCENT_SURFACE_GLSL
+#define VOLGRAPH_TRANSLUCENT_SURFACE_GLSL
+#include "depth_buffer.glsl"
+#include "froxel_sample.glsl"
+#include "material_textures.glsl"
+#include "surface_irradiance.glsl"
+#include "translucency.glsl"
+
+layout(set = 0, binding = 1) uniform TranslucencyBlock {
+  vec4 camera;       // xyz: the camera's position; w: its near plane (m)
+  vec4 environment;  // rgb: the radiance the specular reflection sees; w: the far plane (m)
+  vec4 options;      // x: 1 where a froxel volume is wired
+} translucency;
+layout(set = 0, binding = 2) uniform texture2D scene_depth;  // the opaque surfaces'
+layout(set = 0, binding = 3) uniform texture2D back_depth;   // the solid translucent objects' back faces
+layout(set = 0, binding = 4) uniform sampler nearest;
+
+layout(set = 3, binding = 0) uniform FogBlock { FogFrame f; } fog;
+layout(set = 3, binding = 1) uniform texture3D integrated_scattering;
+layout(set = 3, binding = 2) uniform texture3D integrated_transmittance;
+layout(set = 3, binding = 3) uniform sampler trilinear;
+
+layout(location = 0) in vec3 world_position;
+layout(location = 1) in vec3 world_normal;
+layout(location = 2) in vec2 texture_uv;
+
+float view_depth_of(float depth) { return linear_view_depth(depth, translucency.camera.w, translucency.environment.w); }
+
+// The path inside the object along the view ray, by its volume kind: none (thin-walled),
+// the shell crossed at the refracted angle, or (solid) from this fragment to the nearer of
+// the back faces and the opaque surface — the material's thickness where no back face lies
+// behind the fragment.
+float inside_path(float cos_view, float distance_to_fragment) {
+  const int kind = int(object.attenuation.w);
+  const float thickness = object.translucency.w;
+  if (kind == kVolumeThinWalled) return 0.0;
+  if (kind == kVolumeShell) return shell_path_length(thickness, object.translucency.z, cos_view);
+  const ivec2 px = ivec2(gl_FragCoord.xy);
+  const float end = min(texelFetch(sampler2D(back_depth, nearest), px, 0).r, texelFetch(sampler2D(scene_depth, nearest), px, 0).r);
+  if (end <= gl_FragCoord.z) return thickness;
+  const float z = view_depth_of(gl_FragCoord.z);
+  return (view_depth_of(end) - z) * distance_to_fragment / z;  // view depth to distance along this ray
+}
+
+void main() {
+  // The textures first (implicit derivatives need uniform control flow: before any discard).
+  const vec3 albedo = material_albedo(object.albedo.rgb, texture_uv);
+  const vec3 emission = material_emission(object.emissive.rgb, texture_uv);
+  const float coverage = int(object.alpha_test.x) == kAlphaBlend ? material_coverage(object.translucency.x, texture_uv) : 1.0;
+  if (gl_FragCoord.z >= texelFetch(sampler2D(scene_depth, nearest), ivec2(gl_FragCoord.xy), 0).r) discard;
+  vec3 n = normalize(world_normal);
+  if (!gl_FrontFacing) n = -n;
+  const vec3 to_camera = translucency.camera.xyz - world_position;
+  const float distance_to_fragment = length(to_camera);
+  const float cos_view = clamp(dot(n, to_camera / distance_to_fragment), 0.0, 1.0);
+  LayerInputs l;
+  l.alpha = coverage;
+  l.transmission = object.translucency.y;
+  l.albedo = albedo;
+  l.emissive = emission;
+  l.irradiance = surface_irradiance(world_position, n);
+  l.environment = translucency.environment.rgb;
+  l.reflectance = interface_reflectance(object.translucency.z, cos_view);
+  l.exit_reflectance = int(object.attenuation.w) == kVolumeThinWalled ? 0.0 : l.reflectance;
+  l.path_transmittance = exp(-object.attenuation.rgb * inside_path(cos_view, distance_to_fragment));
+  SurfaceLayer layer = surface_layer(l);
+  const float z = view_depth_of(gl_FragCoord.z);
+  if (translucency.options.x > 0.5) {
+    const vec2 uv = gl_FragCoord.xy / vec2(textureSize(sampler2D(scene_depth, nearest), 0));
+    const FogAtPixel media = froxel_fog_at(fog.f, integrated_scattering, integrated_transmittance, trilinear, uv, z);
+    layer = fogged_layer(layer, media.in_scatter, media.transmittance);
+  }
+  write_layer(layer, z);
+}
+
+#endif

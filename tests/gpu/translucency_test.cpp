@@ -1,0 +1,184 @@
+// The translucency pass against what optics gives exactly (RTR4 §14.5.1), on both
+// backends, with both variants (sorted, weighted_oit), over an emissive wall of radiance 1
+// (reflecting nothing) seen through one translucent box or sheet; tolerances are two fp16
+// steps of the colour target (rgba16_float) unless stated:
+// - a solid slab of σt = −ln(c)/d and thickness d, IOR 1, transmission 1, albedo 1: every
+//   pixel shows e^(−σt·d/|cos θ|), the path at the pixel's angle (c at normal incidence;
+//   weighted_oit within the half-float rounding of its summed optical depth);
+// - IOR 1.5, no absorption: the wall dimmed by (1 − F)² and the background reflected by F,
+//   F Schlick's at each pixel's angle (0.04 at normal incidence);
+// - IOR 1, transmission 1, albedo 1, no absorption: the colour is bit for bit the colour
+//   without the sheet (the pass is culled there);
+// - coverage 0.25 of a lit white sheet: 0.75·wall + 0.25·ρ/π·E exactly as the layer says;
+// - order: sorted draws the same image whatever the objects' order in the config (bit for
+//   bit), weighted_oit within 1e-3 (half-float sums in another order round differently),
+// - stress: attenuation colour 0, a shell 1 nm thick, IOR 4, a grazing view and a camera
+//   inside a solid:
+//   every value finite.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "graph/config/config.h"
+#include "graph/execute/executor.h"
+#include "passes/passes.h"
+#include "physics/camera.h"
+#include "physics/translucency.h"
+#include "tests/gpu/backends.h"
+
+namespace volgraph::testing {
+namespace {
+
+constexpr uint32_t kWidth = 24, kHeight = 16;
+
+// A camera 3 m in front of an emissive wall at z = −1 and `objects` (JSON) between,
+// through scene → translucency (variant) → linear colour.
+constexpr const char* kCamera = R"("camera": { "position": [0, 0, 3], "target": [0, 0, 0], "fov_y_deg": 40 },)";
+
+std::string config(const std::string& materials, const std::string& objects, const std::string& variant,
+                   const std::string& extra_scene = "", const std::string& camera = kCamera) {
+  return R"({ "output": { "size": [24, 16] },
+  "scene": { )" + camera + R"(
+             "background": { "radiance": [0.2, 0.3, 0.4] }, )" + extra_scene + R"(
+             "materials": { "wall": { "albedo": [0, 0, 0], "emissive": [1, 1, 1] }, )" + materials + R"( },
+             "objects": [ { "shape": "plane", "size": [100, 1, 100], "material": "wall",
+                            "transform": { "rotate_deg": [90, 0, 0], "translate": [0, 0, -1] } } )" + objects + R"( ] },
+  "graph": { "passes": [
+    { "name": "lit", "type": "scene" },
+    { "name": "glass", "type": "translucency", "variant": ")" + variant + R"(",
+      "inputs": { "color": "lit.color", "depth": "lit.depth", "frame": "lit.frame" } } ],
+    "outputs": ["glass.color"] } })";
+}
+
+double fp16_steps(double value) { return 2 * std::ldexp(1.0, std::ilogb(std::max(std::abs(value), 6.1e-5)) - 10); }
+
+class Translucency : public OnEachBackend<std::tuple<Backend, std::string>> {
+ protected:
+  Backend backend() const override { return std::get<0>(GetParam()); }
+  const std::string& variant() const { return std::get<1>(GetParam()); }
+  void SetUp() override {
+    register_builtin_passes(registry_);
+    OnEachBackend::SetUp();
+  }
+  Texels render(const std::string& text) {
+    const LoadedConfig loaded = load_config_text("translucency.json", text, registry_);
+    scene_ = loaded.config.scene;
+    Executor executor(device(), loaded.graph, &scene_, {});
+    executor.run_frame();
+    return executor.read_output(0);
+  }
+  // |cos θ| of pixel (i, j)'s ray to the slab's normal (z).
+  double cos_to_z(uint32_t i, uint32_t j) const { return std::abs(physics::pixel_ray(scene_.camera, kWidth, kHeight, i, j)[2]); }
+
+  PassRegistry registry_;
+  Scene scene_;
+};
+
+double at(const Texels& t, uint32_t i, uint32_t j, size_t c) { return t.rgba[4 * (j * t.width + i) + c]; }
+
+TEST_P(Translucency, ASolidSlabAbsorbsAlongThePathAtEachAngle) {
+  const std::array<double, 3> c{0.5, 0.25, 0.125};
+  const double d = 0.5;
+  // weighted_oit sums optical depths −ln T in a half-float target: T carries the relative
+  // error of two fp16 steps of −ln T (1.9e-3 at T = 0.11) on top of the colour's.
+  auto tolerance = [&](double want) {
+    const double oit = variant() == "weighted_oit" ? want * fp16_steps(-std::log(want)) : 0;
+    return fp16_steps(want) + 2e-4 * want + oit;
+  };
+  const Texels image = render(config(R"("glass": { "albedo": [1, 1, 1], "transmission": 1, "ior": 1, "volume": "solid",
+                                                  "attenuation_color": [0.5, 0.25, 0.125], "attenuation_distance": 0.5 })",
+                                     R"(, { "shape": "box", "size": [20, 20, 0.5], "material": "glass" })", variant()));
+  for (uint32_t j = 0; j < kHeight; ++j) {
+    for (uint32_t i = 0; i < kWidth; ++i) {
+      for (size_t k = 0; k < 3; ++k) {
+        const double want = physics::slab_transmittance(physics::sigma_t_from_color(c[k], d), d, cos_to_z(i, j));
+        EXPECT_NEAR(at(image, i, j, k), want, tolerance(want)) << "pixel " << i << "," << j << " channel " << k;
+      }
+    }
+  }
+}
+
+TEST_P(Translucency, GlassReflectsFresnelsShareAndPassesTheRest) {
+  const Texels image = render(config(R"("glass": { "albedo": [1, 1, 1], "transmission": 1, "ior": 1.5, "volume": "solid" })",
+                                     R"(, { "shape": "box", "size": [20, 20, 0.5], "material": "glass" })", variant()));
+  const std::array<double, 3> background{0.2, 0.3, 0.4};
+  EXPECT_DOUBLE_EQ(physics::interface_reflectance(1.5, 1.0), 0.04);
+  for (uint32_t j = 0; j < kHeight; ++j) {
+    for (uint32_t i = 0; i < kWidth; ++i) {
+      const double f = physics::interface_reflectance(1.5, cos_to_z(i, j));
+      for (size_t k = 0; k < 3; ++k) {
+        const double want = f * background[k] + (1 - f) * (1 - f);
+        EXPECT_NEAR(at(image, i, j, k), want, fp16_steps(want) + 1e-4) << "pixel " << i << "," << j << " channel " << k;
+      }
+    }
+  }
+}
+
+TEST_P(Translucency, IndexOneLeavesTheBackgroundUnchangedBitForBit) {
+  const std::string sheet = R"(, { "shape": "plane", "size": [20, 1, 20], "material": "clear", "transform": { "rotate_deg": [90, 0, 0] } })";
+  const Texels with = render(config(R"("clear": { "albedo": [1, 1, 1], "transmission": 1, "ior": 1 })", sheet, variant()));
+  const Texels without = render(config(R"("clear": { "albedo": [1, 1, 1] })", "", variant()));
+  ASSERT_EQ(with.rgba.size(), without.rgba.size());
+  for (size_t p = 0; p < with.rgba.size(); ++p) ASSERT_EQ(with.rgba[p], without.rgba[p]) << "float " << p;
+}
+
+TEST_P(Translucency, CoverageBlendsTheLitSurfaceOverWhatIsBehind) {
+  // A white sheet facing the camera, lit head-on by E = π: ρ/π·E = 1 where covered.
+  const std::string light = R"("lights": [ { "type": "directional", "direction": [0, 0, -1], "irradiance": [3.14159265, 3.14159265, 3.14159265] } ],)";
+  const Texels image = render(config(R"("veil": { "albedo": [1, 0.5, 0.25], "alpha": 0.25, "ior": 1 })",
+                                     R"(, { "shape": "plane", "size": [20, 1, 20], "material": "veil", "transform": { "rotate_deg": [90, 0, 0] } })",
+                                     variant(), light));
+  const std::array<double, 3> albedo{1, 0.5, 0.25};
+  for (uint32_t j = 0; j < kHeight; ++j) {
+    for (uint32_t i = 0; i < kWidth; ++i) {
+      for (size_t k = 0; k < 3; ++k) {
+        const double want = 0.75 * 1.0 + 0.25 * albedo[k] * 3.14159265 / M_PI;  // the wall is lit too, but reflects nothing
+        EXPECT_NEAR(at(image, i, j, k), want, fp16_steps(want)) << "pixel " << i << "," << j << " channel " << k;
+      }
+    }
+  }
+}
+
+// Two overlapping coloured sheets, in the config's order or reversed.
+std::string two_sheets(const std::string& variant, bool reversed) {
+  const std::string near = R"(, { "shape": "plane", "size": [2, 1, 2], "material": "red", "transform": { "rotate_deg": [90, 0, 0], "translate": [0.3, 0, 0.5] } })";
+  const std::string far = R"(, { "shape": "plane", "size": [2, 1, 2], "material": "blue", "transform": { "rotate_deg": [90, 0, 0], "translate": [-0.3, 0, 0] } })";
+  const std::string light = R"("lights": [ { "type": "directional", "direction": [0, 0, -1], "irradiance": [2, 2, 2] } ],)";
+  return config(R"("red": { "albedo": [1, 0.2, 0.1], "alpha": 0.5, "transmission": 0.5 }, "blue": { "albedo": [0.1, 0.3, 1], "alpha": 0.7, "transmission": 0.3 })",
+                reversed ? far + near : near + far, variant, light);
+}
+
+TEST_P(Translucency, TheImageDoesNotDependOnTheObjectsOrder) {
+  const Texels forward = render(two_sheets(variant(), false));
+  const Texels reversed = render(two_sheets(variant(), true));
+  ASSERT_EQ(forward.rgba.size(), reversed.rgba.size());
+  const double tolerance = variant() == "sorted" ? 0.0 : 1e-3;
+  for (size_t p = 0; p < forward.rgba.size(); ++p) {
+    ASSERT_NEAR(forward.rgba[p], reversed.rgba[p], tolerance * std::max(1.0f, std::abs(forward.rgba[p]))) << "float " << p;
+  }
+}
+
+TEST_P(Translucency, StaysFiniteAtTheLimits) {
+  const std::string materials = R"("black": { "albedo": [1, 1, 1], "transmission": 1, "volume": "solid", "attenuation_color": [0, 0, 0], "attenuation_distance": 1e-3 },
+    "shell": { "albedo": [1, 1, 1], "transmission": 1, "volume": "shell", "thickness": 1e-9, "attenuation_color": [0, 0.5, 1], "attenuation_distance": 1e-6 },
+    "opaque_glass": { "albedo": [0.5, 0.5, 0.5], "transmission": 0, "alpha": 0, "ior": 4 })";
+  const std::string objects = R"(, { "shape": "box", "size": [0.5, 0.5, 0.5], "material": "black", "transform": { "translate": [-0.6, 0, 0] } },
+    { "shape": "sphere", "size": [0.4, 0.4, 0.4], "material": "shell", "transform": { "translate": [0.6, 0, 0] } },
+    { "shape": "plane", "size": [20, 1, 20], "material": "opaque_glass", "transform": { "translate": [0, -0.5, 0] } })";
+  for (const std::string camera : {std::string(kCamera), std::string(R"("camera": { "position": [-0.6, 0, 0], "target": [-0.6, 0, -1], "fov_y_deg": 170, "near": 0.01 },)"),
+                                   std::string(R"("camera": { "position": [0, -0.49, 3], "target": [0, -0.5, -3], "fov_y_deg": 40 },)")}) {
+    const Texels image = render(config(materials, objects, variant(), "", camera));
+    for (size_t p = 0; p < image.rgba.size(); ++p) ASSERT_TRUE(std::isfinite(image.rgba[p])) << "float " << p;
+  }
+}
+
+std::string param_name(const ::testing::TestParamInfo<std::tuple<Backend, std::string>>& info) {
+  return std::string(backend_name(std::get<0>(info.param))) + "_" + std::get<1>(info.param);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, Translucency,
+                         ::testing::Combine(::testing::ValuesIn(gpu_backends()), ::testing::Values("sorted", "weighted_oit")), param_name);
+
+}  // namespace
+}  // namespace volgraph::testing

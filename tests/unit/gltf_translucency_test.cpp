@@ -1,0 +1,126 @@
+// glTF's alphaMode, KHR_materials_transmission, _ior and _volume as scene.h's Translucency.
+// AttenuationTest (Khronos sample, ../shared/assets/gltf) is an answer key: its top row's
+// base colours are the colours KHR_materials_volume's attenuation gives each column, so
+// every other row's transmittance through its thickness must equal them.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "graph/config/config.h"
+#include "passes/passes.h"
+#include "passes/plumbing/gltf.h"
+#include "physics/translucency.h"
+
+namespace volgraph {
+namespace {
+
+using plumbing::GltfModel;
+using plumbing::GltfPrimitive;
+using plumbing::load_gltf;
+
+const std::string kAssets = std::string(VOLGRAPH_SOURCE_DIR) + "/../shared/assets/gltf/";
+
+// The transmittance across the primitive's thickness: exp(−σt·d), σt by RTR4 eq. 14.23.
+Vec3 transmittance_through(const Translucency& t) {
+  Vec3 out;
+  for (size_t i = 0; i < 3; ++i) {
+    out[i] = std::exp(-physics::sigma_t_from_color(t.attenuation_color[i], t.attenuation_distance) * t.thickness);
+  }
+  return out;
+}
+
+// The primitive's extent along x (the cubes face the viewer along z; their edges are equal).
+double x_extent(const GltfPrimitive& p) {
+  double lo = 1e30, hi = -1e30;
+  for (size_t v = 0; v < p.vertices.size(); v += 8) {
+    lo = std::min(lo, double(p.vertices[v]));
+    hi = std::max(hi, double(p.vertices[v]));
+  }
+  return hi - lo;
+}
+
+// The file's nodes in order (one primitive each): the rows R2 (thicknessFactor = edge),
+// the labels, R4 (a unit cube scaled by its node), R3 (one mesh with a thickness texture),
+// R5 (unit cubes, attenuationDistance = 1 / the column's thickness), the grid, R1 (the key).
+constexpr size_t kThicknessRow = 0, kNodeScaleRow = 6, kDistanceRow = 12, kAnswerRow = 18;
+constexpr double kColumnThickness[5] = {1.0, 1.5, 2.0, 0.5, 0.25};
+
+TEST(GltfTranslucency, AttenuationTestsRowsMatchItsAnswerKey) {
+  const GltfModel m = load_gltf(kAssets + "AttenuationTest/AttenuationTest.glb");
+  ASSERT_EQ(m.primitives.size(), 23u);
+  for (size_t column = 0; column < 5; ++column) {
+    const GltfPrimitive& key = m.primitives[kAnswerRow + column];
+    EXPECT_EQ(key.translucency.transmission, 1);
+    EXPECT_EQ(key.translucency.volume, VolumeKind::thin_walled);  // the key has no volume: its colour is the answer
+    for (size_t row : {kThicknessRow, kNodeScaleRow, kDistanceRow}) {
+      const GltfPrimitive& p = m.primitives[row + column];
+      EXPECT_EQ(p.translucency.volume, VolumeKind::solid) << "row " << row << " column " << column;
+      const Vec3 t = transmittance_through(p.translucency);
+      for (size_t i = 0; i < 3; ++i) {
+        // The key's colours are printed to 10 digits; double rounding of exp/ln adds ~1e-15.
+        EXPECT_NEAR(t[i], key.base_color[i], 1e-9) << "row " << row << " column " << column << " channel " << i;
+      }
+    }
+    // The thickness is the cube's edge in the model's space: node scale applied (R4).
+    const GltfPrimitive& scaled = m.primitives[kNodeScaleRow + column];
+    EXPECT_NEAR(scaled.translucency.thickness, kColumnThickness[column], 1e-12);
+    EXPECT_NEAR(x_extent(scaled), scaled.translucency.thickness, 1e-5);
+    EXPECT_NEAR(x_extent(m.primitives[kThicknessRow + column]), m.primitives[kThicknessRow + column].translucency.thickness, 1e-5);
+  }
+  // The labels and the backdrop are opaque.
+  EXPECT_FALSE(m.primitives[5].translucency.translucent());
+  EXPECT_FALSE(m.primitives[17].translucency.translucent());
+  EXPECT_TRUE(m.primitives[11].thickness_texture);  // R3's texture is loaded (not yet sampled: named in `ignored`)
+}
+
+TEST(GltfTranslucency, TheVasesMaterialsKeepTheirModes) {
+  const GltfModel m = load_gltf(kAssets + "GlassVaseFlowers/GlassVaseFlowers.glb");
+  int mask = 0, blend = 0, transmitting = 0;
+  for (const GltfPrimitive& p : m.primitives) {
+    const Translucency& t = p.translucency;
+    if (t.alpha_mode == AlphaMode::mask) {
+      ++mask;
+      EXPECT_EQ(t.alpha_cutoff, 0.5);  // the file's default
+      EXPECT_FALSE(t.translucent());
+    }
+    if (t.alpha_mode == AlphaMode::blend) {
+      ++blend;
+      EXPECT_NEAR(t.alpha, 0.3, 1e-12);  // GlassAlpha's baseColorFactor alpha
+      EXPECT_TRUE(t.translucent());
+    }
+    if (t.transmission > 0) {
+      ++transmitting;
+      EXPECT_EQ(t.volume, VolumeKind::solid);
+      EXPECT_GT(t.thickness, 0);
+      EXPECT_EQ(t.attenuation_distance, 1e30);  // no attenuation given: clear glass
+      EXPECT_EQ(t.ior, 1.5);                    // no KHR_materials_ior: glTF's default
+    }
+  }
+  EXPECT_GT(mask, 0);
+  EXPECT_GT(blend, 0);
+  EXPECT_GT(transmitting, 0);
+}
+
+// The registry's annotator marks a glTF object whose file has translucent primitives, so
+// the scene has the feature the translucency pass needs; an opaque model is not marked.
+TEST(GltfTranslucency, TheAnnotatorMarksObjectsWithTranslucentMaterials) {
+  PassRegistry registry;
+  register_builtin_passes(registry);
+  auto scene_of = [&](const std::string& file) {
+    const std::string text = R"({ "output": { "size": [16, 16] },
+      "scene": { "camera": { "position": [0, 0.3, 1], "target": [0, 0.1, 0] },
+        "objects": [ { "shape": "gltf", "file": ")" + kAssets + file + R"(" } ],
+        "lights": [ { "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1] } ] },
+      "graph": { "passes": [ { "name": "c", "type": "clear" } ], "outputs": ["c.target"] } })";
+    return load_config_text("a.json", text, registry).config.scene;
+  };
+  const Scene vase = scene_of("GlassVaseFlowers/GlassVaseFlowers.glb");
+  EXPECT_TRUE(vase.objects.at(0).translucent_in_file);
+  EXPECT_TRUE(vase.features() & feature_bit(SceneFeature::translucent_objects));
+  const Scene suzanne = scene_of("Suzanne/Suzanne.gltf");
+  EXPECT_FALSE(suzanne.objects.at(0).translucent_in_file);
+  EXPECT_FALSE(suzanne.features() & feature_bit(SceneFeature::translucent_objects));
+}
+
+}  // namespace
+}  // namespace volgraph
