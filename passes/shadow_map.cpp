@@ -80,7 +80,8 @@ std::vector<ParamProblem> check_light(const PassDecl&, const Scene& scene, const
   return {{"light", problem}};
 }
 
-// Depth of the scene from the light (shaders/shadow.vert); its view goes to light_view.
+// Depth of the scene from the light (shaders/shadow.vert), alpha-masked texels cut
+// (shadow_mask.frag); its view goes to light_view.
 class ShadowMapExecution final : public PassExecution {
  public:
   explicit ShadowMapExecution(const ShadowMapTable& table) : t_(table) {}
@@ -89,11 +90,13 @@ class ShadowMapExecution final : public PassExecution {
     using namespace rhi;
     RenderPipelineDesc pd;
     pd.label = "shadow map";
-    pd.vertex_buffers = {plumbing::SceneGeometry::position_layout()};
+    pd.vertex_buffers = {plumbing::SceneGeometry::position_uv_layout()};
     pd.depth = {Format::d32_float, true, CompareFunction::less, 0.0f, float(s.param(t_.slope_bias))};
     pd.cull = CullMode::none;
-    program_ = plumbing::create_render_program(s.device, pd, "shadow.vert", "");
-    geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, program_);
+    masked_program_ = plumbing::create_render_program(s.device, pd, "shadow.vert", "shadow_mask.frag");
+    pd.label = "shadow map (depth only)";
+    program_ = plumbing::create_render_program(s.device, pd, "shadow.vert", "", masked_program_);
+    geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, masked_program_);
     // The view block is written every frame (here and to light_view): its layout is checked once.
     plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, 0, 0, s.name() + " light_view");
     view_ = s.device.create_buffer({"shadow view", sizeof(plumbing::ShadowViewBlock), buffer_usage::uniform});
@@ -123,9 +126,9 @@ class ShadowMapExecution final : public PassExecution {
     pass.depth = {c.view(t_.depth), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
     if (casts && !geometry_->objects().empty()) {
-      c.encoder.set_pipeline(program_.pipeline);
-      c.encoder.set_bind_group(0, c.bind_group(program_.layouts[0], {rhi::BindGroupEntry::of(0, view_)}));
-      geometry_->draw(c.encoder, 1);
+      const rhi::BindGroupId view = c.bind_group(program_.layouts[0], {rhi::BindGroupEntry::of(0, view_)});
+      draw_casters(c, program_, view, plumbing::Surfaces::solid_shadow_casters);
+      draw_casters(c, masked_program_, view, plumbing::Surfaces::masked_shadow_casters);
     }
     c.encoder.end_render_pass();
   }
@@ -161,8 +164,17 @@ class ShadowMapExecution final : public PassExecution {
   }
 
   const ShadowMapTable& t_;
+  // The objects of `which`, when there are any, by `program` (one of the two sharing layouts).
+  void draw_casters(PassContext& c, const plumbing::RenderProgram& program, rhi::BindGroupId view, plumbing::Surfaces which) {
+    if (!geometry_->any(which)) return;
+    c.encoder.set_pipeline(program.pipeline);
+    c.encoder.set_bind_group(0, view);
+    geometry_->draw(c.encoder, 1, which);
+  }
+
   std::unique_ptr<plumbing::SceneGeometry> geometry_;
-  plumbing::RenderProgram program_;
+  plumbing::RenderProgram program_;         // depth only
+  plumbing::RenderProgram masked_program_;  // alpha-tested: masked texels are holes
   rhi::BufferId view_;
 };
 

@@ -45,12 +45,15 @@ ComputeProgram create_compute_program(rhi::Device& device, const std::string& sh
 
 namespace {
 
-bool same_entries(const rhi::BindGroupLayoutDesc& a, const rhi::BindGroupLayoutDesc& b) {
-  if (a.entries.size() != b.entries.size()) return false;
-  for (size_t i = 0; i < a.entries.size(); ++i) {
-    const rhi::LayoutEntry &x = a.entries[i], &y = b.entries[i];
-    if (x.binding != y.binding || x.visibility != y.visibility || x.type != y.type || x.texture_kind != y.texture_kind ||
-        x.storage_format != y.storage_format || x.filtered != y.filtered || x.storage_access != y.storage_access) {
+// Whether a layout made for `layout` serves shaders declaring `shader`: every binding they
+// declare is there, of the same kind, visible to at least their stages (a layout may hold
+// bindings a pipeline's shaders do not use).
+bool serves(const rhi::BindGroupLayoutDesc& layout, const rhi::BindGroupLayoutDesc& shader) {
+  for (const rhi::LayoutEntry& x : shader.entries) {
+    const auto y = std::find_if(layout.entries.begin(), layout.entries.end(), [&](const rhi::LayoutEntry& e) { return e.binding == x.binding; });
+    if (y == layout.entries.end()) return false;
+    if ((x.visibility & ~y->visibility) != 0 || x.type != y->type || x.texture_kind != y->texture_kind ||
+        x.storage_format != y->storage_format || x.filtered != y->filtered || x.storage_access != y->storage_access) {
       return false;
     }
   }
@@ -64,10 +67,11 @@ RenderProgram render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, 
   RenderProgram program;
   program.layout_descs = rhi::reflect_bind_group_layouts(stages, desc.label);
   if (layouts_of) {
-    const bool same = layouts_of->layout_descs.size() == program.layout_descs.size() &&
-                      std::equal(program.layout_descs.begin(), program.layout_descs.end(), layouts_of->layout_descs.begin(), same_entries);
-    if (!same) throw std::logic_error(desc.label + ": its shaders' sets differ from the program whose layouts it shares");
+    bool fits = program.layout_descs.size() <= layouts_of->layout_descs.size();
+    for (size_t set = 0; fits && set < program.layout_descs.size(); ++set) fits = serves(layouts_of->layout_descs[set], program.layout_descs[set]);
+    if (!fits) throw std::logic_error(desc.label + ": its shaders declare bindings the layouts it shares do not hold");
     program.layouts = layouts_of->layouts;
+    program.layout_descs = layouts_of->layout_descs;
   } else {
     program.layouts = create_layouts(device, program.layout_descs);
   }

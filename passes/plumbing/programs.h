@@ -39,8 +39,9 @@ ComputeProgram create_compute_program(rhi::Device& device, const std::string& sh
 RenderProgram create_render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex,
                                     const std::string& fragment);
 // A program that takes `layouts_of`'s bind group layouts, so the bind groups made for one
-// serve both (the translucency passes' draws share the objects' groups). Its shaders must
-// declare the same sets, binding for binding (throws std::logic_error otherwise).
+// serve both (the translucency passes' draws share the objects' groups; the shadow map's
+// depth-only draws its masked draws'). Its shaders may use fewer bindings; those they
+// declare must be in those layouts, of the same kind (throws std::logic_error otherwise).
 RenderProgram create_render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex,
                                     const std::string& fragment, const RenderProgram& layouts_of);
 

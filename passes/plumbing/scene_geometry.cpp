@@ -66,6 +66,10 @@ rhi::VertexBufferLayout SceneGeometry::vertex_layout() {
   return {kMeshVertexFloats * 4, {{0, VertexFormat::float32x3, 0}, {1, VertexFormat::float32x3, 12}, {2, VertexFormat::float32x2, 24}}};
 }
 
+rhi::VertexBufferLayout SceneGeometry::position_uv_layout() {
+  return {kMeshVertexFloats * 4, {{0, rhi::VertexFormat::float32x3, 0}, {2, rhi::VertexFormat::float32x2, 24}}};
+}
+
 rhi::VertexBufferLayout SceneGeometry::position_layout() {
   return {kMeshVertexFloats * 4, {{0, rhi::VertexFormat::float32x3, 0}}};
 }
@@ -94,6 +98,8 @@ void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
   GpuObject g;
   g.index_count = uint32_t(object.indices.size());
   g.translucent = object.translucency.translucent();
+  g.casts_shadows = object.casts_shadows;
+  g.masked = object.translucency.alpha_mode == AlphaMode::mask;
   g.volume = object.translucency.volume;
   g.center = physics::scaled(physics::add(object_min, object_max), 0.5);
   g.vertices = device.create_buffer({"object vertices", object.vertices.size() * 4, buffer_usage::vertex});
@@ -130,7 +136,7 @@ SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, const Rend
       for (const GltfPrimitive& p : gltf.primitives) {
         // The images must outlive the loads the cache makes while binding (inside add).
         const MaterialTextures textures = gltf_textures(gltf, p);
-        add(device, {p.vertices, p.indices, model, p.base_color, p.emissive, p.translucency, textures});
+        add(device, {p.vertices, p.indices, model, p.base_color, p.emissive, p.translucency, textures, object.cast_shadows});
       }
       continue;
     }
@@ -139,13 +145,13 @@ SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, const Rend
     const MaterialTextures textures = config_textures(m);
     const Material fallback;
     const Material& material = m ? *m : fallback;
-    add(device, {mesh.vertices, mesh.indices, model, material.albedo, material.emissive, material.translucency, textures});
+    add(device, {mesh.vertices, mesh.indices, model, material.albedo, material.emissive, material.translucency, textures, object.cast_shadows});
   }
 }
 
 void SceneGeometry::draw(rhi::CommandEncoder& encoder, uint32_t set, Surfaces which) const {
   for (const GpuObject& o : objects_) {
-    if (o.translucent == (which == Surfaces::translucent)) draw(encoder, set, o);
+    if (o.is(which)) draw(encoder, set, o);
   }
 }
 
@@ -157,7 +163,7 @@ void SceneGeometry::draw(rhi::CommandEncoder& encoder, uint32_t set, const GpuOb
 }
 
 bool SceneGeometry::any(Surfaces which) const {
-  return std::any_of(objects_.begin(), objects_.end(), [&](const GpuObject& o) { return o.translucent == (which == Surfaces::translucent); });
+  return std::any_of(objects_.begin(), objects_.end(), [&](const GpuObject& o) { return o.is(which); });
 }
 
 }  // namespace volgraph::plumbing

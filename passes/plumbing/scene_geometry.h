@@ -44,16 +44,29 @@ struct GpuObjectBlock {
 };
 
 // Which of the scene's surfaces a pass draws: the opaque ones (alpha mode opaque or mask,
-// no transmission) or the translucent ones (Translucency::translucent).
-enum class Surfaces : uint8_t { opaque, translucent };
+// no transmission), the translucent ones (Translucency::translucent), or the opaque ones
+// whose object casts shadows (Object::cast_shadows; translucent surfaces cast none yet),
+// without or with an alpha mask (the shadow map's depth-only and alpha-tested draws).
+enum class Surfaces : uint8_t { opaque, translucent, solid_shadow_casters, masked_shadow_casters };
 
 struct GpuObject {
   rhi::BufferId vertices, indices, uniforms;
   rhi::BindGroupId group;
   uint32_t index_count = 0;
   bool translucent = false;
+  bool casts_shadows = true;
+  bool masked = false;  // alpha mode mask
   VolumeKind volume = VolumeKind::thin_walled;
   Vec3 center{0, 0, 0};  // of its world-space bounds (translucent draws sort by it)
+  bool is(Surfaces which) const {
+    switch (which) {
+      case Surfaces::opaque: return !translucent;
+      case Surfaces::translucent: return translucent;
+      case Surfaces::solid_shadow_casters: return !translucent && casts_shadows && !masked;
+      case Surfaces::masked_shadow_casters: return !translucent && casts_shadows && masked;
+    }
+    return false;
+  }
 };
 
 // A material's texture images (null: a factor alone).
@@ -75,6 +88,8 @@ class SceneGeometry {
   // or the position alone (depth passes).
   static rhi::VertexBufferLayout vertex_layout();
   static rhi::VertexBufferLayout position_layout();
+  // The position and texture coordinate (locations 0 and 2: alpha-tested depth passes).
+  static rhi::VertexBufferLayout position_uv_layout();
   // World-space bounds of every object (for fitting light projections).
   Vec3 bounds_min() const { return min_; }
   Vec3 bounds_max() const { return max_; }
@@ -93,6 +108,7 @@ class SceneGeometry {
     Vec3 albedo, emissive;
     const Translucency& translucency;
     const MaterialTextures& textures;
+    bool casts_shadows;
   };
   void add(rhi::Device& device, const ObjectData& object);
   std::vector<rhi::BindGroupEntry> texture_entries(const MaterialTextures& textures);

@@ -61,8 +61,9 @@ class Translucency : public OnEachBackend<std::tuple<Backend, std::string>> {
     register_builtin_passes(registry_);
     OnEachBackend::SetUp();
   }
-  Texels render(const std::string& text) {
-    const LoadedConfig loaded = load_config_text("translucency.json", text, registry_);
+  // `path` names the config (its includes resolve against its folder).
+  Texels render(const std::string& text, const std::string& path = "translucency.json") {
+    const LoadedConfig loaded = load_config_text(path, text, registry_);
     scene_ = loaded.config.scene;
     Executor executor(device(), loaded.graph, &scene_, {});
     executor.run_frame();
@@ -171,6 +172,49 @@ TEST_P(Translucency, StaysFiniteAtTheLimits) {
     const Texels image = render(config(materials, objects, variant(), "", camera));
     for (size_t p = 0; p < image.rgba.size(); ++p) ASSERT_TRUE(std::isfinite(image.rgba[p])) << "float " << p;
   }
+}
+
+// A sheet of coverage 1 (blend, IOR 1: no reflection) drawn by the translucency pass in
+// homogeneous fog (configs/graphs/translucency_froxel_fog.json) is fogged at its own depth
+// exactly as the same sheet drawn opaque is by froxel_apply: the same froxel lookup at the
+// same depth (froxel_sample.glsl). Behind it, 2 m further, a black wall shows the fog
+// alone: a pass that fogged the sheet at the opaque depth, or not at all, is far off
+// (checked below). The opaque sheet casts no shadow (cast_shadows false), as translucent
+// surfaces do not (a known limit), so that the fog behind it is lit alike.
+std::string fogged_sheet(const std::string& variant, const std::string& sheet_material) {
+  return R"({ "include": ["graphs/translucency_froxel_fog.json"], "output": { "size": [24, 16] },
+  "graph": { "passes": [ { "name": "glass", "variant": ")" + variant + R"(" },
+                         { "name": "fog_media", "params": { "near": 0.1, "far": 12, "slices": 64 } } ],
+             "outputs": ["glass.color"] },
+  "scene": { "camera": { "position": [0, 0, 3], "target": [0, 0, 0], "fov_y_deg": 40 },
+    "background": { "radiance": [0.2, 0.3, 0.4] },
+    "lights": [ { "type": "directional", "direction": [0, 0, -1], "irradiance": [2, 2, 2] } ],
+    "media": { "fog": { "albedo": [0.9, 0.9, 0.9], "extinction": [0.3, 0.3, 0.3] } },
+    "materials": { "wall": { "albedo": [0, 0, 0] }, "sheet": )" + sheet_material + R"( },
+    "objects": [ { "shape": "plane", "size": [100, 1, 100], "material": "wall", "transform": { "rotate_deg": [90, 0, 0], "translate": [0, 0, -2] } },
+                 { "shape": "plane", "size": [100, 1, 100], "material": "sheet", "cast_shadows": false,
+                   "transform": { "rotate_deg": [90, 0, 0] } } ] } })";
+}
+
+TEST_P(Translucency, FogIsAppliedAtTheTranslucentSurfacesOwnDepth) {
+  const std::string path = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/fogged_sheet.json";
+  const Texels translucent = render(fogged_sheet(variant(), R"({ "albedo": [0.8, 0.6, 0.4], "alpha": 1, "alpha_mode": "blend", "ior": 1 })"), path);
+  const Texels opaque = render(fogged_sheet(variant(), R"({ "albedo": [0.8, 0.6, 0.4] })"), path);
+  const Texels no_sheet = render(fogged_sheet(variant(), R"({ "albedo": [0.8, 0.6, 0.4], "alpha": 0, "alpha_mode": "blend", "ior": 1 })"), path);
+  ASSERT_EQ(translucent.rgba.size(), opaque.rgba.size());
+  double worst = 0, wall_gap = 1e30;
+  for (uint32_t j = 0; j < kHeight; ++j) {
+    for (uint32_t i = 0; i < kWidth; ++i) {
+      for (size_t k = 0; k < 3; ++k) {
+        const double want = at(opaque, i, j, k);
+        worst = std::max(worst, std::abs(at(translucent, i, j, k) - want) / want);
+        wall_gap = std::min(wall_gap, std::abs(at(no_sheet, i, j, k) - want) / want);
+      }
+    }
+  }
+  std::printf("fogged sheet: translucent vs opaque %.2e relative at worst; the wall behind differs by %.2f at least\n", worst, wall_gap);
+  EXPECT_LT(worst, 2e-3);     // two fp16 steps of the colour
+  EXPECT_GT(wall_gap, 0.05);  // the case can tell the depths apart
 }
 
 std::string param_name(const ::testing::TestParamInfo<std::tuple<Backend, std::string>>& info) {
