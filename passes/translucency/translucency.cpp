@@ -2,8 +2,9 @@
 // opaque colour. Each surface is a layer, C = radiance + transmittance ⊙ C_behind
 // (physics::surface_layer, shaders/include/translucent_surface.glsl), lit as the opaque
 // scene is (the scene pass's own frame block), and seen through the froxel volume's
-// media in front of it where one is wired (physics::fogged_layer). Variants compose the
-// layers:
+// media and the aerial-perspective volume's air in front of it where they are wired
+// (physics::fogged_layer, the fog then the air, as the graphs apply them to the opaque
+// colour). Variants compose the layers:
 // - sorted: object by object from the farthest (their bounds' centres) to the nearest,
 //   each drawn twice — × its transmittance, then + its radiance (coloured transmittance
 //   with plain blending) — a double-sided one back faces first. Exact where each object
@@ -33,7 +34,7 @@ namespace {
 struct GpuTranslucencyBlock {
   float camera[4];       // xyz position, w near (m)
   float environment[4];  // rgb radiance the specular reflection sees, w far (m)
-  float options[4];      // x: 1 where a froxel volume is wired
+  float options[4];      // x: 1 where a froxel volume is wired; y: 1 where an aerial-perspective volume is
   static constexpr std::array<uint64_t, 3> offsets() {
     return {offsetof(GpuTranslucencyBlock, camera), offsetof(GpuTranslucencyBlock, environment), offsetof(GpuTranslucencyBlock, options)};
   }
@@ -64,6 +65,11 @@ struct TranslucencyTable : PassTable {
                                                     "from scatter_integrate: the media in front of each surface");
   SlotHandle integrated_transmittance =
       optional_input("integrated_transmittance", ResourceKind::texture3d, Usage::sampled, "from scatter_integrate");
+  SlotHandle aerial_lookup =
+      optional_input("aerial_lookup", ResourceKind::buffer, Usage::uniform_read, "atmosphere_aerial_perspective's lookup: the air in front of each surface");
+  SlotHandle aerial_scattering = optional_input("aerial_scattering", ResourceKind::texture3d, Usage::sampled, "from atmosphere_aerial_perspective");
+  SlotHandle aerial_transmittance =
+      optional_input("aerial_transmittance", ResourceKind::texture3d, Usage::sampled, "from atmosphere_aerial_perspective");
   // Internal targets.
   SlotHandle back_depth = internal("back_depth", ResourceKind::texture2d, Format::d32_float, SizeSpec::of_output(),
                                    "the nearest back face of the solid translucent objects");
@@ -84,8 +90,10 @@ struct TranslucencyTable : PassTable {
  private:
   // What every step that shades surfaces reads, beside its own targets.
   std::vector<std::pair<SlotHandle, Usage>> with_surface_inputs(std::vector<std::pair<SlotHandle, Usage>> uses) const {
-    for (const SlotHandle s : {depth, shadow_map, integrated_scattering, integrated_transmittance}) uses.push_back({s, Usage::sampled});
-    for (const SlotHandle s : {frame, light_view, fog_frame}) uses.push_back({s, Usage::uniform_read});
+    for (const SlotHandle s : {depth, shadow_map, integrated_scattering, integrated_transmittance, aerial_scattering, aerial_transmittance}) {
+      uses.push_back({s, Usage::sampled});
+    }
+    for (const SlotHandle s : {frame, light_view, fog_frame, aerial_lookup}) uses.push_back({s, Usage::uniform_read});
     return uses;
   }
 };
@@ -138,6 +146,7 @@ class TranslucencyExecution final : public PassExecution {
     plumbing::check_uniform_mirror<GpuSceneFrame>(*like, 0, 0, s.name() + " frame (the scene pass's)");
     plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(*like, 2, 2, s.name() + " light_view");
     plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(*like, 3, 0, s.name() + " fog_frame");
+    plumbing::check_wrapped_uniform_mirror<GpuAerialLookup>(*like, 3, 4, s.name() + " aerial_lookup");
     block_ = plumbing::create_checked_uniform_block(s.device, *like, 0, 1, s.name() + " translucency", GpuTranslucencyBlock{});
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, *like);
     textures_ = std::make_unique<plumbing::TextureCache>(s.device);
@@ -177,6 +186,8 @@ class TranslucencyExecution final : public PassExecution {
     const std::array<std::byte, 8> zero{};
     s.device.write_texture(no_volume_texture_, zero);
     no_volume_ = s.device.create_view(no_volume_texture_);
+    const std::vector<std::byte> no_air(kAerialLookupBytes);
+    no_aerial_lookup_ = plumbing::create_uniform_buffer(s.device, s.name() + " no aerial lookup", no_air);
   }
 
   void write_block(PassContext& c) {
@@ -189,11 +200,15 @@ class TranslucencyExecution final : public PassExecution {
     for (size_t i = 0; i < 3; ++i) b.environment[i] = float(environment[i]);
     b.environment[3] = float(scene.camera.far);
     b.options[0] = fogged(c) ? 1.0f : 0.0f;
+    b.options[1] = aired(c) ? 1.0f : 0.0f;
     c.device.write_buffer(block_, 0, std::as_bytes(std::span(&b, 1)));
   }
 
   bool fogged(const PassSetup& c) const {
     return c.bound(t_.fog_frame) && c.bound(t_.integrated_scattering) && c.bound(t_.integrated_transmittance);
+  }
+  bool aired(const PassSetup& c) const {
+    return c.bound(t_.aerial_lookup) && c.bound(t_.aerial_scattering) && c.bound(t_.aerial_transmittance);
   }
   bool shadowed(const PassSetup& c) const { return c.bound(t_.shadow_map) && c.bound(t_.light_view) && c.param(t_.shadows); }
 
@@ -210,11 +225,14 @@ class TranslucencyExecution final : public PassExecution {
     c.encoder.set_bind_group(2, c.bind_group(p.layouts[2], {BindGroupEntry::of(0, shadow ? c.view(t_.shadow_map) : textures_->white()),
                                                             BindGroupEntry::of(1, nearest),
                                                             BindGroupEntry::of(2, shadow ? c.buffer(t_.light_view) : no_shadow_view_)}));
-    const bool fog = fogged(c);
+    const bool fog = fogged(c), air = aired(c);
     c.encoder.set_bind_group(3, c.bind_group(p.layouts[3], {BindGroupEntry::of(0, fog ? c.buffer(t_.fog_frame) : no_fog_frame_),
                                                             BindGroupEntry::of(1, fog ? c.view(t_.integrated_scattering) : no_volume_),
                                                             BindGroupEntry::of(2, fog ? c.view(t_.integrated_transmittance) : no_volume_),
-                                                            BindGroupEntry::of(3, c.sampler(rhi::StockSampler::trilinear_clamp))}));
+                                                            BindGroupEntry::of(3, c.sampler(rhi::StockSampler::trilinear_clamp)),
+                                                            BindGroupEntry::of(4, air ? c.buffer(t_.aerial_lookup) : no_aerial_lookup_),
+                                                            BindGroupEntry::of(5, air ? c.view(t_.aerial_scattering) : no_volume_),
+                                                            BindGroupEntry::of(6, air ? c.view(t_.aerial_transmittance) : no_volume_)}));
   }
 
   // The translucent objects from the farthest to the nearest (their bounds' centres).
@@ -301,7 +319,7 @@ class TranslucencyExecution final : public PassExecution {
   const TranslucencyTable& t_;
   SurfacePrograms programs_;
   std::array<plumbing::RenderProgram, 2> resolve_;
-  rhi::BufferId block_, no_shadow_view_, no_fog_frame_;
+  rhi::BufferId block_, no_shadow_view_, no_fog_frame_, no_aerial_lookup_;
   rhi::TextureId no_volume_texture_;
   rhi::TextureViewId no_volume_;
   std::unique_ptr<plumbing::SceneGeometry> geometry_;

@@ -1,11 +1,14 @@
 // The translucency passes' fragment body: one translucent surface as a layer (C = radiance
 // + transmittance ⊙ C_behind, physics/translucency.h's surface_layer), lit as the opaque
 // scene is (surface_irradiance.glsl), seen through the froxel volume's media in front of
-// it when one is wired (fogged_layer), and handed to `write_layer`, which the including
+// it when one is wired (fogged_layer), then through the air in front of it when an
+// aerial-perspective volume is wired (fogged_layer again: the graph applies the air after
+// the fog), and handed to `write_layer`, which the including
 // shader defines with `light_visibility` before including this file. Fragments behind the
 // opaque surface are dropped (the opaque depth is sampled: no depth attachment).
 #ifndef VOLGRAPH_TRANSLUCENT_SURFACE_GLSL
 #define VOLGRAPH_TRANSLUCENT_SURFACE_GLSL
+#include "atmosphere_aerial_lookup.glsl"
 #include "depth_buffer.glsl"
 #include "froxel_sample.glsl"
 #include "material_textures.glsl"
@@ -15,7 +18,7 @@
 layout(set = 0, binding = 1) uniform TranslucencyBlock {
   vec4 camera;       // xyz: the camera's position; w: its near plane (m)
   vec4 environment;  // rgb: the radiance the specular reflection sees; w: the far plane (m)
-  vec4 options;      // x: 1 where a froxel volume is wired
+  vec4 options;      // x: 1 where a froxel volume is wired; y: 1 where an aerial-perspective volume is
 } translucency;
 layout(set = 0, binding = 2) uniform texture2D scene_depth;  // the opaque surfaces'
 layout(set = 0, binding = 3) uniform texture2D back_depth;   // the solid translucent objects' back faces
@@ -25,6 +28,9 @@ layout(set = 3, binding = 0) uniform FogBlock { FogFrame f; } fog;
 layout(set = 3, binding = 1) uniform texture3D integrated_scattering;
 layout(set = 3, binding = 2) uniform texture3D integrated_transmittance;
 layout(set = 3, binding = 3) uniform sampler trilinear;
+layout(set = 3, binding = 4) uniform AerialBlock { AerialLookup f; } air;
+layout(set = 3, binding = 5) uniform texture3D aerial_scattering;
+layout(set = 3, binding = 6) uniform texture3D aerial_transmittance;
 
 layout(location = 0) in vec3 world_position;
 layout(location = 1) in vec3 world_normal;
@@ -71,10 +77,14 @@ void main() {
   l.path_transmittance = exp(-object.attenuation.rgb * inside_path(cos_view, distance_to_fragment));
   SurfaceLayer layer = surface_layer(l);
   const float z = view_depth_of(gl_FragCoord.z);
+  const vec2 uv = gl_FragCoord.xy / vec2(textureSize(sampler2D(scene_depth, nearest), 0));
   if (translucency.options.x > 0.5) {
-    const vec2 uv = gl_FragCoord.xy / vec2(textureSize(sampler2D(scene_depth, nearest), 0));
     const FogAtPixel media = froxel_fog_at(fog.f, integrated_scattering, integrated_transmittance, trilinear, uv, z);
     layer = fogged_layer(layer, media.in_scatter, media.transmittance);
+  }
+  if (translucency.options.y > 0.5) {
+    const AerialAtPoint a = aerial_perspective_at(air.f, aerial_scattering, aerial_transmittance, trilinear, uv, distance_to_fragment);
+    layer = fogged_layer(layer, a.in_scatter, a.transmittance);
   }
   write_layer(layer, z);
 }
