@@ -22,7 +22,20 @@ struct SurfaceMaterial {
   int base_color_image = -1;  // index into SceneTriangles::images, −1 for none
   int emissive_image = -1;
   plumbing::SamplerWrap wrap;
+  // How it passes light, its lengths in world metres: thickness times the object's
+  // length scale (physics::length_scale), σt per channel from attenuation_color at
+  // attenuation_distance times that scale (RTR4 eq. 14.23), as the GPU's object block.
+  Translucency translucency;
+  Vec3 sigma_t{0, 0, 0};
 };
+
+// Whether a surface of this material is drawn as a layer (blends or transmits), and its
+// coverage: α where it blends, 1 otherwise (the GPU's translucent pass). Masked texels
+// of coverage α below the cutoff are holes; the reference reads no texture alpha, so the
+// coverage is α alone.
+bool is_translucent(const SurfaceMaterial& m);
+double layer_coverage(const SurfaceMaterial& m);
+bool is_hole(const SurfaceMaterial& m);
 
 // What a triangle carries beyond its corners: per-corner world normals (not unit, as the
 // vertex shader outputs them) and texture coordinates, its material, its object.
