@@ -12,6 +12,7 @@
 #include "physics/translucency.h"
 #include "reference/image_render.h"
 #include "reference/renderer.h"
+#include "tests/reference/test_scenes.h"
 
 namespace volgraph::reference {
 namespace {
@@ -358,6 +359,28 @@ TEST(TranslucencyReference, ExtremeMaterialsAndViewsStayFinite) {
       if (eye[1] > 2) s.camera.target = {0, 0, 0};
       const ReferenceImage image = render(s, settings);
       for (double v : image.rgb) ASSERT_TRUE(std::isfinite(v) && v >= 0) << v;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace volgraph::reference
+
+namespace volgraph::reference {
+namespace {
+
+// The shipped translucency demos (what `volgraph reference` renders through the same
+// Renderer): finite and non-negative in both modes.
+TEST(TranslucencyReference, ShippedDemosRenderInBothModes) {
+  for (const char* config : {"demo_water_slab.json", "demo_transmission_test.json", "demo_attenuation_test.json", "demo_glass_vase_fog.json"}) {
+    const LoadedConfig loaded = load_shipped(config, 12, 8);
+    for (const TranslucencyMode mode : {TranslucencyMode::straight, TranslucencyMode::refracted}) {
+      IntegrationSettings settings;
+      settings.translucency = mode;
+      settings.relative_tolerance = 1e-3;
+      const Renderer renderer(loaded.config.scene, settings);
+      const ReferenceImage image = render_image(renderer, {.width = 12, .height = 8, .threads = 2});
+      for (double v : image.rgb) ASSERT_TRUE(std::isfinite(v) && v >= 0) << config << ": " << v;
     }
   }
 }
