@@ -37,7 +37,7 @@ std::vector<Triangle> shadow_casters(const SceneTriangles& scene) {
 bool any_see_through(const SceneTriangles& scene, const std::vector<uint32_t>& casters) {
   for (const uint32_t i : casters) {
     const SurfaceMaterial& m = scene.materials[scene.attributes[i].material];
-    if (is_translucent(m) || is_hole(m)) return true;
+    if (is_translucent(m) || m.translucency.alpha_mode == AlphaMode::mask) return true;
   }
   return false;
 }

@@ -32,7 +32,7 @@
 // Translucent surfaces (Material::translucency; reference/translucent_rays.cpp):
 // - straight mode (IntegrationSettings::translucency, the default; what the GPU's
 //   translucency pass models): the camera ray walks its hits in order. An opaque hit ends
-//   it; a masked hole (α < cutoff; no texture alpha) is passed; a translucent hit is a
+//   it; a masked hole (coverage α × texture alpha < cutoff) is passed; a translucent hit is a
 //   layer, physics::surface_layer (C = radiance + transmittance ⊙ C_behind), lit by the
 //   irradiance an opaque surface there would get, its reflection seeing L_env (the
 //   background, or under an atmosphere the sky's ambient radiance, as the GPU). Thin-walled

@@ -129,12 +129,17 @@ SceneTriangles scene_triangles(const Scene& scene) {
 
 bool is_translucent(const SurfaceMaterial& m) { return m.translucency.translucent(); }
 
-double layer_coverage(const SurfaceMaterial& m) {
-  return m.translucency.alpha_mode == AlphaMode::blend ? std::clamp(m.translucency.alpha, 0.0, 1.0) : 1.0;
+double coverage_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {
+  const double texture = m.base_color_image < 0 ? 1.0 : sample_alpha_bilinear(scene.images[size_t(m.base_color_image)], m.wrap, u, v);
+  return std::clamp(m.translucency.alpha * texture, 0.0, 1.0);
 }
 
-bool is_hole(const SurfaceMaterial& m) {
-  return m.translucency.alpha_mode == AlphaMode::mask && m.translucency.alpha < m.translucency.alpha_cutoff;
+double layer_coverage(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {
+  return m.translucency.alpha_mode == AlphaMode::blend ? coverage_at(scene, m, u, v) : 1.0;
+}
+
+bool is_hole(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {
+  return m.translucency.alpha_mode == AlphaMode::mask && coverage_at(scene, m, u, v) < m.translucency.alpha_cutoff;
 }
 
 Vec3 albedo_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {

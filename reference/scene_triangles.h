@@ -29,14 +29,6 @@ struct SurfaceMaterial {
   Vec3 sigma_t{0, 0, 0};
 };
 
-// Whether a surface of this material is drawn as a layer (blends or transmits), and its
-// coverage: α where it blends, 1 otherwise (the GPU's translucent pass). Masked texels
-// of coverage α below the cutoff are holes; the reference reads no texture alpha, so the
-// coverage is α alone.
-bool is_translucent(const SurfaceMaterial& m);
-double layer_coverage(const SurfaceMaterial& m);
-bool is_hole(const SurfaceMaterial& m);
-
 // What a triangle carries beyond its corners: per-corner world normals (not unit, as the
 // vertex shader outputs them) and texture coordinates, its material, its object.
 struct TriangleAttributes {
@@ -60,5 +52,14 @@ SceneTriangles scene_triangles(const Scene& scene);
 // A material's albedo and emission at texture coordinate (u, v).
 Vec3 albedo_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
 Vec3 emission_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
+
+// Whether a surface of this material is drawn as a layer (blends or transmits); its
+// coverage at (u, v), α times the base colour texture's alpha; a layer's coverage, that
+// where it blends and 1 otherwise (the GPU's translucent pass); whether (u, v) is a hole
+// (alpha mode mask, coverage below the cutoff).
+bool is_translucent(const SurfaceMaterial& m);
+double coverage_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
+double layer_coverage(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
+bool is_hole(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
 
 }  // namespace volgraph::reference

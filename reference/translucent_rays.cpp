@@ -60,7 +60,7 @@ std::optional<SurfaceHit> Renderer::next_surface(const Ray& ray) const {
 
 Renderer::SurfaceKind Renderer::surface_kind(const SurfaceHit& hit) const {
   const SurfaceMaterial& m = material_of(hit);
-  if (is_hole(m)) return SurfaceKind::hole;
+  if (is_hole(triangles_, m, hit.u, hit.v)) return SurfaceKind::hole;
   if (!is_translucent(m)) return SurfaceKind::opaque;
   if (m.translucency.volume == VolumeKind::solid && !hit.front_facing) return SurfaceKind::solid_back_face;
   return SurfaceKind::layer;
@@ -102,7 +102,7 @@ physics::LayerInputs<double> Renderer::layer_inputs(const SurfaceHit& hit, const
   const Translucency& tr = m.translucency;
   const double cos_view = std::clamp(-dot(hit.normal, direction), 0.0, 1.0);
   physics::LayerInputs<double> in;
-  in.alpha = layer_coverage(m);
+  in.alpha = layer_coverage(triangles_, m, hit.u, hit.v);
   in.transmission = tr.transmission;
   in.albedo = albedo_at(triangles_, m, hit.u, hit.v);
   if (lit) {

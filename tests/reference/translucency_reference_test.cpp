@@ -181,6 +181,23 @@ TEST(TranslucencyReference, MaskedHolesAreSeenThrough) {
   EXPECT_EQ(render(s).at(5, 5), (Vec3{0, 0, 0}));
 }
 
+TEST(TranslucencyReference, CoverageIsAlphaTimesTheTexturesAlpha) {
+  SceneTriangles scene;
+  scene.images.push_back({2, 1, {1, 1, 1, 1, 1, 1}, {0, 1}});  // alpha 0 on the left texel, 1 on the right
+  SurfaceMaterial m;
+  m.base_color_image = 0;
+  m.translucency.alpha = 0.8;
+  m.translucency.alpha_mode = AlphaMode::mask;
+  EXPECT_EQ(coverage_at(scene, m, 0.25, 0.5), 0.0);
+  EXPECT_NEAR(coverage_at(scene, m, 0.75, 0.5), 0.8, 1e-7);
+  EXPECT_NEAR(coverage_at(scene, m, 0.5, 0.5), 0.4, 1e-7);  // bilinear between the texels
+  EXPECT_TRUE(is_hole(scene, m, 0.25, 0.5));
+  EXPECT_FALSE(is_hole(scene, m, 0.75, 0.5));
+  EXPECT_EQ(layer_coverage(scene, m, 0.75, 0.5), 1.0);  // only a blended layer is partly covered
+  m.translucency.alpha_mode = AlphaMode::blend;
+  EXPECT_NEAR(layer_coverage(scene, m, 0.75, 0.5), 0.8, 1e-7);
+}
+
 TEST(TranslucencyReference, ATranslucentSheetDimsTheLightByItsTransmittance) {
   Scene s = lit_scene_with(std::nullopt);
   s.media = {};
