@@ -52,6 +52,9 @@ struct IntegrationSettings {
   // (its light then 0); reflected branches inside a solid whose weight falls below
   // min_branch_weight are cut too.
   uint32_t max_bounces = 16;
+  // Whether translucent surfaces shadow (by their transmittance); false: they cast none,
+  // as on the GPU (for comparisons with it), masked holes and opaque casters still do.
+  bool translucent_shadows = true;
   double min_branch_weight = 1e-4;
 };
 

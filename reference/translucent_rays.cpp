@@ -176,7 +176,7 @@ Vec3 Renderer::shadow_ray_transmittance(const Ray& ray) const {
     r.t_min = past(h->t);
     const SurfaceKind kind = surface_kind(hit);
     if (kind == SurfaceKind::opaque) return {0, 0, 0};
-    if (kind != SurfaceKind::layer) continue;
+    if (kind != SurfaceKind::layer || !integration_.translucent_shadows) continue;
     if (++crossed > integration_.max_layers) return {0, 0, 0};
     const double chord = material_of(hit).translucency.volume == VolumeKind::solid ? solid_chord(hit, ray) : 0;
     passed = times(passed, physics::surface_layer(layer_inputs(hit, ray.direction, chord, false)).transmittance);
