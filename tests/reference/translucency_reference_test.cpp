@@ -168,6 +168,89 @@ TEST(TranslucencyReference, CoverageBlendsTheSheetOverTheWall) {
   }
 }
 
+// Each layer is seen through the media in front of it: in an absorbing fog (σa, no
+// scattering) a glowing sheet of coverage α at distance t₁ over the wall at t₂ is
+// e^(−σa t₁)·α·L + (1 − α)·e^(−σa t₂)·wall.
+TEST(TranslucencyReference, LayersAreSeenThroughTheMediaInFrontOfThem) {
+  const Vec3 wall{1, 0.5, 2};
+  Scene s = wall_scene(wall);
+  const double sigma_a = 0.3;
+  s.media.fog = Medium{.sigma_s = {0, 0, 0}, .sigma_a = {sigma_a, sigma_a, sigma_a}, .g = 0};
+  Material sheet{.name = "sheet", .albedo = {0, 0, 0}, .emissive = {4, 4, 4}};
+  sheet.translucency.alpha = 0.25;
+  sheet.translucency.alpha_mode = AlphaMode::blend;
+  s.materials.push_back(sheet);
+  Object o{.name = "sheet", .shape = Shape::plane, .size = {100, 1, 100}, .material = "sheet"};
+  o.transform.translate = {0, 1, 0};
+  s.objects.push_back(o);
+  const Renderer renderer(s);
+  double worst = 0;
+  for (uint32_t j = 0; j < kHeight; ++j) {
+    for (uint32_t i = 0; i < kWidth; ++i) {
+      const Vec3 ray = ray_of(s, i, j);
+      const double t1 = 2 / -ray[1], t2 = 3 / -ray[1];
+      const Vec3 got = renderer.camera_ray_radiance(ray);
+      for (size_t k = 0; k < 3; ++k) {
+        const double expected = std::exp(-sigma_a * t1) * 0.25 * 4 + 0.75 * std::exp(-sigma_a * t2) * wall[k];
+        worst = std::max(worst, std::abs(got[k] - expected) / expected);
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-12);
+  std::printf("layers in fog: largest relative error %.3g\n", worst);
+}
+
+// In a scattering fog lit by a point light, the layered ray equals the segments integrated
+// one by one: S(0, t₁) + T(0, t₁)[L₁ + τ₁(S(t₁, t₂) + T(t₁, t₂)·wall)] (fogged_layer's
+// identity), to the integration's tolerance.
+TEST(TranslucencyReference, FoggedLayersEqualTheSegmentsIntegratedApart) {
+  const Vec3 wall{1, 0.5, 2};
+  Scene s = wall_scene(wall);
+  s.media.fog = Medium{.sigma_s = {0.2, 0.25, 0.3}, .sigma_a = {0.05, 0.05, 0.05}, .g = 0.3};
+  Light lamp;
+  lamp.type = LightType::point;
+  lamp.position = {0.4, 2, 0.3};
+  lamp.intensity = {3, 3, 3};
+  lamp.cast_shadows = false;
+  s.lights.push_back(lamp);
+  Material sheet{.name = "sheet", .albedo = {0.5, 0.5, 0.5}, .emissive = {0.5, 0.5, 0.5}};
+  sheet.translucency.alpha = 0.4;
+  sheet.translucency.alpha_mode = AlphaMode::blend;
+  sheet.translucency.ior = 1;
+  s.materials.push_back(sheet);
+  Object o{.name = "sheet", .shape = Shape::plane, .size = {100, 1, 100}, .material = "sheet"};
+  o.transform.translate = {0, 1, 0};
+  s.objects.push_back(o);
+  IntegrationSettings settings;
+  settings.relative_tolerance = 1e-9;
+  const Renderer renderer(s, settings);
+  const auto segment = [&](const Vec3& from, const Vec3& d, double length) {
+    std::vector<double> breaks{physics::dot(physics::sub(lamp.position, from), d)};
+    return integrate_single_scattering(renderer.media(), from, d, length, breaks,
+                                       [&](const Vec3& x) { return renderer.in_scattering(x, d); }, settings);
+  };
+  double worst = 0;
+  for (uint32_t j = 0; j < kHeight; j += 3) {
+    for (uint32_t i = 0; i < kWidth; i += 3) {
+      const Vec3 d = ray_of(s, i, j);
+      const double t1 = 2 / -d[1], t2 = 3 / -d[1];
+      const Vec3 at_sheet = physics::add(s.camera.position, physics::scaled(d, t1));
+      const RayScattering front = segment(s.camera.position, d, t1), back = segment(at_sheet, d, t2 - t1);
+      const std::optional<SurfaceHit> hit = renderer.surface_hit(d);
+      const Vec3 e = renderer.surface_irradiance(hit->position, hit->normal);
+      const Vec3 got = renderer.camera_ray_radiance(d);
+      for (size_t k = 0; k < 3; ++k) {
+        const double layer = 0.4 * (0.5 / M_PI * e[k] + 0.5);
+        const double behind = back.radiance[k] + back.transmittance[k] * wall[k];
+        const double expected = front.radiance[k] + front.transmittance[k] * (layer + 0.6 * behind);
+        worst = std::max(worst, std::abs(got[k] - expected) / expected);
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-7);
+  std::printf("fogged layers against segments apart: largest relative difference %.3g\n", worst);
+}
+
 TEST(TranslucencyReference, MaskedHolesAreSeenThrough) {
   const Vec3 wall{1, 0.5, 2};
   Scene s = wall_scene(wall);
