@@ -383,6 +383,33 @@ TEST(TranslucencyReference, RefractionDisplacesTheEdgeBehindASlab) {
   EXPECT_GT(std::abs(shift), 0.4);
 }
 
+// Refracted mode at normal incidence through a slab of ior 1.5, transmittance T across it:
+// the reflections inside add up to the closed form of two parallel interfaces,
+//   F·L_env + (1 − F)² T (wall + F T L_env) / (1 − F² T²),
+// with every branch traced (no weight cut) to 64 interfaces.
+TEST(TranslucencyReference, RefractedSlabSumsItsInternalReflections) {
+  const Vec3 wall{2, 1, 0.5};
+  Scene s = wall_scene(wall);
+  s.background = {0.3, 0.6, 0.9};
+  Material m = glass("glass", 1.5, VolumeKind::solid);
+  m.translucency.attenuation_color = {1, 0.5, 0.25};
+  m.translucency.attenuation_distance = 0.5;
+  s.materials.push_back(m);
+  s.objects.push_back(slab("glass", 1, 0.5));
+  IntegrationSettings refracted;
+  refracted.translucency = TranslucencyMode::refracted;
+  refracted.min_branch_weight = 0;
+  refracted.max_bounces = 64;
+  const Renderer renderer(s, refracted);
+  const Vec3 got = renderer.camera_ray_radiance({0, -1, 0});
+  const double f = physics::interface_reflectance(1.5, 1.0);
+  for (size_t k = 0; k < 3; ++k) {
+    const double t = m.translucency.attenuation_color[k];  // across d = attenuation_distance
+    const double l = s.background[k];
+    EXPECT_NEAR(got[k], f * l + (1 - f) * (1 - f) * t * (wall[k] + f * t * l) / (1 - f * f * t * t), 1e-14) << k;
+  }
+}
+
 TEST(TranslucencyReference, RefractedEqualsStraightAtIorOne) {
   Material m = glass("clearish", 1, VolumeKind::thin_walled);
   m.albedo = {0.9, 0.7, 0.5};
