@@ -20,12 +20,26 @@ using physics::sub;
 
 constexpr double kShadowRayOffset = 1e-9;  // metres per metre of |point|∞, plus 1e-9 m
 
-std::vector<Triangle> shadow_casters(const SceneTriangles& scene) {
-  std::vector<Triangle> casters;
-  for (size_t i = 0; i < scene.triangles.size(); ++i) {
-    if (scene.casts_shadows[i]) casters.push_back(scene.triangles[i]);
+std::vector<uint32_t> shadow_caster_indices(const SceneTriangles& scene) {
+  std::vector<uint32_t> casters;
+  for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
+    if (scene.casts_shadows[i]) casters.push_back(i);
   }
   return casters;
+}
+
+std::vector<Triangle> shadow_casters(const SceneTriangles& scene) {
+  std::vector<Triangle> casters;
+  for (const uint32_t i : shadow_caster_indices(scene)) casters.push_back(scene.triangles[i]);
+  return casters;
+}
+
+bool any_see_through(const SceneTriangles& scene, const std::vector<uint32_t>& casters) {
+  for (const uint32_t i : casters) {
+    const SurfaceMaterial& m = scene.materials[scene.attributes[i].material];
+    if (is_translucent(m) || m.translucency.alpha_mode == AlphaMode::mask) return true;
+  }
+  return false;
 }
 
 Vec3 interpolate(const std::array<Vec3, 3>& corners, double u, double v) {
@@ -87,6 +101,9 @@ Renderer::Renderer(const Scene& scene, const IntegrationSettings& integration, c
       triangles_(scene_triangles(scene)),
       camera_bvh_(triangles_.triangles),
       shadow_bvh_(shadow_casters(triangles_)),
+      shadow_triangles_(shadow_caster_indices(triangles_)),
+      see_through_casters_(any_see_through(triangles_, shadow_triangles_)),
+      environment_(scene.atmosphere ? sky_ambient_ : scene.background),
       media_(scene.media),
       integration_(integration) {}
 
@@ -104,13 +121,19 @@ Vec3 Renderer::pixel_radiance(uint32_t i, uint32_t j, uint32_t width, uint32_t h
 }
 
 Vec3 Renderer::camera_ray_radiance(const Vec3& direction) const {
-  const std::optional<SurfaceHit> hit = surface_hit(direction);
-  if (atmosphere_) return atmosphere_ray_radiance(direction, hit);
-  const Vec3 behind = hit ? surface_radiance(*hit) : scene_.background;
-  if (media_.empty()) return behind;
+  if (integration_.translucency == TranslucencyMode::refracted) return refracted_ray_radiance(direction);
+  return straight_ray_radiance(direction);
+}
+
+double Renderer::far_length(const Vec3& direction) const {
+  const double along_axis = dot(direction, forward(scene_.camera));
+  return along_axis > 0 ? scene_.camera.far / along_axis : 0;
+}
+
+Renderer::RayFog Renderer::camera_fog(const Vec3& direction, double length) const {
+  if (atmosphere_) return atmosphere_fog(direction, length);
+  if (media_.empty()) return {};
   const Camera& camera = scene_.camera;
-  const double along_axis = dot(direction, forward(camera));
-  const double length = hit ? hit->t : along_axis > 0 ? camera.far / along_axis : 0;
   // The in-scattering of a point or spot light peaks where the ray passes closest to it.
   std::vector<double> breaks;
   for (const Light& light : scene_.lights) {
@@ -119,23 +142,36 @@ Vec3 Renderer::camera_ray_radiance(const Vec3& direction) const {
   const RayScattering media = integrate_single_scattering(
       media_, camera.position, direction, length, std::move(breaks), [&](const Vec3& x) { return in_scattering(x, direction); },
       integration_);
-  return add(media.radiance, times(media.transmittance, behind));
+  return {media.radiance, media.transmittance};
 }
 
-Vec3 Renderer::atmosphere_ray_radiance(const Vec3& direction, const std::optional<SurfaceHit>& hit) const {
+Vec3 Renderer::ray_end_radiance(const Vec3& direction, const std::optional<SurfaceHit>& hit) const {
+  const double length = hit ? hit->t : far_length(direction);
+  if (atmosphere_) {
+    const AtmosphereReference& air = *atmosphere_;
+    const Vec3 eye = planet_position(air.atmosphere(), scene_.camera.position);
+    const uint64_t key = camera_ray_key(direction);
+    if (media_.empty() && !hit) return air.sky(eye, direction, key).radiance;
+    const Vec3 behind = hit ? surface_radiance(*hit) : air.sky(add(eye, scaled(direction, length)), direction, key).radiance;
+    const RayFog fog = atmosphere_fog(direction, length);
+    return add(fog.in_scattered, times(fog.transmittance, behind));
+  }
+  const Vec3 behind = hit ? surface_radiance(*hit) : scene_.background;
+  if (media_.empty()) return behind;
+  const RayFog fog = camera_fog(direction, length);
+  return add(fog.in_scattered, times(fog.transmittance, behind));
+}
+
+Renderer::RayFog Renderer::atmosphere_fog(const Vec3& direction, double length) const {
   const AtmosphereReference& air = *atmosphere_;
   const Atmosphere& a = air.atmosphere();
   const Camera& camera = scene_.camera;
   const Vec3 eye = planet_position(a, camera.position);
   const uint64_t key = camera_ray_key(direction);
-  const double along_axis = dot(direction, forward(camera));
-  const double length = hit ? hit->t : along_axis > 0 ? camera.far / along_axis : 0;
   if (media_.empty()) {
-    if (!hit) return air.sky(eye, direction, key).radiance;
     const AerialPerspectiveSample ap = air.aerial_perspective(eye, direction, length, key);
-    return add(ap.in_scattered, times(ap.transmittance, surface_radiance(*hit)));
+    return {ap.in_scattered, ap.transmittance};
   }
-  const Vec3 behind = hit ? surface_radiance(*hit) : air.sky(add(eye, scaled(direction, length)), direction, key).radiance;
   // The air's orders ≥ 2: A(t) at kAirNodes equal steps, the same paths' seeds at each.
   AirProfile profile{{0}, {{0, 0, 0}}};
   for (int k = 1; k <= kAirNodes && length > 0; ++k) {
@@ -158,8 +194,7 @@ Vec3 Renderer::atmosphere_ray_radiance(const Vec3& direction, const std::optiona
   const RayScattering media = integrate_single_scattering(media_, camera.position, direction, length, std::move(breaks), source,
                                                           integration_);
   const Vec3 air_to_end = air.transmittance_along(eye, direction, length);
-  return add(add(media.radiance, times(media.transmittance, profile.at(length))),
-             times(times(media.transmittance, air_to_end), behind));
+  return {add(media.radiance, times(media.transmittance, profile.at(length))), times(media.transmittance, air_to_end)};
 }
 
 std::optional<SurfaceHit> Renderer::surface_hit(const Vec3& direction) const {
@@ -169,35 +204,49 @@ std::optional<SurfaceHit> Renderer::surface_hit(const Vec3& direction) const {
   const Ray ray{camera.position, direction, camera.near / along_axis, camera.far / along_axis};
   const std::optional<TriangleHit> h = camera_bvh_.closest_hit(ray);
   if (!h) return std::nullopt;
-  const Triangle& tri = triangles_.triangles[h->triangle];
-  const TriangleAttributes& a = triangles_.attributes[h->triangle];
+  return surface_at(*h, h->triangle, direction);
+}
+
+SurfaceHit Renderer::surface_at(const TriangleHit& h, uint32_t triangle, const Vec3& direction) const {
+  const Triangle& tri = triangles_.triangles[triangle];
+  const TriangleAttributes& a = triangles_.attributes[triangle];
   SurfaceHit s;
-  s.t = h->t;
-  s.triangle = h->triangle;
-  s.position = interpolate({tri.a, tri.b, tri.c}, h->u, h->v);
+  s.t = h.t;
+  s.triangle = triangle;
+  s.position = interpolate({tri.a, tri.b, tri.c}, h.u, h.v);
   const Vec3 geometric = physics::cross(sub(tri.b, tri.a), sub(tri.c, tri.a));
-  const Vec3 interpolated = interpolate(a.normals, h->u, h->v);
+  const Vec3 interpolated = interpolate(a.normals, h.u, h.v);
   s.normal = normalize(dot(interpolated, interpolated) > 0 ? interpolated : geometric);
   // Two-sided like the GPU: seen from the back (clockwise on screen), the normal turns.
-  if (dot(geometric, direction) > 0) s.normal = scaled(s.normal, -1);
-  s.u = (1 - h->u - h->v) * a.uvs[0][0] + h->u * a.uvs[1][0] + h->v * a.uvs[2][0];
-  s.v = (1 - h->u - h->v) * a.uvs[0][1] + h->u * a.uvs[1][1] + h->v * a.uvs[2][1];
+  s.front_facing = !(dot(geometric, direction) > 0);
+  if (!s.front_facing) s.normal = scaled(s.normal, -1);
+  s.geometric_normal = normalize(s.front_facing ? geometric : scaled(geometric, -1));
+  s.u = (1 - h.u - h.v) * a.uvs[0][0] + h.u * a.uvs[1][0] + h.v * a.uvs[2][0];
+  s.v = (1 - h.u - h.v) * a.uvs[0][1] + h.u * a.uvs[1][1] + h.v * a.uvs[2][1];
   return s;
 }
 
-Vec3 Renderer::surface_radiance(const SurfaceHit& hit) const {
+Vec3 Renderer::surface_irradiance(const Vec3& point, const Vec3& normal) const {
   Vec3 e{0, 0, 0};
-  for (const Light& light : lights_) e = add(e, light_arrival(light, hit.position, hit.normal));
+  for (const Light& light : lights_) e = add(e, light_arrival(light, point, normal));
   if (atmosphere_) e = add(e, scaled(sky_ambient_, M_PI));  // an isotropic L: irradiance π·L on any surface
+  return e;
+}
+
+Vec3 Renderer::surface_radiance(const SurfaceHit& hit) const {
+  const Vec3 e = surface_irradiance(hit.position, hit.normal);
   const SurfaceMaterial& m = triangles_.materials[triangles_.attributes[hit.triangle].material];
   return add(physics::lambert(albedo_at(triangles_, m, hit.u, hit.v), e), emission_at(triangles_, m, hit.u, hit.v));
 }
 
 Vec3 Renderer::light_arrival(const Light& light, const Vec3& point, const Vec3& normal) const {
   const Vec3 unshadowed = physics::irradiance(light, point, normal);
-  if (is_zero(unshadowed) || !light_visible(light, point)) return {0, 0, 0};
-  if (media_.empty()) return unshadowed;
-  return times(unshadowed, transmittance_of(optical_depth_toward(media_, light, point)));
+  if (is_zero(unshadowed)) return {0, 0, 0};
+  const Vec3 passed = light_transmittance(light, point);
+  if (is_zero(passed)) return {0, 0, 0};
+  const Vec3 lit = see_through_casters_ ? times(unshadowed, passed) : unshadowed;
+  if (media_.empty()) return lit;
+  return times(lit, transmittance_of(optical_depth_toward(media_, light, point)));
 }
 
 Vec3 Renderer::in_scattering(const Vec3& point, const Vec3& direction) const {
@@ -207,15 +256,20 @@ Vec3 Renderer::in_scattering(const Vec3& point, const Vec3& direction) const {
     if (light.type != LightType::directional && point == light.position) continue;  // no direction: a singular point
     const physics::LightArriving arriving = physics::light_arriving(light, point);
     const Vec3 sigma_s_phase = media_.scattering(point, -dot(arriving.travel, direction));
-    if (is_zero(sigma_s_phase) || is_zero(arriving.irradiance) || !light_visible(light, point)) continue;
-    const Vec3 through = media_.empty() ? Vec3{1, 1, 1} : transmittance_of(optical_depth_toward(media_, light, point));
+    if (is_zero(sigma_s_phase) || is_zero(arriving.irradiance)) continue;
+    const Vec3 passed = light_transmittance(light, point);
+    if (is_zero(passed)) continue;
+    const Vec3 through_media = media_.empty() ? Vec3{1, 1, 1} : transmittance_of(optical_depth_toward(media_, light, point));
+    const Vec3 through = see_through_casters_ ? times(through_media, passed) : through_media;
     j = add(j, times(sigma_s_phase, times(arriving.irradiance, through)));
   }
   return j;
 }
 
-bool Renderer::light_visible(const Light& light, const Vec3& point) const {
-  if (!light.cast_shadows) return true;
+bool Renderer::light_visible(const Light& light, const Vec3& point) const { return !is_zero(light_transmittance(light, point)); }
+
+Vec3 Renderer::light_transmittance(const Light& light, const Vec3& point) const {
+  if (!light.cast_shadows) return {1, 1, 1};
   const double size = std::max({std::abs(point[0]), std::abs(point[1]), std::abs(point[2])});
   Ray ray{point, {0, 0, 0}, kShadowRayOffset * (1 + size), std::numeric_limits<double>::infinity()};
   if (light.type == LightType::directional) {
@@ -223,11 +277,12 @@ bool Renderer::light_visible(const Light& light, const Vec3& point) const {
   } else {
     const Vec3 to_light = sub(light.position, point);
     const double distance = std::sqrt(dot(to_light, to_light));
-    if (distance == 0) return true;
+    if (distance == 0) return {1, 1, 1};
     ray.direction = scaled(to_light, 1 / distance);
     ray.t_max = distance;
   }
-  return !shadow_bvh_.any_hit(ray);
+  if (!see_through_casters_) return shadow_bvh_.any_hit(ray) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
+  return shadow_ray_transmittance(ray);
 }
 
 }  // namespace volgraph::reference

@@ -28,6 +28,34 @@
 //   into it. Without media in the scene this is AtmosphereReference::aerial_perspective
 //   in front of the surface.
 // Without an atmosphere nothing of this runs: the image is what it was, bit for bit.
+//
+// Translucent surfaces (Material::translucency; reference/translucent_rays.cpp):
+// - straight mode (IntegrationSettings::translucency, the default; what the GPU's
+//   translucency pass models): the camera ray walks its hits in order. An opaque hit ends
+//   it; a masked hole (coverage α × texture alpha < cutoff) is passed; a translucent hit is a
+//   layer, physics::surface_layer (C = radiance + transmittance ⊙ C_behind), lit by the
+//   irradiance an opaque surface there would get, its reflection seeing L_env (the
+//   background, or under an atmosphere the sky's ambient radiance, as the GPU). Thin-walled
+//   and shell objects: every face is a layer; solids: their front faces are layers whose
+//   path inside runs to the object's next back face or the nearer opaque surface (the
+//   material's thickness where neither lies ahead), their back faces are no layer (the GPU
+//   culls them: a camera inside a solid sees through it unattenuated); surfaces inside a
+//   solid are layers of their own (the GPU draws them too). Each layer is seen through the
+//   media and air in front of it (physics::fogged_layer with the media integrated from the
+//   camera to it). Layers that change nothing (radiance 0, transmittance 1) are dropped.
+//   After max_layers layers the ray sees the background.
+// - refracted mode: a solid's faces are interfaces, the ray bent by Bec's refraction
+//   (entering 1/ior, leaving ior), Beer–Lambert inside, (1 − F) on each transmission;
+//   the outer reflection sees L_env (cheap, and what the straight model uses), reflections
+//   inside (total internal reflection, and F at the exit while the branch's weight stays
+//   above min_branch_weight) are traced, up to max_bounces. Thin-walled and shell layers,
+//   holes and solids of ior 1 are crossed as in straight mode (ior 1: the two modes agree
+//   bit for bit without media). Media are integrated on each straight segment; the
+//   atmosphere's air is not (a ray that escapes sees the sky from the camera).
+// - shadow rays (both modes): each translucent surface between a point and a light
+//   multiplies the light by its layer's transmittance at the shadow ray's angle (straight:
+//   no caustics), a solid by Beer–Lambert over its chord; opaque casters block. The GPU's
+//   translucent surfaces cast no shadows.
 #pragma once
 
 #include <cstdint>
@@ -36,6 +64,7 @@
 #include <vector>
 
 #include "graph/scene/scene.h"
+#include "physics/translucency.h"
 #include "reference/bvh.h"
 #include "reference/media.h"
 #include "reference/scene_triangles.h"
@@ -57,6 +86,8 @@ struct SurfaceHit {
   Vec3 normal{0, 0, 1};    // interpolated vertex normal, unit, turned toward the viewer
   uint32_t triangle = 0;   // index into SceneTriangles
   double u = 0, v = 0;     // interpolated texture coordinate
+  bool front_facing = true;  // the ray meets the triangle's front (counter-clockwise) side
+  Vec3 geometric_normal{0, 0, 1};  // the triangle's plane, unit, turned toward the viewer
 };
 
 class Renderer {
@@ -92,6 +123,14 @@ class Renderer {
   // Whether `light` sees `point` unblocked by any shadow-casting triangle (always for a
   // light that casts no shadows). Exact up to a start offset of 1e-9·(1 + |point|∞) m.
   bool light_visible(const Light& light, const Vec3& point) const;
+  // The fraction of `light` that reaches `point` per channel: 0 behind an opaque caster,
+  // the product of the translucent surfaces' transmittances between (1 with none).
+  Vec3 light_transmittance(const Light& light, const Vec3& point) const;
+  // Irradiance on a surface at `point` with unit normal `normal` from every light and the
+  // sky's ambient.
+  Vec3 surface_irradiance(const Vec3& point, const Vec3& normal) const;
+  // The radiance the specular reflection of a translucent surface sees.
+  const Vec3& environment() const { return environment_; }
 
   const Scene& scene() const { return scene_; }
   // The scene's lights as they arrive (physics::lights_through_atmosphere).
@@ -106,7 +145,50 @@ class Renderer {
   const SceneMedia& media() const { return media_; }
 
  private:
-  Vec3 atmosphere_ray_radiance(const Vec3& direction, const std::optional<SurfaceHit>& hit) const;
+  // The media's (and the air's) in-scattering S(0, t) and transmittance T(0, t) along
+  // the camera ray.
+  struct RayFog {
+    Vec3 in_scattered{0, 0, 0};
+    Vec3 transmittance{1, 1, 1};
+  };
+  RayFog atmosphere_fog(const Vec3& direction, double length) const;
+  RayFog camera_fog(const Vec3& direction, double length) const;
+  // What the camera ray sees at its end (the opaque `hit`, or the background or sky)
+  // through the media in front of it.
+  Vec3 ray_end_radiance(const Vec3& direction, const std::optional<SurfaceHit>& hit) const;
+  double far_length(const Vec3& direction) const;
+
+  // reference/translucent_rays.cpp
+  struct Layer {
+    double t = 0;
+    physics::SurfaceLayer<double> layer;
+  };
+  struct LayeredRay {
+    std::vector<Layer> layers;          // near to far
+    std::optional<SurfaceHit> end;      // the opaque surface, none for the background
+  };
+  enum class SurfaceKind { opaque, hole, layer, solid_back_face };
+  SurfaceHit surface_at(const TriangleHit& h, uint32_t triangle, const Vec3& direction) const;
+  std::optional<SurfaceHit> next_surface(const Ray& ray) const;
+  SurfaceKind surface_kind(const SurfaceHit& hit) const;
+  const SurfaceMaterial& material_of(const SurfaceHit& hit) const;
+  double solid_chord(const SurfaceHit& entry, const Ray& ray) const;
+  physics::LayerInputs<double> layer_inputs(const SurfaceHit& hit, const Vec3& direction, double chord, bool lit) const;
+  Vec3 shadow_ray_transmittance(const Ray& ray) const;
+  Vec3 inside_transmittance(const SurfaceMaterial& m, double length) const;
+  LayeredRay layers_along(const Vec3& direction) const;
+  Vec3 straight_ray_radiance(const Vec3& direction) const;
+  Vec3 refracted_ray_radiance(const Vec3& direction) const;
+  struct PathState {
+    uint32_t layers = 0, bounces = 0;
+    double weight = 1;
+  };
+  Vec3 refracted_trace(const Ray& ray, double segment_start, PathState state) const;
+  Vec3 enter_solid(const SurfaceHit& entry, const Vec3& direction, PathState state) const;
+  Vec3 inside_solid(const Ray& ray, uint32_t object, const SurfaceMaterial& medium, PathState state) const;
+  Vec3 leave_solid(const SurfaceHit& exit, const Vec3& direction, PathState state) const;
+  Vec3 segment_with_media(const Ray& ray, double start, double end, const Vec3& end_radiance) const;
+  Vec3 miss_radiance(const Vec3& direction) const;
 
   const Scene& scene_;
   std::vector<Light> lights_;
@@ -115,6 +197,9 @@ class Renderer {
   SceneTriangles triangles_;
   Bvh camera_bvh_;  // every triangle
   Bvh shadow_bvh_;  // the triangles of shadow-casting objects
+  std::vector<uint32_t> shadow_triangles_;  // shadow_bvh_'s triangle k is triangles_' shadow_triangles_[k]
+  bool see_through_casters_ = false;        // a shadow caster is translucent or masked
+  Vec3 environment_{0, 0, 0};
   SceneMedia media_;
   IntegrationSettings integration_;
 };

@@ -1,11 +1,13 @@
 #include "reference/scene_triangles.h"
 
+#include <algorithm>
 #include <map>
 #include <string>
 
 #include "physics/camera.h"
 #include "passes/plumbing/gltf.h"
 #include "passes/plumbing/meshes.h"
+#include "physics/translucency.h"
 
 namespace volgraph::reference {
 namespace {
@@ -57,9 +59,19 @@ void add_mesh(SceneTriangles& out, const std::vector<float>& vertices, const std
   }
 }
 
+// The material's translucency in world metres, by the object's length scale (as
+// passes/plumbing/scene_geometry.cpp packs it for the GPU).
+void set_translucency(SurfaceMaterial& m, const Translucency& t, double scale) {
+  m.translucency = t;
+  m.translucency.thickness = t.thickness * scale;
+  m.translucency.attenuation_distance = t.attenuation_distance * scale;
+  for (size_t c = 0; c < 3; ++c) m.sigma_t[c] = physics::sigma_t_from_color(t.attenuation_color[c], m.translucency.attenuation_distance);
+}
+
 uint32_t add_gltf_material(SceneTriangles& out, ImageTable& table, const plumbing::GltfModel& model,
-                           const plumbing::GltfPrimitive& p) {
+                           const plumbing::GltfPrimitive& p, double scale) {
   SurfaceMaterial m;
+  set_translucency(m, p.translucency, scale);
   m.albedo = p.base_color;
   m.emissive = p.emissive;
   auto image = [&](const plumbing::GltfTexture& texture) {
@@ -74,9 +86,11 @@ uint32_t add_gltf_material(SceneTriangles& out, ImageTable& table, const plumbin
   return uint32_t(out.materials.size() - 1);
 }
 
-uint32_t add_config_material(SceneTriangles& out, ImageTable& table, const Material* material) {
+uint32_t add_config_material(SceneTriangles& out, ImageTable& table, const Material* material, double scale) {
   SurfaceMaterial m;
+  set_translucency(m, Translucency{}, scale);
   if (material) {
+    set_translucency(m, material->translucency, scale);
     m.albedo = material->albedo;
     m.emissive = material->emissive;
     const std::string path = material->albedo_texture;
@@ -99,17 +113,33 @@ SceneTriangles scene_triangles(const Scene& scene) {
   ImageTable table(out.images);
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
     const Object& object = scene.objects[o];
+    const double scale = physics::length_scale(physics::model_matrix(object.transform));
     if (object.shape == Shape::gltf) {
       const plumbing::GltfModel model = plumbing::load_gltf(object.file);
       for (const plumbing::GltfPrimitive& p : model.primitives) {
-        add_mesh(out, p.vertices, p.indices, object, o, add_gltf_material(out, table, model, p));
+        add_mesh(out, p.vertices, p.indices, object, o, add_gltf_material(out, table, model, p, scale));
       }
       continue;
     }
     const plumbing::Mesh mesh = plumbing::primitive_mesh(object.shape, object.size);
-    add_mesh(out, mesh.vertices, mesh.indices, object, o, add_config_material(out, table, scene.find_material(object.material)));
+    add_mesh(out, mesh.vertices, mesh.indices, object, o, add_config_material(out, table, scene.find_material(object.material), scale));
   }
   return out;
+}
+
+bool is_translucent(const SurfaceMaterial& m) { return m.translucency.translucent(); }
+
+double coverage_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {
+  const double texture = m.base_color_image < 0 ? 1.0 : sample_alpha_bilinear(scene.images[size_t(m.base_color_image)], m.wrap, u, v);
+  return std::clamp(m.translucency.alpha * texture, 0.0, 1.0);
+}
+
+double layer_coverage(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {
+  return m.translucency.alpha_mode == AlphaMode::blend ? coverage_at(scene, m, u, v) : 1.0;
+}
+
+bool is_hole(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {
+  return m.translucency.alpha_mode == AlphaMode::mask && coverage_at(scene, m, u, v) < m.translucency.alpha_cutoff;
 }
 
 Vec3 albedo_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {

@@ -22,6 +22,11 @@ struct SurfaceMaterial {
   int base_color_image = -1;  // index into SceneTriangles::images, −1 for none
   int emissive_image = -1;
   plumbing::SamplerWrap wrap;
+  // How it passes light, its lengths in world metres: thickness times the object's
+  // length scale (physics::length_scale), σt per channel from attenuation_color at
+  // attenuation_distance times that scale (RTR4 eq. 14.23), as the GPU's object block.
+  Translucency translucency;
+  Vec3 sigma_t{0, 0, 0};
 };
 
 // What a triangle carries beyond its corners: per-corner world normals (not unit, as the
@@ -47,5 +52,14 @@ SceneTriangles scene_triangles(const Scene& scene);
 // A material's albedo and emission at texture coordinate (u, v).
 Vec3 albedo_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
 Vec3 emission_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
+
+// Whether a surface of this material is drawn as a layer (blends or transmits); its
+// coverage at (u, v), α times the base colour texture's alpha; a layer's coverage, that
+// where it blends and 1 otherwise (the GPU's translucent pass); whether (u, v) is a hole
+// (alpha mode mask, coverage below the cutoff).
+bool is_translucent(const SurfaceMaterial& m);
+double coverage_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
+double layer_coverage(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
+bool is_hole(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
 
 }  // namespace volgraph::reference

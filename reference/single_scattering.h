@@ -17,6 +17,11 @@
 
 namespace volgraph::reference {
 
+// How the camera ray crosses translucent surfaces (reference/renderer.h): straight on
+// through each layer (what the GPU's translucency pass models), or bent at each interface
+// of a solid by Snell's law (the two-interface ground truth of the refraction variants).
+enum class TranslucencyMode { straight, refracted };
+
 struct IntegrationSettings {
   // Each segment's estimated error (Richardson: |S₂ − S₁|/15, max over channels) is held
   // below this fraction of the segment's integral.
@@ -39,6 +44,18 @@ struct IntegrationSettings {
   // takes at most this many evaluations; panels refined after it is spent keep their
   // Richardson estimate. Converging segments use a small fraction of it.
   uint64_t max_evaluations = uint64_t{1} << 14;
+  TranslucencyMode translucency = TranslucencyMode::straight;
+  // Layers a ray composes (straight mode) or translucent surfaces a shadow ray crosses:
+  // beyond them the camera ray sees the background, the light is taken as blocked.
+  uint32_t max_layers = 64;
+  // Refracted mode: interfaces one camera path crosses or reflects at before it is cut
+  // (its light then 0); reflected branches inside a solid whose weight falls below
+  // min_branch_weight are cut too.
+  uint32_t max_bounces = 16;
+  // Whether translucent surfaces shadow (by their transmittance); false: they cast none,
+  // as on the GPU (for comparisons with it), masked holes and opaque casters still do.
+  bool translucent_shadows = true;
+  double min_branch_weight = 1e-4;
 };
 
 struct RayScattering {
