@@ -93,6 +93,29 @@ Real shell_path_length(Real thickness, Real ior, Real cos_incident) {
   return c > Real(0) ? thickness / c : (thickness > Real(0) ? Real(1e30) : Real(0));
 }
 
+// Where a ray leaves a slab it entered at the origin (a flat solid of parallel faces, the
+// slab approximation of screen-space refraction): `to_incident` (unit, toward the viewer)
+// refracts by Bec's form into an index `ior` (RTR4 eq. 14.28–14.29), crosses the slab's
+// thickness h = path_along_view · cos θi along the refracted ray, and leaves parallel to
+// where it came from. Returned: the exit point's offset across the view ray, of length
+// h sin(θi − θt) / cos θt; exactly 0 at ior 1 (no interface) and at normal incidence.
+template <typename Real>
+Vec3Of<Real> slab_exit_offset(const Vec3Of<Real>& to_incident, const Vec3Of<Real>& normal, Real ior, Real path_along_view) {
+  const Vec3Of<Real> zero{Real(0), Real(0), Real(0)};
+  if (ior == Real(1) || path_along_view <= Real(0)) return zero;
+  const Real cos_i = to_incident[0] * normal[0] + to_incident[1] * normal[1] + to_incident[2] * normal[2];
+  const std::optional<Vec3Of<Real>> r = refract_bec(to_incident, normal, Real(1) / ior);
+  if (!r || cos_i <= Real(0)) return zero;
+  const Real cos_t = -((*r)[0] * normal[0] + (*r)[1] * normal[1] + (*r)[2] * normal[2]);
+  if (cos_t <= Real(0)) return zero;
+  const Real inside = path_along_view * cos_i / cos_t;  // h / cos θt
+  Vec3Of<Real> exit{(*r)[0] * inside, (*r)[1] * inside, (*r)[2] * inside};
+  // Across the view direction v = −to_incident: exit − v (exit · v).
+  const Real along = -(exit[0] * to_incident[0] + exit[1] * to_incident[1] + exit[2] * to_incident[2]);
+  for (size_t k = 0; k < 3; ++k) exit[k] -= -to_incident[k] * along;
+  return exit;
+}
+
 // What a translucent surface does to a ray, per channel: it adds `radiance` and passes
 // `transmittance` of what lies behind it, C = radiance + transmittance ⊙ C_behind (one
 // layer of RTR4 §14.5.1's blending; the blending passes compose layers by it).

@@ -10,10 +10,12 @@
 
 layout(location = 0) out vec4 accumulation;
 layout(location = 1) out vec4 optical_depth;
-void write_layer(SurfaceLayer layer, float view_depth) {
+#include "include/surface_point.glsl"
+
+void write_layer(SurfaceLayer layer, SurfacePoint point) {
   const float opacity = 1.0 - (layer.transmittance.r + layer.transmittance.g + layer.transmittance.b) / 3.0;
   const float peak = max(layer.radiance.r, max(layer.radiance.g, layer.radiance.b));
-  const float w = oit_weight(view_depth, opacity, peak);
+  const float w = oit_weight(point.view_depth, opacity, peak);
   accumulation = vec4(layer.radiance * w, opacity * w);
   optical_depth = vec4(transmittance_depth(layer.transmittance), 1.0);
 }

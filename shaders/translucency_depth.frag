@@ -6,6 +6,8 @@
 #include "include/shadow_set.glsl"
 #include "include/translucency.glsl"
 
-void write_layer(SurfaceLayer layer, float view_depth) {}
+#include "include/surface_point.glsl"
+
+void write_layer(SurfaceLayer layer, SurfacePoint point) {}
 
 #include "include/translucent_surface.glsl"

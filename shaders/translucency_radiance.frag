@@ -5,6 +5,8 @@
 #include "include/translucency.glsl"
 
 layout(location = 0) out vec4 radiance;
-void write_layer(SurfaceLayer layer, float view_depth) { radiance = vec4(layer.radiance, 0.0); }  // alpha 0: the colour's alpha is kept
+#include "include/surface_point.glsl"
+
+void write_layer(SurfaceLayer layer, SurfacePoint point) { radiance = vec4(layer.radiance, 0.0); }  // alpha 0: the colour's alpha is kept
 
 #include "include/translucent_surface.glsl"

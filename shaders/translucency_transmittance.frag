@@ -6,6 +6,8 @@
 #include "include/translucency.glsl"
 
 layout(location = 0) out vec4 factor;
-void write_layer(SurfaceLayer layer, float view_depth) { factor = vec4(layer.transmittance, 1.0); }
+#include "include/surface_point.glsl"
+
+void write_layer(SurfaceLayer layer, SurfacePoint point) { factor = vec4(layer.transmittance, 1.0); }
 
 #include "include/translucent_surface.glsl"

@@ -45,19 +45,19 @@ ComputeProgram create_compute_program(rhi::Device& device, const std::string& sh
 
 namespace {
 
-// Whether a layout made for `layout` serves shaders declaring `shader`: every binding they
-// declare is there, of the same kind, visible to at least their stages (a layout may hold
-// bindings a pipeline's shaders do not use).
-bool serves(const rhi::BindGroupLayoutDesc& layout, const rhi::BindGroupLayoutDesc& shader) {
+// The first binding of `shader` that a layout made for `layout` does not serve (absent, of
+// another kind, not visible to all its stages, or unfilterable where the shader filters),
+// −1 when it serves them all (a layout may hold bindings a pipeline's shaders do not use,
+// and a filterable texture serves one the shader only loads from).
+int unserved_binding(const rhi::BindGroupLayoutDesc& layout, const rhi::BindGroupLayoutDesc& shader) {
   for (const rhi::LayoutEntry& x : shader.entries) {
     const auto y = std::find_if(layout.entries.begin(), layout.entries.end(), [&](const rhi::LayoutEntry& e) { return e.binding == x.binding; });
-    if (y == layout.entries.end()) return false;
-    if ((x.visibility & ~y->visibility) != 0 || x.type != y->type || x.texture_kind != y->texture_kind ||
-        x.storage_format != y->storage_format || x.filtered != y->filtered || x.storage_access != y->storage_access) {
-      return false;
+    if (y == layout.entries.end() || (x.visibility & ~y->visibility) != 0 || x.type != y->type || x.texture_kind != y->texture_kind ||
+        x.storage_format != y->storage_format || (x.filtered && !y->filtered) || x.storage_access != y->storage_access) {
+      return int(x.binding);
     }
   }
-  return true;
+  return -1;
 }
 
 RenderProgram render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex, const std::string& fragment,
@@ -67,9 +67,15 @@ RenderProgram render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, 
   RenderProgram program;
   program.layout_descs = rhi::reflect_bind_group_layouts(stages, desc.label);
   if (layouts_of) {
-    bool fits = program.layout_descs.size() <= layouts_of->layout_descs.size();
-    for (size_t set = 0; fits && set < program.layout_descs.size(); ++set) fits = serves(layouts_of->layout_descs[set], program.layout_descs[set]);
-    if (!fits) throw std::logic_error(desc.label + ": its shaders declare bindings the layouts it shares do not hold");
+    if (program.layout_descs.size() > layouts_of->layout_descs.size()) {
+      throw std::logic_error(desc.label + ": its shaders declare more sets than the layouts it shares hold");
+    }
+    for (size_t set = 0; set < program.layout_descs.size(); ++set) {
+      const int binding = unserved_binding(layouts_of->layout_descs[set], program.layout_descs[set]);
+      if (binding < 0) continue;
+      throw std::logic_error(desc.label + ": set " + std::to_string(set) + " binding " + std::to_string(binding) +
+                             " is not in the layouts it shares, or not of the same kind and stages");
+    }
     program.layouts = layouts_of->layouts;
     program.layout_descs = layouts_of->layout_descs;
   } else {

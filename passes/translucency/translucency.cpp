@@ -53,6 +53,10 @@ struct TranslucencyTable : PassTable {
       "weighted_oit", "weighted blended order-independent transparency (McGuire & Bavoil 2013; coloured transmission, McGuire 2015)");
   // Parameters.
   ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
+  ParamHandle<std::string> refraction =
+      choice("refraction", "screen_space", {"screen_space", "none"},
+             "sorted: solids of IOR ≠ 1 show refracted_color where their refracted ray lands (Sousa 2005; the slab approximation), "
+             "when it is wired; none: what lies straight behind");
   // Slots.
   SlotHandle color = inout("color", ResourceKind::texture2d, Usage::color_attachment_load, "the scene's linear radiance, fogged");
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the opaque scene's depth", {.format = Format::d32_float});
@@ -65,6 +69,8 @@ struct TranslucencyTable : PassTable {
                                                     "from scatter_integrate: the media in front of each surface");
   SlotHandle integrated_transmittance =
       optional_input("integrated_transmittance", ResourceKind::texture3d, Usage::sampled, "from scatter_integrate");
+  SlotHandle refracted_color = optional_input("refracted_color", ResourceKind::texture2d, Usage::sampled,
+                                              "a copy of `color` before this pass: what refracting solids show");
   SlotHandle aerial_lookup =
       optional_input("aerial_lookup", ResourceKind::buffer, Usage::uniform_read, "atmosphere_aerial_perspective's lookup: the air in front of each surface");
   SlotHandle aerial_scattering = optional_input("aerial_scattering", ResourceKind::texture3d, Usage::sampled, "from atmosphere_aerial_perspective");
@@ -80,7 +86,8 @@ struct TranslucencyTable : PassTable {
   // Steps.
   StepHandle back_faces = step("back_faces", PassKind::graphics, with_surface_inputs({{back_depth, Usage::depth_attachment}}));
   StepHandle surfaces = step("surfaces", PassKind::graphics,
-                             with_surface_inputs({{color, Usage::color_attachment_load}, {back_depth, Usage::sampled}}));
+                             with_surface_inputs({{color, Usage::color_attachment_load}, {back_depth, Usage::sampled},
+                                                  {refracted_color, Usage::sampled}}));
   StepHandle accumulate = step("accumulate", PassKind::graphics,
                                with_surface_inputs({{oit_accumulation, Usage::color_attachment}, {oit_optical_depth, Usage::color_attachment},
                                                     {back_depth, Usage::sampled}}));
@@ -101,6 +108,7 @@ struct TranslucencyTable : PassTable {
 // The surfaces' programs: one per blend and face set, sharing one set of bind group layouts.
 struct SurfacePrograms {
   plumbing::RenderProgram transmittance_back, radiance_back, transmittance_front, radiance_front;  // sorted
+  plumbing::RenderProgram refract_front;  // sorted: a refracting solid's first draw (replaces)
   plumbing::RenderProgram accumulate_all, accumulate_front;                                       // weighted_oit
   plumbing::RenderProgram back_depth;                                                             // the back faces' depth
 };
@@ -124,9 +132,11 @@ class TranslucencyExecution final : public PassExecution {
                   : plumbing::create_render_program(s.device, pd, "scene.vert", fragment);
     };
     SurfacePrograms& p = programs_;
+    // The refracting draw reads every binding the surfaces' sets hold: the others share its layouts.
+    p.refract_front = surface("refracted × transmittance", "translucency_refract.frag", {{color, BlendMode::replace}}, CullMode::back, nullptr);
+    const plumbing::RenderProgram* like = &p.refract_front;
     p.transmittance_back = surface("× transmittance (back faces)", "translucency_transmittance.frag", {{color, BlendMode::multiply}},
-                                   CullMode::front, nullptr);
-    const plumbing::RenderProgram* like = &p.transmittance_back;
+                                   CullMode::front, like);
     p.radiance_back = surface("+ radiance (back faces)", "translucency_radiance.frag", {{color, BlendMode::additive}}, CullMode::front, like);
     p.transmittance_front = surface("× transmittance", "translucency_transmittance.frag", {{color, BlendMode::multiply}}, CullMode::back, like);
     p.radiance_front = surface("+ radiance", "translucency_radiance.frag", {{color, BlendMode::additive}}, CullMode::back, like);
@@ -201,26 +211,30 @@ class TranslucencyExecution final : public PassExecution {
     b.environment[3] = float(scene.camera.far);
     b.options[0] = fogged(c) ? 1.0f : 0.0f;
     b.options[1] = aired(c) ? 1.0f : 0.0f;
+    b.options[2] = refracting(c) ? 1.0f : 0.0f;
     c.device.write_buffer(block_, 0, std::as_bytes(std::span(&b, 1)));
   }
 
   bool fogged(const PassSetup& c) const {
     return c.bound(t_.fog_frame) && c.bound(t_.integrated_scattering) && c.bound(t_.integrated_transmittance);
   }
+  bool refracting(const PassSetup& c) const { return c.bound(t_.refracted_color) && c.param(t_.refraction) == "screen_space"; }
   bool aired(const PassSetup& c) const {
     return c.bound(t_.aerial_lookup) && c.bound(t_.aerial_scattering) && c.bound(t_.aerial_transmittance);
   }
   bool shadowed(const PassSetup& c) const { return c.bound(t_.shadow_map) && c.bound(t_.light_view) && c.param(t_.shadows); }
 
   // Sets 0, 2 and 3 of the surface programs; `back` the solid objects' back-face depth
-  // (a stand-in while it is being drawn).
-  void bind_surface_sets(PassContext& c, rhi::TextureViewId back) {
+  // (a stand-in while it is being drawn), `refracted` the colour refracting solids show (a
+  // stand-in in the steps that do not declare reading it).
+  void bind_surface_sets(PassContext& c, rhi::TextureViewId back, rhi::TextureViewId refracted) {
     using rhi::BindGroupEntry;
     const plumbing::RenderProgram& p = programs_.transmittance_back;
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
     c.encoder.set_bind_group(0, c.bind_group(p.layouts[0], {BindGroupEntry::of(0, c.buffer(t_.frame)), BindGroupEntry::of(1, block_),
                                                             BindGroupEntry::of(2, c.view(t_.depth)), BindGroupEntry::of(3, back),
-                                                            BindGroupEntry::of(4, nearest)}));
+                                                            BindGroupEntry::of(4, nearest),
+                                                            BindGroupEntry::of(5, refracted)}));
     const bool shadow = shadowed(c);
     c.encoder.set_bind_group(2, c.bind_group(p.layouts[2], {BindGroupEntry::of(0, shadow ? c.view(t_.shadow_map) : textures_->white()),
                                                             BindGroupEntry::of(1, nearest),
@@ -256,7 +270,7 @@ class TranslucencyExecution final : public PassExecution {
     pass.depth = {c.view(t_.back_depth), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(programs_.back_depth.pipeline);
-    bind_surface_sets(c, textures_->white());
+    bind_surface_sets(c, textures_->white(), textures_->white());
     for (const plumbing::GpuObject& o : geometry_->objects()) {
       if (o.translucent && o.volume == VolumeKind::solid) plumbing::SceneGeometry::draw(c.encoder, 1, o);
     }
@@ -268,12 +282,13 @@ class TranslucencyExecution final : public PassExecution {
     pass.label = c.name();
     pass.colors = {{c.view(t_.color), rhi::LoadOp::load}};
     c.encoder.begin_render_pass(pass);
-    bind_surface_sets(c, c.view(t_.back_depth));
+    bind_surface_sets(c, c.view(t_.back_depth), refracting(c) ? c.view(t_.refracted_color) : textures_->white());
     const SurfacePrograms& p = programs_;
     for (const plumbing::GpuObject* o : back_to_front(*c.scene)) {
       // A solid is seen through its front faces (its inside path reaches the back ones).
       if (o->volume != VolumeKind::solid) draw_twice(c, *o, p.transmittance_back, p.radiance_back);
-      draw_twice(c, *o, p.transmittance_front, p.radiance_front);
+      const bool refracts = refracting(c) && o->volume == VolumeKind::solid;
+      draw_twice(c, *o, refracts ? p.refract_front : p.transmittance_front, p.radiance_front);
     }
     c.encoder.end_render_pass();
   }
@@ -291,7 +306,7 @@ class TranslucencyExecution final : public PassExecution {
     pass.label = c.name();
     pass.colors = {{c.view(t_.oit_accumulation), rhi::LoadOp::clear, {0, 0, 0, 0}}, {c.view(t_.oit_optical_depth), rhi::LoadOp::clear, {0, 0, 0, 0}}};
     c.encoder.begin_render_pass(pass);
-    bind_surface_sets(c, c.view(t_.back_depth));
+    bind_surface_sets(c, c.view(t_.back_depth), textures_->white());
     for (const plumbing::GpuObject& o : geometry_->objects()) {
       if (!o.translucent) continue;
       c.encoder.set_pipeline(o.volume == VolumeKind::solid ? programs_.accumulate_front.pipeline : programs_.accumulate_all.pipeline);

@@ -61,6 +61,19 @@ float shell_path_length(float thickness, float ior, float cos_incident) {
   return c > 0.0 ? thickness / c : (thickness > 0.0 ? 1e30 : 0.0);
 }
 
+// Where a ray leaves a slab it entered at the origin, across the view ray (physics::
+// slab_exit_offset): h sin(θi − θt) / cos θt, h = path_along_view · cos θi; 0 at ior 1.
+vec3 slab_exit_offset(vec3 to_incident, vec3 normal, float ior, float path_along_view) {
+  if (ior == 1.0 || path_along_view <= 0.0) return vec3(0.0);
+  const float cos_i = dot(to_incident, normal);
+  vec3 r;
+  if (!refract_bec(to_incident, normal, 1.0 / ior, r) || cos_i <= 0.0) return vec3(0.0);
+  const float cos_t = -dot(r, normal);
+  if (cos_t <= 0.0) return vec3(0.0);
+  const vec3 exit_point = r * (path_along_view * cos_i / cos_t);
+  return exit_point + to_incident * -dot(exit_point, to_incident);
+}
+
 // C = radiance + transmittance ⊙ C_behind, per channel.
 struct SurfaceLayer {
   vec3 radiance;

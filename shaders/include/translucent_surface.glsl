@@ -3,7 +3,7 @@
 // scene is (surface_irradiance.glsl), seen through the froxel volume's media in front of
 // it when one is wired (fogged_layer), then through the air in front of it when an
 // aerial-perspective volume is wired (fogged_layer again: the graph applies the air after
-// the fog), and handed to `write_layer`, which the including
+// the fog), and handed to `write_layer` with its SurfacePoint, which the including
 // shader defines with `light_visibility` before including this file. Fragments behind the
 // opaque surface are dropped (the opaque depth is sampled: no depth attachment).
 #ifndef VOLGRAPH_TRANSLUCENT_SURFACE_GLSL
@@ -14,15 +14,18 @@
 #include "material_textures.glsl"
 #include "surface_irradiance.glsl"
 #include "translucency.glsl"
+#include "surface_point.glsl"
 
 layout(set = 0, binding = 1) uniform TranslucencyBlock {
   vec4 camera;       // xyz: the camera's position; w: its near plane (m)
   vec4 environment;  // rgb: the radiance the specular reflection sees; w: the far plane (m)
-  vec4 options;      // x: 1 where a froxel volume is wired; y: 1 where an aerial-perspective volume is
+  vec4 options;      // x: 1 where a froxel volume is wired; y: 1 where an aerial-perspective volume is;
+                     // z: 1 where solids refract what lies behind them (refracted_color)
 } translucency;
 layout(set = 0, binding = 2) uniform texture2D scene_depth;  // the opaque surfaces'
 layout(set = 0, binding = 3) uniform texture2D back_depth;   // the solid translucent objects' back faces
 layout(set = 0, binding = 4) uniform sampler nearest;
+layout(set = 0, binding = 5) uniform texture2D refracted_color;  // the colour before the pass (screen-space refraction)
 
 layout(set = 3, binding = 0) uniform FogBlock { FogFrame f; } fog;
 layout(set = 3, binding = 1) uniform texture3D integrated_scattering;
@@ -40,8 +43,9 @@ float view_depth_of(float depth) { return linear_view_depth(depth, translucency.
 
 // The path inside the object along the view ray, by its volume kind: none (thin-walled),
 // the shell crossed at the refracted angle, or (solid) from this fragment to the nearer of
-// the back faces and the opaque surface — the material's thickness where no back face lies
-// behind the fragment.
+// the solids' nearest back face and the opaque surface (the far plane where neither is
+// drawn) — the material's thickness where that back face lies in front of the fragment
+// (another solid's, nearer: back_depth holds one back face a pixel).
 float inside_path(float cos_view, float distance_to_fragment) {
   const int kind = int(object.attenuation.w);
   const float thickness = object.translucency.w;
@@ -58,7 +62,11 @@ void main() {
   // The textures first (implicit derivatives need uniform control flow: before any discard).
   const vec3 albedo = material_albedo(object.albedo.rgb, texture_uv);
   const vec3 emission = material_emission(object.emissive.rgb, texture_uv);
-  const float coverage = int(object.alpha_test.x) == kAlphaBlend ? material_coverage(object.translucency.x, texture_uv) : 1.0;
+  const int alpha_mode = int(object.alpha_test.x);
+  const float texel_coverage = material_coverage(object.translucency.x, texture_uv);
+  // alphaMode mask: a texel below the cutoff is a hole, the rest fully covered; blend: α.
+  if (alpha_mode == kAlphaMask && texel_coverage < object.alpha_test.y) discard;
+  const float coverage = alpha_mode == kAlphaBlend ? texel_coverage : 1.0;
   if (gl_FragCoord.z >= texelFetch(sampler2D(scene_depth, nearest), ivec2(gl_FragCoord.xy), 0).r) discard;
   vec3 n = normalize(world_normal);
   if (!gl_FrontFacing) n = -n;
@@ -74,7 +82,8 @@ void main() {
   l.environment = translucency.environment.rgb;
   l.reflectance = interface_reflectance(object.translucency.z, cos_view);
   l.exit_reflectance = int(object.attenuation.w) == kVolumeThinWalled ? 0.0 : l.reflectance;
-  l.path_transmittance = exp(-object.attenuation.rgb * inside_path(cos_view, distance_to_fragment));
+  const float inside = inside_path(cos_view, distance_to_fragment);
+  l.path_transmittance = exp(-object.attenuation.rgb * inside);
   SurfaceLayer layer = surface_layer(l);
   const float z = view_depth_of(gl_FragCoord.z);
   const vec2 uv = gl_FragCoord.xy / vec2(textureSize(sampler2D(scene_depth, nearest), 0));
@@ -86,7 +95,7 @@ void main() {
     const AerialAtPoint a = aerial_perspective_at(air.f, aerial_scattering, aerial_transmittance, trilinear, uv, distance_to_fragment);
     layer = fogged_layer(layer, a.in_scatter, a.transmittance);
   }
-  write_layer(layer, z);
+  write_layer(layer, SurfacePoint(world_position, to_camera / distance_to_fragment, n, distance_to_fragment, z, inside));
 }
 
 #endif

@@ -32,6 +32,7 @@
 #include "physics/camera.h"
 #include "reference/atmosphere_reference.h"
 #include "reference/image_render.h"
+#include "tests/accuracy/vulkan_accuracy_test.h"
 #include "tests/gpu/backends.h"
 #include "tests/support/fog_accuracy.h"
 
@@ -116,16 +117,8 @@ SkyError sky_error(const Texels& gpu, const SkyReference& ref) {
   return e;
 }
 
-class AtmosphereSkyAccuracy : public ::testing::Test {
+class AtmosphereSkyAccuracy : public VulkanAccuracyTest {
  protected:
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    gpu_ = create_gpu(Backend::vulkan);
-  }
-  void TearDown() override {
-    const std::vector<std::string> messages = gpu_->finish();
-    EXPECT_TRUE(messages.empty()) << "vulkan validation:\n" << joined_messages(messages);
-  }
   // The config with its sun `elevation_deg` up, the sky-view LUT at width × height with its
   // multiple-scattering term on or off, the sun's disk off.
   // `variant` "raymarch": the sky pass's per-pixel march instead (its own multiple-scattering
@@ -142,8 +135,6 @@ class AtmosphereSkyAccuracy : public ::testing::Test {
   }
   Texels render(const LoadedConfig& loaded) { return accuracy::render_gpu(gpu_->device(), loaded); }
 
-  PassRegistry registry_;
-  std::unique_ptr<GpuUnderTest> gpu_;
 };
 
 TEST_F(AtmosphereSkyAccuracy, SingleScatteringIsWithinHalfAPercentOfTheReference) {

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "passes/passes.h"
+#include "tests/accuracy/vulkan_accuracy_test.h"
 #include "tests/gpu/backends.h"
 #include "tests/support/fog_accuracy.h"
 
@@ -95,16 +96,8 @@ Overrides froxel_overrides(int slices, const std::string& variant, std::optional
   return {.size = size, .sets = {"fog_media.slices=" + std::to_string(slices)}, .variants = {"fog_integral=" + variant}};
 }
 
-class FogAccuracy : public ::testing::Test {
+class FogAccuracy : public VulkanAccuracyTest {
  protected:
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    gpu_ = create_gpu(Backend::vulkan);
-  }
-  void TearDown() override {
-    const std::vector<std::string> messages = gpu_->finish();
-    EXPECT_TRUE(messages.empty()) << "vulkan validation:\n" << joined_messages(messages);
-  }
 
   LoadedConfig froxel_oracle(const std::string& oracle, const Overrides& overrides) {
     return load_oracle(oracle, {"froxel", "", overrides}, registry_);
@@ -120,8 +113,6 @@ class FogAccuracy : public ::testing::Test {
     return c.difference.relative_mean_error;
   }
 
-  PassRegistry registry_;
-  std::unique_ptr<GpuUnderTest> gpu_;
 };
 
 TEST_F(FogAccuracy, EveryTechniqueIsWithinItsBoundOnEveryOracleScene) {

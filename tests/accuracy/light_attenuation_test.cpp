@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include "passes/passes.h"
+#include "tests/accuracy/vulkan_accuracy_test.h"
 #include "tests/gpu/backends.h"
 #include "tests/support/fog_accuracy.h"
 
@@ -125,16 +126,8 @@ std::string config_text(const std::string& scene, const DefaultTechnique& t) {
   return R"({ "include": ["../graphs/)" + t.include + R"("],)" + scene + "}";
 }
 
-class LightAttenuation : public ::testing::Test {
+class LightAttenuation : public VulkanAccuracyTest {
  protected:
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    gpu_ = create_gpu(Backend::vulkan);
-  }
-  void TearDown() override {
-    const std::vector<std::string> messages = gpu_->finish();
-    EXPECT_TRUE(messages.empty()) << "vulkan validation:\n" << joined_messages(messages);
-  }
   LoadedConfig load(const std::string& scene, const DefaultTechnique& t) {
     return accuracy::load_linear_text(kTestConfigs + "light_attenuation.json", config_text(scene, t), registry_);
   }
@@ -155,8 +148,6 @@ class LightAttenuation : public ::testing::Test {
     }
   }
 
-  PassRegistry registry_;
-  std::unique_ptr<GpuUnderTest> gpu_;
 };
 
 TEST_F(LightAttenuation, PointAndSpotInHomogeneousFogEveryTechniqueAtItsDefaults) {

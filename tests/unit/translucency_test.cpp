@@ -6,7 +6,9 @@
 //   far side, within 1e-12; IOR 1 leaves the direction exactly unchanged (float and double);
 //   total internal reflection exactly beyond the critical angle asin(n₂/n₁);
 // - a slab of σt = −ln(c)/d transmits c at normal incidence (to rounding) and e^(−σt d/cos θt)
-//   at an angle; transmittance 0 and 1, thickness 0 and grazing rays give finite values.
+//   at an angle; transmittance 0 and 1, thickness 0 and grazing rays give finite values;
+// - a slab shifts a ray it passes by d sin(θ − θt)/cos θt across it (screen-space
+//   refraction's exit point), exactly 0 at IOR 1 and at normal incidence.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -98,6 +100,29 @@ TEST(Translucency, LimitsStayFinite) {
   EXPECT_EQ(slab_transmittance(opaque, 0.1, 0.0), 0.0) << "a grazing ray through an absorbing slab";
   EXPECT_EQ(slab_transmittance(0.0, 0.1, 0.0), 1.0) << "a grazing ray through a clear slab";
   EXPECT_TRUE(std::isfinite(sigma_t_from_color(0.0f, 0.1f)));
+}
+
+// A slab d thick (normal +y) seen at θ from its normal: the ray leaves it displaced across
+// its own direction by d sin(θ − θt)/cos θt (Snell's law; the textbook lateral shift),
+// perpendicular to the view ray, toward the normal's side; none at normal incidence or IOR 1.
+TEST(Translucency, ASlabShiftsTheRayItPassesByTheLateralDisplacement) {
+  const double d = 0.3, ior = 1.5;
+  for (double theta : {0.1, 0.4, 0.8, 1.2, 1.5}) {
+    const V l = toward(theta);                      // toward the viewer
+    const double path = d / std::cos(theta);        // along the view ray, face to face
+    const V offset = slab_exit_offset(l, V{0, 1, 0}, ior, path);
+    const double theta_t = std::asin(std::sin(theta) / ior);
+    EXPECT_NEAR(std::sqrt(dot3(offset, offset)), d * std::sin(theta - theta_t) / std::cos(theta_t), 1e-12) << theta;
+    EXPECT_NEAR(dot3(offset, l), 0, 1e-12) << theta;  // across the view ray
+    EXPECT_GT(offset[0], 0) << theta;                  // bent toward the normal: the exit lies on the viewer's side in x
+  }
+  const V head_on = slab_exit_offset(V{0, 1, 0}, V{0, 1, 0}, ior, d);
+  EXPECT_EQ(dot3(head_on, head_on), 0);
+  const V no_interface = slab_exit_offset(toward(0.7), V{0, 1, 0}, 1.0, d);
+  EXPECT_EQ(no_interface, (V{0, 0, 0}));
+  // Float (the GPU twin's precision) at θ = 36.87° (sin 0.6): within 1e-6 m of the double's.
+  const float shift = slab_exit_offset(Vec3Of<float>{0.6f, 0.8f, 0}, Vec3Of<float>{0, 1, 0}, 1.5f, 0.5f)[0];
+  EXPECT_NEAR(shift, slab_exit_offset(V{0.6, 0.8, 0}, V{0, 1, 0}, 1.5, 0.5)[0], 1e-6);
 }
 
 }  // namespace

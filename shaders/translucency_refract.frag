@@ -1,0 +1,40 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Translucency, a refracting solid's first draw (screen-space refraction, after Sousa 2005,
+// GPU Gems 2 ch. 19): in place of "what lies straight behind × transmittance", the colour
+// before the pass (refracted_color) where the refracted ray meets the opaque surface,
+// × the layer's transmittance (replacing what is there). The ray is bent by Bec's form at
+// the entry and leaves parallel to where it came from (the slab approximation,
+// slab_exit_offset), then reaches the opaque surface behind as the straight ray would,
+// displaced. Depth-aware rejection: a sample that lands on something in front of the
+// refractor, or off the screen, falls back to the straight sample.
+#include "include/shadow_set.glsl"
+#include "include/translucency.glsl"
+#include "include/surface_point.glsl"
+
+layout(location = 0) out vec4 factor;
+
+vec3 refracted_sample(SurfacePoint p);
+
+void write_layer(SurfaceLayer layer, SurfacePoint point) { factor = vec4(layer.transmittance * refracted_sample(point), 1.0); }
+
+#include "include/translucent_surface.glsl"
+
+vec3 refracted_sample(SurfacePoint p) {
+  const ivec2 size = textureSize(sampler2D(scene_depth, nearest), 0);
+  const ivec2 here = ivec2(gl_FragCoord.xy);
+  const vec3 straight = texelFetch(sampler2D(refracted_color, nearest), here, 0).rgb;
+  if (translucency.options.z < 0.5) return straight;
+  // The opaque surface behind along the straight ray, then displaced across it.
+  const float opaque_depth = view_depth_of(texelFetch(sampler2D(scene_depth, nearest), here, 0).r);
+  const float behind = opaque_depth * p.distance / p.view_depth;  // view depth to distance along this ray
+  const vec3 offset = slab_exit_offset(p.to_camera, p.normal, object.translucency.z, p.inside);
+  if (offset == vec3(0.0)) return straight;  // IOR 1 or head-on: exactly the straight sample
+  const vec4 clip = frame.view_projection * vec4(translucency.camera.xyz - p.to_camera * behind + offset, 1.0);
+  if (clip.w <= 0.0) return straight;
+  const vec2 uv = vec2(0.5 + 0.5 * clip.x / clip.w, 0.5 - 0.5 * clip.y / clip.w);  // NDC +y is the image's top
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return straight;
+  const ivec2 there = ivec2(uv * vec2(size));
+  if (texelFetch(sampler2D(scene_depth, nearest), there, 0).r <= gl_FragCoord.z) return straight;
+  return textureLod(sampler2D(refracted_color, trilinear), uv, 0.0).rgb;
+}
