@@ -51,6 +51,13 @@ Object slab(const std::string& material, double y, double thickness) {
 
 Vec3 ray_of(const Scene& s, uint32_t i, uint32_t j) { return physics::pixel_ray(s.camera, kWidth, kHeight, i, j); }
 
+// A horizontal sheet 100 m wide at height `y`, of material "sheet".
+Object sheet_at(double y) {
+  Object o{.name = "sheet", .shape = Shape::plane, .size = {100, 1, 100}, .material = "sheet"};
+  o.transform.translate = {0, y, 0};
+  return o;
+}
+
 ReferenceImage render(const Scene& s, const IntegrationSettings& settings = {}) {
   const Renderer renderer(s, settings);
   return render_image(renderer, {.width = kWidth, .height = kHeight, .threads = 2});
@@ -153,9 +160,7 @@ TEST(TranslucencyReference, CoverageBlendsTheSheetOverTheWall) {
   sheet.translucency.alpha_mode = AlphaMode::blend;
   sheet.translucency.ior = 1;
   s.materials.push_back(sheet);
-  Object o{.name = "sheet", .shape = Shape::plane, .size = {100, 1, 100}, .material = "sheet"};
-  o.transform.translate = {0, 1, 0};
-  s.objects.push_back(o);
+  s.objects.push_back(sheet_at(1));
   Light sun;
   sun.direction = {0, -1, 0};
   sun.irradiance = {M_PI, M_PI, M_PI};
@@ -180,9 +185,7 @@ TEST(TranslucencyReference, LayersAreSeenThroughTheMediaInFrontOfThem) {
   sheet.translucency.alpha = 0.25;
   sheet.translucency.alpha_mode = AlphaMode::blend;
   s.materials.push_back(sheet);
-  Object o{.name = "sheet", .shape = Shape::plane, .size = {100, 1, 100}, .material = "sheet"};
-  o.transform.translate = {0, 1, 0};
-  s.objects.push_back(o);
+  s.objects.push_back(sheet_at(1));
   const Renderer renderer(s);
   double worst = 0;
   for (uint32_t j = 0; j < kHeight; ++j) {
@@ -218,9 +221,7 @@ TEST(TranslucencyReference, FoggedLayersEqualTheSegmentsIntegratedApart) {
   sheet.translucency.alpha_mode = AlphaMode::blend;
   sheet.translucency.ior = 1;
   s.materials.push_back(sheet);
-  Object o{.name = "sheet", .shape = Shape::plane, .size = {100, 1, 100}, .material = "sheet"};
-  o.transform.translate = {0, 1, 0};
-  s.objects.push_back(o);
+  s.objects.push_back(sheet_at(1));
   IntegrationSettings settings;
   settings.relative_tolerance = 1e-9;
   const Renderer renderer(s, settings);
@@ -258,9 +259,7 @@ TEST(TranslucencyReference, MaskedHolesAreSeenThrough) {
   sheet.translucency.alpha = 0.4;
   sheet.translucency.alpha_mode = AlphaMode::mask;  // below the cutoff 0.5: a hole
   s.materials.push_back(sheet);
-  Object o{.name = "sheet", .shape = Shape::plane, .size = {100, 1, 100}, .material = "sheet"};
-  o.transform.translate = {0, 1, 0};
-  s.objects.push_back(o);
+  s.objects.push_back(sheet_at(1));
   EXPECT_EQ(render(s).at(5, 5), wall);
   s.materials[1].translucency.alpha = 0.6;  // above it: an opaque black-lit sheet
   EXPECT_EQ(render(s).at(5, 5), (Vec3{0, 0, 0}));
@@ -289,9 +288,7 @@ TEST(TranslucencyReference, ATranslucentSheetDimsTheLightByItsTransmittance) {
   Material sheet = glass("sheet", 1, VolumeKind::thin_walled);
   sheet.albedo = {0.6, 0.5, 0.4};
   s.materials.push_back(sheet);
-  Object o{.name = "sheet", .shape = Shape::plane, .size = {100, 1, 100}, .material = "sheet"};
-  o.transform.translate = {0, 2, 0};
-  s.objects.push_back(o);
+  s.objects.push_back(sheet_at(2));
   const Renderer renderer(s);
   const Vec3 point{0.2, 0, -0.3}, up{0, 1, 0};
   const Vec3 unshadowed = physics::irradiance(s.lights[0], point, up);
