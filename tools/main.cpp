@@ -121,7 +121,13 @@ int print_devices() {
   for (size_t i = 0; i < devices.size(); ++i) {
     const auto& d = devices[i];
     std::cout << i << ": " << d.name << " — " << d.driver << ", Vulkan " << VK_API_VERSION_MAJOR(d.api_version) << "."
-              << VK_API_VERSION_MINOR(d.api_version) << "." << VK_API_VERSION_PATCH(d.api_version) << "\n";
+              << VK_API_VERSION_MINOR(d.api_version) << "." << VK_API_VERSION_PATCH(d.api_version)
+              << "; dual-source blending (dualSrcBlend): " << (d.dual_source_blending ? "offered" : "not offered") << "\n";
+  }
+  try {
+    std::cout << describe_webgpu_adapter() << "\n";
+  } catch (const DeviceError& e) {
+    std::cout << "webgpu: " << e.what() << "\n";
   }
   return kOk;
 }

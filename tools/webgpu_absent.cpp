@@ -9,4 +9,6 @@ std::unique_ptr<rhi::Device> create_webgpu_device(SimulatedFault) {
                     "--backend webgpu is unavailable");
 }
 
+std::string describe_webgpu_adapter() { return "webgpu: unavailable (this volgraph was built without Dawn)"; }
+
 }  // namespace volgraph

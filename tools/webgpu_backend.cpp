@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "graph/rhi/webgpu/dawn_context.h"
 #include "graph/rhi/webgpu/webgpu_device.h"
 #include "tools/command_line.h"
 
@@ -25,6 +26,13 @@ bool fallback_adapter_allowed() {
 std::unique_ptr<rhi::Device> create_webgpu_device(SimulatedFault fault) {
   return webgpu::WebGpuDevice::create(
       {.errors_throw = true, .simulate = fault, .allow_fallback_adapter = fallback_adapter_allowed()});
+}
+
+std::string describe_webgpu_adapter() {
+  const std::unique_ptr<webgpu::DawnContext> context = webgpu::DawnContext::create({.allow_fallback_adapter = fallback_adapter_allowed()});
+  const rhi::AdapterInfo& info = context->info();
+  return "webgpu: " + info.device + " — " + info.driver + "; dual-source blending (DualSourceBlending): " +
+         (context->offers_dual_source_blending() ? "offered" : "not offered");
 }
 
 }  // namespace volgraph

@@ -5,6 +5,7 @@
 #   cli_test.sh VOLGRAPH render CONFIG    render writes a PFM, or names the pass with no GPU implementation
 #                                         yet (exit 1) and writes nothing
 #   cli_test.sh VOLGRAPH usage            bad command lines exit 2 with one message
+#   cli_test.sh VOLGRAPH devices          lists each adapter with whether it offers dual-source blending
 #   cli_test.sh VOLGRAPH dump CONFIG      --dump writes intermediates; a bad --dump exits 2 and writes nothing
 #   cli_test.sh VOLGRAPH reference CONFIG the CPU reference writes PFM and PNG with its time line; bad
 #                                         command lines and a broken model exit 2 and write nothing
@@ -188,6 +189,14 @@ got: $(cat "$tmp/err")"
       [ ! -e "$tmp/out.pfm" ] || fail "render wrote a file though it failed"
     fi
     [ -z "$(ls "$tmp" | grep tmp-)" ] || fail "a temporary file was left"
+    ;;
+  devices)
+    # Each adapter with what it offers for the translucency pass's coloured transmittance.
+    "$volgraph" devices >"$tmp/out" 2>"$tmp/err" || fail "devices exit $?; stderr: $(cat "$tmp/err")"
+    grep -Eq '^0: .*; dual-source blending \(dualSrcBlend\): (offered|not offered)$' "$tmp/out" ||
+      fail "no Vulkan device line with dualSrcBlend: $(cat "$tmp/out")"
+    grep -Eq '^webgpu: .*(DualSourceBlending\): (offered|not offered)|without Dawn)' "$tmp/out" ||
+      fail "no WebGPU line with DualSourceBlending: $(cat "$tmp/out")"
     ;;
   usage)
     for args in "" "frobnicate x.json" "plan" "plan $config --bogus" "plan $config --size 0x10" \

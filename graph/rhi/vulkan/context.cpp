@@ -48,8 +48,10 @@ DeviceInfo describe(VkPhysicalDevice d) {
   VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
   vkGetPhysicalDeviceProperties2(d, &props);
+  VkPhysicalDeviceFeatures features{};
+  vkGetPhysicalDeviceFeatures(d, &features);
   return {props.properties.deviceName, std::string(driver.driverName) + " " + driver.driverInfo,
-          props.properties.apiVersion, props.properties.vendorID};
+          props.properties.apiVersion, props.properties.vendorID, features.dualSrcBlend == VK_TRUE};
 }
 
 std::vector<VkPhysicalDevice> physical_devices(VkInstance instance) {

@@ -33,6 +33,7 @@ struct DeviceInfo {
   std::string driver;
   uint32_t api_version = 0;
   uint32_t vendor_id = 0;
+  bool dual_source_blending = false;  // VkPhysicalDeviceFeatures::dualSrcBlend
 };
 
 class Context {

@@ -109,6 +109,7 @@ void DawnContext::request_adapter() {
   }
   info_ = {"webgpu", text_of(info.device), "Dawn on " + text_of(info.description)};
   timestamps_ = adapter_.HasFeature(wgpu::FeatureName::TimestampQuery);
+  dual_source_blending_ = adapter_.HasFeature(wgpu::FeatureName::DualSourceBlending);
 }
 
 void DawnContext::request_device() {

@@ -41,6 +41,8 @@ class DawnContext {
   const wgpu::Queue& queue() const { return queue_; }
   const rhi::AdapterInfo& info() const { return info_; }
   bool has_timestamps() const { return timestamps_; }
+  // Whether the adapter offers FeatureName::DualSourceBlending (a second blend source).
+  bool offers_dual_source_blending() const { return dual_source_blending_; }
   SimulatedFault simulated_fault() const { return options_.simulate; }
 
   // Around the creation of a buffer or texture (`what` names it): an out-of-memory error
@@ -73,6 +75,7 @@ class DawnContext {
   wgpu::Queue queue_;
   rhi::AdapterInfo info_;
   bool timestamps_ = false;
+  bool dual_source_blending_ = false;
   std::mutex mutex_;  // guards what the callbacks write
   std::vector<std::string> messages_;
   size_t reported_ = 0;  // messages_ already thrown as DeviceErrors
