@@ -15,6 +15,7 @@
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "graph/rhi/webgpu/webgpu_device.h"
 #include "passes/passes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph {
 namespace {
@@ -81,7 +82,7 @@ int run(int frames, Extent size) {
   for (const char* demo : kDemos) {
     Overrides o;
     o.size = size;
-    const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/" + demo, registry, o);
+    const LoadedConfig c = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/" + demo, registry, o);
     const Measured vulkan = measure(vulkan_device, c, frames);
     const Measured webgpu = measure(*webgpu_device, c, frames);
     print(demo, vulkan, webgpu);

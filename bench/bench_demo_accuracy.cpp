@@ -20,6 +20,7 @@
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "passes/passes.h"
 #include "tests/support/fog_accuracy.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph {
 namespace {
@@ -78,7 +79,7 @@ int run_demos(Extent size, std::vector<std::string> configs) {
   auto context = vulkan::Context::create({});
   vulkan::VulkanDevice device(*context);
   if (configs.empty()) {
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(VOLGRAPH_SOURCE_DIR) + "/configs")) {
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(::volgraph::testing::source_dir()) + "/configs")) {
       const std::string name = entry.path().filename().string();
       if (name.rfind("demo_", 0) == 0 && entry.path().extension() == ".json") configs.push_back(entry.path().string());
     }

@@ -20,11 +20,12 @@
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "passes/passes.h"
 #include "tests/support/fog_accuracy.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph {
 namespace {
 
-const std::string kScene = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/oracle_fog_sphere.json";
+const std::string kScene = std::string(::volgraph::testing::source_dir()) + "/configs/tests/oracle_fog_sphere.json";
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());

@@ -21,11 +21,12 @@
 #include "graph/execute/executor.h"
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "passes/passes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph {
 namespace {
 
-const std::string kConfig = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_fog.json";
+const std::string kConfig = std::string(::volgraph::testing::source_dir()) + "/configs/demo_fog.json";
 constexpr const char* kCachedType = "opacity_shadow_map";
 
 double median(std::vector<double> values) {

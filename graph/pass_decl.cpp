@@ -1,5 +1,8 @@
 #include "graph/pass_decl.h"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include <cstdio>
 
 namespace volgraph {
@@ -185,14 +188,74 @@ SlotHandle PassTable::internal(std::string name, ResourceKind kind, Format forma
   return add_slot(std::move(slot), {});
 }
 
-StepHandle PassTable::step(std::string name, PassKind kind, std::vector<std::pair<SlotHandle, Usage>> uses) {
-  StepDecl step{std::move(name), kind, {}, nullptr};
+StepHandle PassTable::step(std::string name, PassKind kind, std::vector<std::pair<SlotHandle, Usage>> uses, StepCondition when) {
+  StepDecl step{std::move(name), kind, {}, nullptr, std::move(when)};
   for (const auto& [slot, usage] : uses) step.uses.push_back({slot.index, usage});
   decl.steps.push_back(std::move(step));
   return {uint16_t(decl.steps.size() - 1)};
 }
 
+StepCondition PassTable::only_in(std::vector<VariantHandle> variants) {
+  StepCondition c;
+  for (const VariantHandle v : variants) c.variants.push_back(v.index);
+  return c;
+}
+
+StepCondition PassTable::only_in_while(VariantHandle variant, ParamHandle<int64_t> count, int64_t above) {
+  StepCondition c = only_in({variant});
+  c.count_param = count.index;
+  c.above = above;
+  return c;
+}
+
+bool StepCondition::holds(uint16_t variant, const std::vector<ParamValue>& params) const {
+  if (!variants.empty() && std::find(variants.begin(), variants.end(), variant) == variants.end()) return false;
+  if (count_param < 0) return true;
+  const int64_t* count = std::get_if<int64_t>(&params.at(size_t(count_param)));
+  return count && *count > above;
+}
+
+namespace {
+
+// Whether step `later` runs whenever it does, for every variant and parameter value:
+// `earlier` runs at least as often (its variants include later's, its count bound is no stricter).
+bool runs_whenever(const StepCondition& earlier, const StepCondition& later) {
+  if (earlier.always()) return true;
+  if (!earlier.variants.empty()) {
+    if (later.variants.empty()) return false;
+    for (const uint16_t v : later.variants) {
+      if (std::find(earlier.variants.begin(), earlier.variants.end(), v) == earlier.variants.end()) return false;
+    }
+  }
+  if (earlier.count_param < 0) return true;
+  return later.count_param == earlier.count_param && later.above >= earlier.above;
+}
+
+void check_step_conditions(const PassDecl& decl) {
+  if (!decl.steps.empty() && !decl.steps.front().when.always()) {
+    throw std::logic_error("pass type " + decl.name + ": its first step \"" + decl.steps.front().name + "\" must always run");
+  }
+  std::vector<int> maker(decl.slots.size(), -1);  // the step that first writes each slot
+  for (size_t k = 0; k < decl.steps.size(); ++k) {
+    for (const auto& [slot, usage] : decl.steps[k].uses) {
+      const SlotDirection outer = decl.slots.at(slot).direction;
+      if (outer == SlotDirection::input || outer == SlotDirection::history || outer == SlotDirection::inout) continue;
+      if (maker[slot] < 0) {
+        if (usage_writes(usage)) maker[slot] = int(k);
+        continue;
+      }
+      if (!runs_whenever(decl.steps[size_t(maker[slot])].when, decl.steps[k].when)) {
+        throw std::logic_error("pass type " + decl.name + ": step \"" + decl.steps[k].name + "\" uses slot \"" + decl.slots[slot].name +
+                               "\" where step \"" + decl.steps[size_t(maker[slot])].name + "\", which makes it, does not run");
+      }
+    }
+  }
+}
+
+}  // namespace
+
 void finish_steps(PassDecl& decl) {
+  check_step_conditions(decl);
   std::vector<uint8_t> written(decl.slots.size(), 0);
   for (StepDecl& step : decl.steps) {
     PassDecl d = decl;

@@ -87,11 +87,27 @@ struct PassDecl;
 // compiler orders it, plans the barriers between it and the other steps, and times it.
 // It uses some of the pass's slots — inputs, outputs and internal slots — each with this
 // step's usage; the first step that writes a slot makes it, later writers modify it.
+//
+// A step may run only in some of the pass's variants, and while an integer parameter
+// exceeds a value (one step per layer of a technique with a layer count): the loader adds
+// only the steps whose condition holds, so a step that does not run has no graph pass and
+// the transients only it uses get no memory. The first step always runs (the graph pass
+// of the config's pass), and so must every step that first writes a slot a later step
+// uses under a weaker condition (registration checks).
+struct StepCondition {
+  std::vector<uint16_t> variants = {};  // empty: every variant
+  int32_t count_param = -1;             // an integer parameter's index; -1: no count
+  int64_t above = 0;                    // runs while that parameter's value exceeds this
+  bool always() const { return variants.empty() && count_param < 0; }
+  bool holds(uint16_t variant, const std::vector<ParamValue>& params) const;
+};
+
 struct StepDecl {
   std::string name;  // the graph pass is "<pass>/<name>"
   PassKind kind = PassKind::graphics;
   std::vector<std::pair<uint16_t, Usage>> uses;  // slot index (into PassDecl::slots), usage
   std::shared_ptr<const PassDecl> decl;          // made by finish_steps(): the step as a pass of its own
+  StepCondition when = {};
 };
 
 // Checks a pass whose scene needs hold, with its parameter values (as decl.params).
@@ -212,8 +228,11 @@ class PassTable {
   SlotHandle history(std::string name, SlotHandle output, std::string doc);
   // A transient only this pass's steps use: its kind, format and size as an output's.
   SlotHandle internal(std::string name, ResourceKind kind, Format format, SizeSpec size, std::string doc);
-  // A step and the slots it uses, with its usage of each.
-  StepHandle step(std::string name, PassKind kind, std::vector<std::pair<SlotHandle, Usage>> uses);
+  // A step and the slots it uses, with its usage of each; `when` says when it runs.
+  StepHandle step(std::string name, PassKind kind, std::vector<std::pair<SlotHandle, Usage>> uses, StepCondition when = {});
+  // Step conditions: in these variants; in this variant while `count` exceeds `above`.
+  static StepCondition only_in(std::vector<VariantHandle> variants);
+  static StepCondition only_in_while(VariantHandle variant, ParamHandle<int64_t> count, int64_t above);
 
  private:
   SlotHandle add_slot(SlotDecl slot, const SlotOptions& options);
@@ -224,7 +243,8 @@ class PassTable {
 // Makes each step's PassDecl (StepDecl::decl) once the table is complete: the pass's
 // variants, parameters, needs and slots (the same indices), each slot the step uses
 // given the step's usage and direction — input for reads, output for the step that first
-// writes a slot, inout for later writers.
+// writes a slot, inout for later writers. Throws std::logic_error where a conditional
+// step would make a slot that a step running more often uses (StepCondition).
 void finish_steps(PassDecl& decl);
 
 // A parameter's value among a pass's values (as its decl lists them), by its handle:

@@ -7,13 +7,11 @@
 #include <vector>
 
 #include "physics/phase.h"
+#include "physics/vec3.h"
 
 namespace volgraph::physics {
 namespace {
 
-Vec3 scaled(const Vec3& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }
-Vec3 sum(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 exp_negative(const Vec3& v) { return {std::exp(-v[0]), std::exp(-v[1]), std::exp(-v[2])}; }
 
 // The layer of `profile` that holds altitude h (Bruneton 2017, GetProfileDensity).
 const DensityLayer& layer_at(const DensityProfile& profile, double altitude) {
@@ -106,9 +104,9 @@ Vec3 gauss_legendre(const Atmosphere& atmosphere, double r, double mu, double d0
   for (int p = 0; p < panels; ++p) {
     const double centre = d0 + (p + 0.5) * width, half = 0.5 * width;
     for (size_t i = 0; i < kGaussNodes.size(); ++i) {
-      const Vec3 sides = sum(extinction_along(atmosphere, r, mu, centre - half * kGaussNodes[i]),
+      const Vec3 sides = add(extinction_along(atmosphere, r, mu, centre - half * kGaussNodes[i]),
                              extinction_along(atmosphere, r, mu, centre + half * kGaussNodes[i]));
-      total = sum(total, scaled(sides, kGaussWeights[i] * half));
+      total = add(total, scaled(sides, kGaussWeights[i] * half));
     }
   }
   return total;
@@ -160,7 +158,7 @@ Vec3 absorption_at(const Atmosphere& atmosphere, double altitude) {
 
 // Bruneton 2017, ComputeTransmittanceToTopAtmosphereBoundary: Rayleigh + Mie extinction + absorption.
 Vec3 extinction_at(const Atmosphere& atmosphere, double altitude) {
-  return sum(sum(rayleigh_scattering_at(atmosphere, altitude), mie_extinction_at(atmosphere, altitude)), absorption_at(atmosphere, altitude));
+  return add(add(rayleigh_scattering_at(atmosphere, altitude), mie_extinction_at(atmosphere, altitude)), absorption_at(atmosphere, altitude));
 }
 
 double distance_to_top(const Atmosphere& atmosphere, double r, double mu) {
@@ -225,9 +223,9 @@ Vec3 optical_depth_fixed(const Atmosphere& atmosphere, double r, double mu, doub
   for (int p = 0; p < panels; ++p) {
     const double centre = (2 * p + 1) * half;
     for (size_t i = 0; i < kGauss4Nodes.size(); ++i) {
-      const Vec3 sides = sum(extinction_at(atmosphere, altitude_at(atmosphere, r, mu, centre - half * kGauss4Nodes[i])),
+      const Vec3 sides = add(extinction_at(atmosphere, altitude_at(atmosphere, r, mu, centre - half * kGauss4Nodes[i])),
                              extinction_at(atmosphere, altitude_at(atmosphere, r, mu, centre + half * kGauss4Nodes[i])));
-      total = sum(total, scaled(sides, kGauss4Weights[i] * half));
+      total = add(total, scaled(sides, kGauss4Weights[i] * half));
     }
   }
   return total;
@@ -243,7 +241,7 @@ Vec3 optical_depth(const Atmosphere& atmosphere, double r, double mu, double len
     if (d1 <= d0) continue;
     const double altitude_span = std::abs(radius_at(r, mu, d1) - radius_at(r, mu, d0));
     const int panels = int(std::clamp(std::ceil(altitude_span / (2 * scale_height)), 1.0, 4096.0));
-    total = sum(total, gauss_legendre(atmosphere, r, mu, d0, d1, panels));
+    total = add(total, gauss_legendre(atmosphere, r, mu, d0, d1, panels));
   }
   return total;
 }
@@ -275,7 +273,7 @@ Vec3 zenith_optical_depth(const Atmosphere& atmosphere, double altitude) {
   const Vec3 rayleigh = scaled(atmosphere.rayleigh_scattering, profile_integral(atmosphere.rayleigh_density, altitude, top));
   const Vec3 mie = scaled(atmosphere.mie_extinction, profile_integral(atmosphere.mie_density, altitude, top));
   const Vec3 ozone = scaled(atmosphere.absorption_extinction, profile_integral(atmosphere.absorption_density, altitude, top));
-  return sum(sum(rayleigh, mie), ozone);
+  return add(add(rayleigh, mie), ozone);
 }
 
 Vec3 transmittance_to_boundary(const Atmosphere& atmosphere, double r, double mu) {

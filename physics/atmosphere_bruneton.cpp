@@ -5,6 +5,8 @@
 
 #include "physics/atmosphere.h"
 #include "physics/phase.h"
+#include "physics/lighting.h"
+#include "physics/vec3.h"
 
 namespace volgraph::physics {
 namespace {
@@ -12,8 +14,6 @@ namespace {
 double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double length3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
 Vec3 axpy(const Vec3& x, double s, const Vec3& y) { return {x[0] + s * y[0], x[1] + s * y[1], x[2] + s * y[2]}; }
-Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
-Vec3 times(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 
 double clamp_cosine(double mu) { return std::clamp(mu, -1.0, 1.0); }
 // Bruneton 2017, ClampRadius.
@@ -79,10 +79,6 @@ Vec3 with_phases(const Atmosphere& a, const Vec3& rayleigh, const Vec3& mie, dou
   return axpy(times(rayleigh, phase_rayleigh(nu)), mie_phase(a, nu), mie);
 }
 
-double smoothstep(double e0, double e1, double x) {
-  const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3 - 2 * t);
-}
 
 }  // namespace
 

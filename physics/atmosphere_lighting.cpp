@@ -6,6 +6,7 @@
 
 #include "physics/atmosphere.h"
 #include "physics/atmosphere_multiscattering.h"
+#include "physics/vec3.h"
 
 namespace volgraph::physics {
 namespace {
@@ -29,7 +30,6 @@ std::optional<SunAtOrigin> sun_at_origin(const Scene& scene) {
   return SunAtOrigin{&light, a.bottom_radius + std::max(a.origin_altitude, 0.0), std::clamp(-d[1] / length, -1.0, 1.0)};
 }
 
-Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
 }  // namespace
 

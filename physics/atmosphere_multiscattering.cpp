@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "physics/atmosphere.h"
+#include "physics/vec3.h"
 
 namespace volgraph::physics {
 namespace {
@@ -25,7 +26,6 @@ SphereDirection sphere_direction(int i, int j, int n, double mu_s) {
   return {cos_phi, std::cos(theta) * sin_phi * sun_x + cos_phi * mu_s};
 }
 
-Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 // One ray's L_f (unit sun) and its ∫σs T dt, marched from (r, mu) to its boundary.
 MultiscatteringTerms march(const Atmosphere& a, double r, double mu, double mu_s, double nu, int steps) {

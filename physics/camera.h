@@ -17,6 +17,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "graph/scene/scene.h"
+#include "physics/vec3.h"
 
 namespace volgraph::physics {
 
@@ -30,20 +31,6 @@ inline Vec3 to_vec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 // (the reference renderer's images are compared against stored ones); glm::normalize
 // multiplies by inversesqrt instead.
 inline glm::dvec3 unit(const glm::dvec3& v) { return v / glm::length(v); }
-
-// The scene-side helpers on Vec3, for passes/, reference/ and tests/ (physics/ computes
-// with glm::dvec3).
-inline Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-inline Vec3 scaled(const Vec3& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline Vec3 normalize(const Vec3& v) {
-  const double l = std::sqrt(dot(v, v));
-  return {v[0] / l, v[1] / l, v[2] / l};
-}
 
 // Column-major floats for a uniform block's mat4 (GLSL's layout, and GLM's).
 inline void to_floats(const Mat4& m, float* out) {

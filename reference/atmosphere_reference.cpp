@@ -16,13 +16,13 @@ using physics::add;
 using physics::dot;
 using physics::normalize;
 using physics::scaled;
+using physics::times;
+using physics::largest;
+using physics::exp_negative;
+using physics::length_of;
 
 constexpr double kPi = 3.14159265358979323846;
 
-double largest(const Vec3& v) { return std::max({v[0], v[1], v[2]}); }
-Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
-Vec3 exp_minus(const Vec3& tau) { return {std::exp(-tau[0]), std::exp(-tau[1]), std::exp(-tau[2])}; }
-double length_of(const Vec3& v) { return std::sqrt(dot(v, v)); }
 
 // The sun's disk as a uniform emitter (physics/atmosphere_sky.h).
 Vec3 sun_radiance(const AtmosphereSun& sun) { return scaled(sun.irradiance, physics::sun_disk_radiance_scale(sun.angular_radius)); }
@@ -206,7 +206,7 @@ Vec3 AtmosphereReference::single_scattering_along(const Vec3& position, const Ve
   const double r = length_of(position), mu = std::clamp(dot(position, direction) / r, -1.0, 1.0);
   const auto f = [&](double t) {
     const Vec3 tau = physics::optical_depth(atmosphere_, r, mu, t);
-    return times(exp_minus(tau), in_scattering(add(position, scaled(direction, t)), direction, sun));
+    return times(exp_negative(tau), in_scattering(add(position, scaled(direction, t)), direction, sun));
   };
   const auto simpson = [](double a, double b, const Vec3& fa, const Vec3& fm, const Vec3& fb) {
     Vec3 s;
@@ -289,7 +289,7 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
   out.standard_error.assign(max_orders, {0, 0, 0});
   const double r0 = length_of(position), mu0 = std::clamp(dot(position, direction) / r0, -1.0, 1.0);
   const Vec3 ground_point = add(position, scaled(direction, length));
-  const Vec3 view_transmittance_to_end = exp_minus(physics::optical_depth(a, r0, mu0, length));
+  const Vec3 view_transmittance_to_end = exp_negative(physics::optical_depth(a, r0, mu0, length));
 
   // Order 1: deterministic.
   out.radiance[0] = single_scattering_along(position, direction, length, sun_.direction);
@@ -344,7 +344,7 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
     };
     const auto transmittance_along = [&](const Vec3& y, const Vec3& d, double t) {
       const double r = std::clamp(length_of(y), a.bottom_radius, a.top_radius);
-      return exp_minus(physics::optical_depth(a, r, std::clamp(dot(y, d) / length_of(y), -1.0, 1.0), t));
+      return exp_negative(physics::optical_depth(a, r, std::clamp(dot(y, d) / length_of(y), -1.0, 1.0), t));
     };
     // Continues a path from vertex `order` at y along d, tallying NEE at orders ≥ 2. Each
     // segment's next vertex is in the air (a forced collision, drawn by draw_distance) or,
@@ -390,7 +390,7 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
       const SegmentTable table = tabulate(a, position, direction, length);
       const double t = draw_distance(table, hero, random);
       Throughput beta;
-      beta.step(exp_minus(physics::optical_depth(a, r0, mu0, t)),
+      beta.step(exp_negative(physics::optical_depth(a, r0, mu0, t)),
                 {distance_density(table, 0, t), distance_density(table, 1, t), distance_density(table, 2, t)}, hero);
       const Vec3 y = add(position, scaled(direction, t));
       tally[0] = add(tally[0], times(beta.estimate(), air_nee(y, direction)));  // the check of order 1
@@ -460,7 +460,7 @@ SkySample AtmosphereReference::sky(const Vec3& position, const Vec3& direction_i
   const double mu = std::clamp(dot(p, direction) / r, -1.0, 1.0);
   out.hits_ground = physics::ray_hits_ground(a, r, mu);
   const double length = physics::distance_to_boundary(a, r, mu);
-  out.transmittance = exp_minus(physics::optical_depth(a, r, mu, length));
+  out.transmittance = exp_negative(physics::optical_depth(a, r, mu, length));
   if (!out.hits_ground && dot(direction, sun_.direction) >= std::cos(sun_.angular_radius))
     out.sun_disk = times(sun_radiance(sun_), out.transmittance);
   out.scattering = scatter(p, direction, length, out.hits_ground, key);
@@ -487,7 +487,7 @@ AerialPerspectiveSample AtmosphereReference::aerial_perspective(const Vec3& posi
   }
   const double mu = std::clamp(dot(p, direction) / r, -1.0, 1.0);
   d = std::min(d, physics::distance_to_boundary(a, r, mu));
-  out.transmittance = exp_minus(physics::optical_depth(a, r, mu, d));
+  out.transmittance = exp_negative(physics::optical_depth(a, r, mu, d));
   out.scattering = scatter(p, direction, d, false, key);
   out.in_scattered = out.scattering.total;
   return out;
@@ -510,7 +510,7 @@ Vec3 AtmosphereReference::transmittance_along(const Vec3& position, const Vec3& 
     d -= *entry;
   }
   const double mu = std::clamp(dot(p, direction) / r, -1.0, 1.0);
-  return exp_minus(physics::optical_depth(a, r, mu, std::min(d, physics::distance_to_boundary(a, r, mu))));
+  return exp_negative(physics::optical_depth(a, r, mu, std::min(d, physics::distance_to_boundary(a, r, mu))));
 }
 
 SkyImage render_sky_image(const AtmosphereReference& reference, const Camera& camera, const RenderSettings& settings) {

@@ -15,6 +15,8 @@ namespace {
 using physics::add;
 using physics::Mat4;
 using physics::scaled;
+using physics::times;
+using physics::over;
 
 constexpr double kInfiniteDepth = 1e300;
 // A volume's chord is integrated on at most this many panels and a camera ray cut at most
@@ -33,8 +35,6 @@ constexpr double kUnderResolvedSegmentsPerChord = 8;
 constexpr double kNegligibleExponent = 50;
 Vec3 transform_vector(const Mat4& m, const Vec3& v) { return physics::to_vec3(glm::dmat3(m) * physics::vec(v)); }
 
-Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
-Vec3 over(const Vec3& a, const Vec3& b) { return {a[0] / b[0], a[1] / b[1], a[2] / b[2]}; }
 
 Vec3 sigma_t(const Medium& m) { return add(m.sigma_s, m.sigma_a); }
 

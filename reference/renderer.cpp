@@ -17,6 +17,8 @@ using physics::dot;
 using physics::normalize;
 using physics::scaled;
 using physics::sub;
+using physics::times;
+using physics::is_zero;
 
 constexpr double kShadowRayOffset = 1e-9;  // metres per metre of |point|∞, plus 1e-9 m
 
@@ -46,8 +48,6 @@ Vec3 interpolate(const std::array<Vec3, 3>& corners, double u, double v) {
   return add(add(scaled(corners[0], 1 - u - v), scaled(corners[1], u)), scaled(corners[2], v));
 }
 
-bool is_zero(const Vec3& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
-Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
 // Optical depth of the media from `point` to the light.
 Vec3 optical_depth_toward(const SceneMedia& media, const Light& light, const Vec3& point) {

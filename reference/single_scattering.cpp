@@ -10,13 +10,13 @@ namespace {
 
 using physics::add;
 using physics::scaled;
+using physics::times;
+using physics::largest;
 
 constexpr uint32_t kBisectionSteps = 60;  // for where the transmittance reaches its floor
 constexpr double kRoundOff = 1e-13;       // refinement below this relative change only chases rounding
 
-double max_channel(const Vec3& v) { return std::max({v[0], v[1], v[2]}); }
 double max_abs(const Vec3& v) { return std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])}); }
-Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
 // Simpson's rule on [a, b] from f(a), f(m), f(b).
 Vec3 simpson(double a, double b, const Vec3& fa, const Vec3& fm, const Vec3& fb) {
@@ -45,7 +45,7 @@ class Segment {
     double lo = a_, hi = b;
     for (uint32_t i = 0; i < kBisectionSteps; ++i) {
       const double mid = (lo + hi) / 2;
-      (max_channel(transmittance(mid)) < floor ? hi : lo) = mid;
+      (largest(transmittance(mid)) < floor ? hi : lo) = mid;
     }
     return hi;
   }
@@ -151,7 +151,7 @@ RayScattering integrate_single_scattering(const SceneMedia& media, const Vec3& o
     const Segment segment(media, origin, direction, a, out.transmittance, source, settings);
     const Vec3 t_b = segment.transmittance(b);
     if (gathering) {
-      const bool falls_below = max_channel(t_b) < settings.min_transmittance;
+      const bool falls_below = largest(t_b) < settings.min_transmittance;
       const double end = falls_below ? segment.where_transmittance_reaches(b, settings.min_transmittance) : b;
       const double panel = media.noisy_panel(origin, direction, a, end);
       out.radiance = add(out.radiance, panel > 0 ? segment.integrate_on_panels(end, panel) : segment.integrate(end));

@@ -15,12 +15,12 @@ using physics::add;
 using physics::dot;
 using physics::scaled;
 using physics::sub;
+using physics::times;
+using physics::largest;
+using physics::is_zero;
 
 constexpr double kSecondaryRayOffset = 1e-9;  // metres per metre of |point|∞, plus 1e-9 m (as shadow rays)
 
-Vec3 times(const Vec3& a, const Vec3& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
-double largest(const Vec3& v) { return std::max({v[0], v[1], v[2]}); }
-bool is_zero(const Vec3& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 
 // The next parameter to search from after a hit at t: past it by a relative 1e-12, so a
 // ray through an edge shared by two triangles meets one of them.

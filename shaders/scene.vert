@@ -9,6 +9,9 @@ layout(location = 2) in vec2 uv;
 layout(location = 0) out vec3 world_position;
 layout(location = 1) out vec3 world_normal;
 layout(location = 2) out vec2 texture_uv;
+// The same depth in every pipeline that draws a surface (translucency's depth peeling
+// tests its layers for equality).
+invariant gl_Position;
 
 void main() {
   const vec4 world = object.model * vec4(position, 1.0);

@@ -173,3 +173,13 @@ pass_tests(atmosphere_aerial_perspective "(^|/)AtmosphereApply\\.ReadsTheAir")
 pass_tests(atmosphere_transmittance_lut "(^|/)AtmosphereApply\\.ReadsTheAir")
 pass_tests(atmosphere_multiscattering_lut "(^|/)AtmosphereApply\\.ReadsTheAir")
 pass_tests(atmosphere_bruneton_tables "(^|/)AtmosphereApply\\.ReadsTheAir")
+
+# tests/gpu/translucency_test.cpp: scene → translucency (every variant; froxel_apply and
+# aerial_perspective_apply beside it for the fogged and air-seen sheets);
+# tests/gpu/shadow_casters_test.cpp: shadow_map's masked casters; tests/unit: the shared
+# optics (physics/translucency.h), the material keys, glTF's extensions; the reference's
+# translucent rays; the accuracy test against them.
+pass_tests(translucency "(^|/)Translucency\\." "^TranslucencyConfig\\." "^GltfTranslucency\\." "^TranslucencyReference\\."
+  "^TranslucencyAccuracy\\.")
+pass_tests(scene "(^|/)Translucency\\.")
+pass_tests(shadow_map "(^|/)ShadowCasters\\.")

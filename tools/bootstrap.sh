@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  cmake ninja-build ccache clang libclang-rt-14-dev
+  cmake ninja-build ccache clang lld libclang-rt-14-dev
   nlohmann-json3-dev googletest libgtest-dev libbenchmark-dev
   graphviz
   libvulkan-dev vulkan-validationlayers glslang-tools spirv-tools

@@ -17,6 +17,9 @@ struct IoError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A text's bytes, for write_file_checked and OutputFiles::stage.
+inline std::span<const std::byte> text_bytes(const std::string& text) { return std::as_bytes(std::span(text.data(), text.size())); }
+
 // Writes `bytes` to `path` (created or truncated), checking every fwrite, the fflush and
 // the fclose; throws IoError "NAME: <the system's reason>" when one fails, NAME `path`
 // unless given (the target a temporary stands for).

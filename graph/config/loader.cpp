@@ -626,7 +626,10 @@ class Wiring {
     steps_.assign(config_.passes.size(), {});
     for (uint32_t p = 0; p < config_.passes.size(); ++p) {
       steps_[p].push_back(p);
-      for (uint16_t k = 1; k < decls_[p]->steps.size(); ++k) steps_[p].push_back(add_pass(b, p, k));
+      for (uint16_t k = 1; k < decls_[p]->steps.size(); ++k) {
+        const bool runs = decls_[p]->steps[k].when.holds(variants_[p], params_[p]);
+        steps_[p].push_back(runs ? add_pass(b, p, k) : kNone);
+      }
     }
     std::vector<std::vector<ResourceVersion>> made(config_.passes.size());
     for (uint32_t p : order) {
@@ -659,7 +662,9 @@ class Wiring {
     diags_.throw_if_any();
     out.graph = b.finish();
     for (uint32_t p = 0; p < config_.passes.size(); ++p) {
-      for (const uint32_t step : steps_[p]) out.graph.passes[step].params = params_[p];
+      for (const uint32_t step : steps_[p]) {
+        if (step != kNone) out.graph.passes[step].params = params_[p];
+      }
     }
     out.params = params_;
     return out;
@@ -680,11 +685,13 @@ class Wiring {
   // A pass made of steps: each step binds the slots it uses, in step order — the pass's
   // inputs as wired, its outputs and internal slots made by the first step that writes
   // them (named "pass.slot", as a pass's own outputs are) and modified by later ones.
+  // Steps whose condition does not hold were not added (kNone): they bind nothing.
   void bind_steps(GraphBuilder& b, uint32_t p, std::vector<std::vector<ResourceVersion>>& made) {
     const PassDecl& decl = *decls_[p];
     std::vector<uint8_t> exists(decl.slots.size(), 0);
     for (uint16_t k = 0; k < decl.steps.size(); ++k) {
       const uint32_t g = steps_[p][k];
+      if (g == kNone) continue;
       for (const auto& [slot, usage] : decl.steps[k].uses) {
         const SlotDecl& s = decl.steps[k].decl->slots[slot];
         const std::optional<SlotRef>& wired = inputs_[p][slot];
@@ -793,7 +800,7 @@ class Wiring {
   std::vector<std::vector<Where>> wiring_where_;
   std::vector<std::optional<SlotRef>> outputs_;
   std::map<std::pair<std::string, std::string>, SizeSpec> sizes_resolved_;
-  std::vector<std::vector<uint32_t>> steps_;  // per config pass: its graph passes (itself, or its steps)
+  std::vector<std::vector<uint32_t>> steps_;  // per config pass: its graph passes (itself, or its steps; kNone: a step that does not run)
 };
 
 void apply_overrides(Config& config, const Overrides& o, Diagnostics& diags) {

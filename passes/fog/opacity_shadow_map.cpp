@@ -21,7 +21,7 @@
 namespace volgraph {
 namespace {
 
-std::vector<ParamProblem> check_media(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
+std::vector<ParamProblem> check_shadowed_media(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
   return fog::media_fit_problems(scene, "shadowed");
 }
 
@@ -30,7 +30,7 @@ struct OpacityShadowMapTable : PassTable {
       : PassTable("opacity_shadow_map", PassKind::compute,
                   "The local media volumes' optical depth from a shadow map's light, in layers over its light view (Kim & Neumann 2001).") {
     decl.needs = feature_bit(SceneFeature::medium);
-    decl.check_scene = check_media;
+    decl.check_scene = check_shadowed_media;
     // The shader reads the frame block's lights and media (not its camera or grid) and
     // the light view (whose key carries shadow_map's camera fit).
     decl.cached = true;

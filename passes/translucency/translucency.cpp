@@ -13,8 +13,14 @@
 //   McGuire 2015's coloured transmission): the transmittances multiply exactly (their
 //   optical depths add), the radiance is a depth-weighted mean; resolved onto the colour
 //   in two draws.
-// Solid objects' paths inside end at their back faces (a step draws them into back_depth)
-// or at the opaque surface, whichever is nearer: convex solids, one per pixel.
+// - depth_peeling: the layers in exact back-to-front order per pixel (Everitt 2001,
+//   peeled from the back): each layer's depth is the farthest surface in front of the one
+//   peeled before, then every surface at exactly that depth is shaded as in sorted. A
+//   convex solid costs two layers (its back faces end its inside path and shade nothing);
+//   with fewer layers than a pixel has, the nearest ones are left out.
+// In sorted and weighted_oit solid objects' paths inside end at their back faces (a step
+// draws them into back_depth) or at the opaque surface, whichever is nearer: convex
+// solids, one per pixel; in depth_peeling at the layer behind.
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
@@ -29,6 +35,13 @@
 
 namespace volgraph {
 namespace {
+
+constexpr int64_t kMaxPeeledLayers = 16;
+
+// depth_peeling's two steps per layer.
+struct PeelSteps {
+  StepHandle depth, shade;
+};
 
 // std140 mirror of translucent_surface.glsl's TranslucencyBlock.
 struct GpuTranslucencyBlock {
@@ -51,12 +64,16 @@ struct TranslucencyTable : PassTable {
   VariantHandle sorted = variant("sorted", "objects from the farthest to the nearest, each × its transmittance then + its radiance");
   VariantHandle weighted_oit = variant(
       "weighted_oit", "weighted blended order-independent transparency (McGuire & Bavoil 2013; coloured transmission, McGuire 2015)");
+  VariantHandle depth_peeling = variant(
+      "depth_peeling", "each pixel's layers in exact back-to-front order, peeled from the back (Everitt 2001); up to `layers` of them");
   // Parameters.
   ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
   ParamHandle<std::string> refraction =
       choice("refraction", "screen_space", {"screen_space", "none"},
              "sorted: solids of IOR ≠ 1 show refracted_color where their refracted ray lands (Sousa 2005; the slab approximation), "
              "when it is wired; none: what lies straight behind");
+  ParamHandle<int64_t> layers = integer("layers", 8, 1, kMaxPeeledLayers, "layers",
+                                        "depth_peeling: the layers peeled a pixel (the farthest first; a convex solid is two)");
   // Slots.
   SlotHandle color = inout("color", ResourceKind::texture2d, Usage::color_attachment_load, "the scene's linear radiance, fogged");
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the opaque scene's depth", {.format = Format::d32_float});
@@ -83,18 +100,44 @@ struct TranslucencyTable : PassTable {
                                          "weighted_oit: Σ w·radiance, Σ w·opacity");
   SlotHandle oit_optical_depth = internal("oit_optical_depth", ResourceKind::texture2d, Format::rgba16_float, SizeSpec::of_output(),
                                       "weighted_oit: Σ −ln T per channel, the layers' transmittances multiplied");
+  SlotHandle peel_depth = internal("peel_depth", ResourceKind::texture2d, Format::d32_float, SizeSpec::of_output(),
+                                   "depth_peeling: the even layers' depth (back_depth holds the odd ones')");
   // Steps.
+  // depth_peeling clears back_depth to the far plane: nothing peeled yet.
   StepHandle back_faces = step("back_faces", PassKind::graphics, with_surface_inputs({{back_depth, Usage::depth_attachment}}));
   StepHandle surfaces = step("surfaces", PassKind::graphics,
                              with_surface_inputs({{color, Usage::color_attachment_load}, {back_depth, Usage::sampled},
-                                                  {refracted_color, Usage::sampled}}));
+                                                  {refracted_color, Usage::sampled}}),
+                             only_in({sorted}));
   StepHandle accumulate = step("accumulate", PassKind::graphics,
                                with_surface_inputs({{oit_accumulation, Usage::color_attachment}, {oit_optical_depth, Usage::color_attachment},
-                                                    {back_depth, Usage::sampled}}));
+                                                    {back_depth, Usage::sampled}}),
+                               only_in({weighted_oit}));
   StepHandle resolve = step("resolve", PassKind::graphics,
-                            {{color, Usage::color_attachment_load}, {oit_accumulation, Usage::sampled}, {oit_optical_depth, Usage::sampled}});
+                            {{color, Usage::color_attachment_load}, {oit_accumulation, Usage::sampled}, {oit_optical_depth, Usage::sampled}},
+                            only_in({weighted_oit}));
+  // depth_peeling, layer k (k < layers): its depth, then the surfaces at that depth.
+  std::array<PeelSteps, kMaxPeeledLayers> peel = peel_steps();
+
+  // Layer k's depth target, and the layer peeled before it (its fragments lie in front of it).
+  SlotHandle layer_depth(size_t k) const { return k % 2 == 0 ? peel_depth : back_depth; }
+  SlotHandle behind_layer(size_t k) const { return k % 2 == 0 ? back_depth : peel_depth; }
 
  private:
+  std::array<PeelSteps, kMaxPeeledLayers> peel_steps() {
+    std::array<PeelSteps, kMaxPeeledLayers> steps;
+    for (size_t k = 0; k < steps.size(); ++k) {
+      const StepCondition while_peeled = only_in_while(depth_peeling, layers, int64_t(k));
+      const std::string layer = std::to_string(k);
+      steps[k].depth = step("peel_depth_" + layer, PassKind::graphics,
+                            with_surface_inputs({{layer_depth(k), Usage::depth_attachment}, {behind_layer(k), Usage::sampled}}), while_peeled);
+      steps[k].shade = step("peel_shade_" + layer, PassKind::graphics,
+                            with_surface_inputs({{color, Usage::color_attachment_load}, {layer_depth(k), Usage::depth_read},
+                                                 {behind_layer(k), Usage::sampled}, {refracted_color, Usage::sampled}}),
+                            while_peeled);
+    }
+    return steps;
+  }
   // What every step that shades surfaces reads, beside its own targets.
   std::vector<std::pair<SlotHandle, Usage>> with_surface_inputs(std::vector<std::pair<SlotHandle, Usage>> uses) const {
     for (const SlotHandle s : {depth, shadow_map, integrated_scattering, integrated_transmittance, aerial_scattering, aerial_transmittance}) {
@@ -111,6 +154,10 @@ struct SurfacePrograms {
   plumbing::RenderProgram refract_front;  // sorted: a refracting solid's first draw (replaces)
   plumbing::RenderProgram accumulate_all, accumulate_front;                                       // weighted_oit
   plumbing::RenderProgram back_depth;                                                             // the back faces' depth
+  // depth_peeling: a layer's depth, then its surfaces at exactly that depth (as sorted draws
+  // them: both faces of the rest, the front faces of solids, a refracting solid replacing).
+  plumbing::RenderProgram peel_depth, peel_transmittance_all, peel_radiance_all, peel_transmittance_front, peel_radiance_front,
+      peel_refract_front;
 };
 
 class TranslucencyExecution final : public PassExecution {
@@ -122,12 +169,13 @@ class TranslucencyExecution final : public PassExecution {
     using rhi::CullMode;
     const Format color = s.desc(t_.color).format;
     const auto surface = [&](const char* label, const char* fragment, std::vector<rhi::ColorTargetState> targets, CullMode cull,
-                             const plumbing::RenderProgram* like) {
+                             const plumbing::RenderProgram* like, rhi::DepthStencilState depth = {}) {
       rhi::RenderPipelineDesc pd;
       pd.label = s.name() + " " + label;
       pd.vertex_buffers = {plumbing::SceneGeometry::vertex_layout()};
       pd.colors = std::move(targets);
       pd.cull = cull;
+      pd.depth = depth;
       return like ? plumbing::create_render_program(s.device, pd, "scene.vert", fragment, *like)
                   : plumbing::create_render_program(s.device, pd, "scene.vert", fragment);
     };
@@ -151,6 +199,20 @@ class TranslucencyExecution final : public PassExecution {
       pd.cull = CullMode::front;
       p.back_depth = plumbing::create_render_program(s.device, pd, "scene.vert", "translucency_depth.frag", *like);
     }
+    // Peeling keeps the farthest surface in front of the layer before; its shading matches that depth exactly
+    // (scene.vert's invariant position).
+    p.peel_depth = surface("peeled layer's depth", "translucency_peel_depth.frag", {}, CullMode::none, like,
+                           {Format::d32_float, true, rhi::CompareFunction::greater});
+    const rhi::DepthStencilState at_layer = {Format::d32_float, false, rhi::CompareFunction::equal};
+    p.peel_transmittance_all = surface("peeled × transmittance", "translucency_transmittance.frag", {{color, BlendMode::multiply}},
+                                       CullMode::none, like, at_layer);
+    p.peel_radiance_all = surface("peeled + radiance", "translucency_radiance.frag", {{color, BlendMode::additive}}, CullMode::none, like, at_layer);
+    p.peel_transmittance_front = surface("peeled × transmittance (front faces)", "translucency_transmittance.frag",
+                                         {{color, BlendMode::multiply}}, CullMode::back, like, at_layer);
+    p.peel_radiance_front = surface("peeled + radiance (front faces)", "translucency_radiance.frag", {{color, BlendMode::additive}},
+                                    CullMode::back, like, at_layer);
+    p.peel_refract_front = surface("peeled refracted × transmittance", "translucency_refract.frag", {{color, BlendMode::replace}},
+                                   CullMode::back, like, at_layer);
     resolve_ = {resolve_program(s, color, BlendMode::multiply, "translucency_oit_revealage.frag"),
                 resolve_program(s, color, BlendMode::additive, "translucency_oit_radiance.frag")};
     plumbing::check_uniform_mirror<GpuSceneFrame>(*like, 0, 0, s.name() + " frame (the scene pass's)");
@@ -168,6 +230,10 @@ class TranslucencyExecution final : public PassExecution {
     if (c.step_is(t_.surfaces) && c.variant_is(t_.sorted)) return record_sorted(c);
     if (c.step_is(t_.accumulate) && c.variant_is(t_.weighted_oit)) return record_accumulate(c);
     if (c.step_is(t_.resolve) && c.variant_is(t_.weighted_oit)) return record_resolve(c);
+    for (size_t k = 0; k < t_.peel.size(); ++k) {
+      if (c.step_is(t_.peel[k].depth)) return record_peel_depth(c, k);
+      if (c.step_is(t_.peel[k].shade)) return record_peel_shade(c, k);
+    }
   }
 
  private:
@@ -263,16 +329,55 @@ class TranslucencyExecution final : public PassExecution {
     return order;
   }
 
+  void draw_solid_back_faces(PassContext& c) {
+    c.encoder.set_pipeline(programs_.back_depth.pipeline);
+    bind_surface_sets(c, textures_->white(), textures_->white());
+    for (const plumbing::GpuObject& o : geometry_->objects()) {
+      if (o.translucent && o.volume == VolumeKind::solid) plumbing::SceneGeometry::draw(c.encoder, 1, o);
+    }
+  }
+
+  // depth_peeling's first step: nothing is peeled yet, every surface lies in front of back_depth.
   void record_back_faces(PassContext& c) {
     write_block(c);
     rhi::RenderPassDesc pass;
     pass.label = c.name();
     pass.depth = {c.view(t_.back_depth), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
-    c.encoder.set_pipeline(programs_.back_depth.pipeline);
-    bind_surface_sets(c, textures_->white(), textures_->white());
+    if (!c.variant_is(t_.depth_peeling)) draw_solid_back_faces(c);
+    c.encoder.end_render_pass();
+  }
+
+  // Layer k's depth: the farthest translucent surface in front of the opaque one and the layer before.
+  void record_peel_depth(PassContext& c, size_t k) {
+    rhi::RenderPassDesc pass;
+    pass.label = c.name();
+    pass.depth = {c.view(t_.layer_depth(k)), rhi::LoadOp::clear, 0.0f, false};
+    c.encoder.begin_render_pass(pass);
+    c.encoder.set_pipeline(programs_.peel_depth.pipeline);
+    bind_surface_sets(c, c.view(t_.behind_layer(k)), textures_->white());
     for (const plumbing::GpuObject& o : geometry_->objects()) {
-      if (o.translucent && o.volume == VolumeKind::solid) plumbing::SceneGeometry::draw(c.encoder, 1, o);
+      if (o.translucent) plumbing::SceneGeometry::draw(c.encoder, 1, o);
+    }
+    c.encoder.end_render_pass();
+  }
+
+  // Layer k's surfaces over what lies behind them: one fragment a pixel passes the equal test.
+  void record_peel_shade(PassContext& c, size_t k) {
+    rhi::RenderPassDesc pass;
+    pass.label = c.name();
+    pass.colors = {{c.view(t_.color), rhi::LoadOp::load}};
+    pass.depth = {c.view(t_.layer_depth(k)), rhi::LoadOp::load, 0.0f, true};
+    c.encoder.begin_render_pass(pass);
+    bind_surface_sets(c, c.view(t_.behind_layer(k)), refracting(c) ? c.view(t_.refracted_color) : textures_->white());
+    const SurfacePrograms& p = programs_;
+    for (const plumbing::GpuObject& o : geometry_->objects()) {
+      if (!o.translucent) continue;
+      if (o.volume != VolumeKind::solid) {
+        draw_twice(c, o, p.peel_transmittance_all, p.peel_radiance_all);
+        continue;
+      }
+      draw_twice(c, o, refracting(c) ? p.peel_refract_front : p.peel_transmittance_front, p.peel_radiance_front);
     }
     c.encoder.end_render_pass();
   }

@@ -5,7 +5,8 @@
 // aerial-perspective volume is wired (fogged_layer again: the graph applies the air after
 // the fog), and handed to `write_layer` with its SurfacePoint, which the including
 // shader defines with `light_visibility` before including this file. Fragments behind the
-// opaque surface are dropped (the opaque depth is sampled: no depth attachment).
+// opaque surface are dropped (the opaque depth is sampled: no depth attachment), and with
+// TRANSLUCENT_PEELING defined those behind the layer back_depth holds.
 #ifndef VOLGRAPH_TRANSLUCENT_SURFACE_GLSL
 #define VOLGRAPH_TRANSLUCENT_SURFACE_GLSL
 #include "atmosphere_aerial_lookup.glsl"
@@ -68,6 +69,10 @@ void main() {
   if (alpha_mode == kAlphaMask && texel_coverage < object.alpha_test.y) discard;
   const float coverage = alpha_mode == kAlphaBlend ? texel_coverage : 1.0;
   if (gl_FragCoord.z >= texelFetch(sampler2D(scene_depth, nearest), ivec2(gl_FragCoord.xy), 0).r) discard;
+#ifdef TRANSLUCENT_PEELING
+  // Depth peeling: only what lies in front of the layer peeled before (bound as back_depth).
+  if (gl_FragCoord.z >= texelFetch(sampler2D(back_depth, nearest), ivec2(gl_FragCoord.xy), 0).r) discard;
+#endif
   vec3 n = normalize(world_normal);
   if (!gl_FrontFacing) n = -n;
   const vec3 to_camera = translucency.camera.xyz - world_position;

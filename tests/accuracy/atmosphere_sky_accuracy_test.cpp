@@ -35,12 +35,13 @@
 #include "tests/accuracy/vulkan_accuracy_test.h"
 #include "tests/gpu/backends.h"
 #include "tests/support/fog_accuracy.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::testing {
 namespace {
 
 constexpr uint32_t kWidth = 64, kHeight = 36, kStride = 4;
-const std::string kConfig = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/atmosphere_sky.json";
+const std::string kConfig = std::string(::volgraph::testing::source_dir()) + "/configs/tests/atmosphere_sky.json";
 
 // The sun `elevation_deg` up, 20° right of the camera's azimuth (−z), as a light's
 // direction of travel.

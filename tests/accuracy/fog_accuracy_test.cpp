@@ -23,11 +23,12 @@
 #include "tests/accuracy/vulkan_accuracy_test.h"
 #include "tests/gpu/backends.h"
 #include "tests/support/fog_accuracy.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::testing {
 namespace {
 
-const std::string kTestConfigs = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/";
+const std::string kTestConfigs = std::string(::volgraph::testing::source_dir()) + "/configs/tests/";
 
 const char* const kOracles[] = {"oracle_global_fog.json", "oracle_height_fog.json", "oracle_fog_sphere.json",
                                 "oracle_dense_fog.json", "oracle_point_fog.json", "oracle_shadowed_fog.json"};

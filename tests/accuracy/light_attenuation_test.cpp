@@ -24,11 +24,12 @@
 #include "tests/accuracy/vulkan_accuracy_test.h"
 #include "tests/gpu/backends.h"
 #include "tests/support/fog_accuracy.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::testing {
 namespace {
 
-const std::string kTestConfigs = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/";
+const std::string kTestConfigs = std::string(::volgraph::testing::source_dir()) + "/configs/tests/";
 
 // The lamps (a spot and a point light 5–7 m away) and the homogeneous fog (σt 0.15 /m)
 // of the two lamp scenes.

@@ -12,14 +12,15 @@
 #include <gtest/gtest.h>
 
 #include "passes/passes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::compare {
 namespace {
 
 using Settings = std::vector<std::pair<std::string, std::string>>;
 
-std::string spec_file(const std::string& name) { return std::string(VOLGRAPH_SOURCE_DIR) + "/tests/compare/specs/" + name; }
-std::string demo_fog() { return std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_fog.json"; }
+std::string spec_file(const std::string& name) { return std::string(::volgraph::testing::source_dir()) + "/tests/compare/specs/" + name; }
+std::string demo_fog() { return std::string(::volgraph::testing::source_dir()) + "/configs/demo_fog.json"; }
 
 class SweepSpecTest : public ::testing::Test {
  protected:
@@ -101,7 +102,7 @@ TEST_F(SweepSpecTest, ASeriesGraphIsResolvedAndASeriesWithoutVaryIsOnePointNamed
   ASSERT_EQ(spec.points.size(), 10u);
   for (size_t i = 6; i < 9; ++i) {
     EXPECT_EQ(spec.points[i].series, "raymarch");
-    EXPECT_TRUE(std::filesystem::equivalent(spec.points[i].graph, std::string(VOLGRAPH_SOURCE_DIR) + "/configs/graphs/raymarch_fog.json"));
+    EXPECT_TRUE(std::filesystem::equivalent(spec.points[i].graph, std::string(::volgraph::testing::source_dir()) + "/configs/graphs/raymarch_fog.json"));
     EXPECT_EQ(spec.points[i].overrides.graph, spec.points[i].graph);
   }
   EXPECT_EQ(spec.points[6].label, "fog_march.steps=16");
@@ -125,7 +126,7 @@ TEST_F(SweepSpecTest, FramesSetThePointsFrameCountNotThePasses) {
 
 // Every spec shipped in configs/sweeps/ reads (and each of its points loads against its config).
 TEST_F(SweepSpecTest, EveryShippedSpecReads) {
-  const std::filesystem::path dir = std::filesystem::path(VOLGRAPH_SOURCE_DIR) / "configs" / "sweeps";
+  const std::filesystem::path dir = std::filesystem::path(::volgraph::testing::source_dir()) / "configs" / "sweeps";
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no configs/sweeps";
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() != ".json") continue;

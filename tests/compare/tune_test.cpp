@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "passes/passes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::compare {
 namespace {
@@ -115,7 +116,7 @@ TEST(Tune, TunesOverTheFirstResultsDeviceAndNamesTheOthers) {
 SweepSpec demo_spec() {
   SweepSpec spec;
   spec.file = "configs/sweeps/fog.json";
-  spec.config = std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_fog.json";
+  spec.config = std::string(::volgraph::testing::source_dir()) + "/configs/demo_fog.json";
   return spec;
 }
 

@@ -19,6 +19,7 @@
 #include "tests/gpu/shipped_configs.h"
 #include "tests/support/image_compare.h"
 #include "tools/image_io.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::testing {
 namespace {
@@ -46,7 +47,7 @@ class ConfigRender : public OnEachBackend<ConfigOnBackend> {
     executor.run_frame();
     return executor.read_output(0);
   }
-  fs::path golden_path() const { return fs::path(VOLGRAPH_SOURCE_DIR) / "tests/golden" / (config_test_name(config()) + ".pfm"); }
+  fs::path golden_path() const { return fs::path(::volgraph::testing::source_dir()) / "tests/golden" / (config_test_name(config()) + ".pfm"); }
 
   PassRegistry registry_;
   std::unique_ptr<LoadedConfig> config_;

@@ -15,6 +15,7 @@
 #include "physics/srgb.h"
 #include "physics/tonemap.h"
 #include "tests/gpu/backends.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::testing {
 namespace {
@@ -27,7 +28,7 @@ class ExecutorTest : public OnEachBackend<> {
     OnEachBackend::SetUp();
   }
   LoadedConfig load(const Overrides& o = {}) {
-    return load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/clear_composite.json", registry_, o);
+    return load_config(std::string(::volgraph::testing::source_dir()) + "/configs/tests/clear_composite.json", registry_, o);
   }
   Texels render(const LoadedConfig& c, const CompileOptions& options, int frames = 1) {
     Executor executor(device(), c.graph, &c.config.scene, options);
@@ -80,7 +81,7 @@ TEST_P(ExecutorTest, ToneMapsMatchTheCpuTwinOverSeveralFrames) {
 // DESIGN.md: a Lambertian plane of albedo ρ facing a directional light of irradiance E
 // renders ρE/π: 0.5 · π / π = 0.5, which the rgba16_float target holds exactly.
 TEST_P(ExecutorTest, LambertPlaneRendersRhoEOverPi) {
-  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/lambert_plane_lit.json", registry_);
+  const LoadedConfig c = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/tests/lambert_plane_lit.json", registry_);
   const Texels t = render(c, {});
   for (size_t i = 0; i < t.rgba.size(); i += 4) {
     for (size_t ch = 0; ch < 3; ++ch) ASSERT_EQ(t.rgba[i + ch], 0.5f) << "texel " << i / 4;
@@ -135,7 +136,7 @@ TEST_P(ExecutorTest, PointLightRadianceMatchesTheCpuTwin) {
   Overrides o;
   o.variants = {"final=none"};
   o.size = Extent{64, 36, 1};
-  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_point_lights.json", registry_, o);
+  const LoadedConfig c = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/demo_point_lights.json", registry_, o);
   for (const CompileOptions& options : {CompileOptions{}, CompileOptions{.alias = false}, CompileOptions{.serialize = true}}) {
     const Texels t = render(c, options);
     const Scene& scene = c.config.scene;
@@ -165,7 +166,7 @@ TEST_P(ExecutorTest, PointLightRadianceMatchesTheCpuTwin) {
 // plane's edges, within the fp16 target's 2e-3 relative plus a quarter of the sRGB code
 // step (Vulkan lets the sRGB decode approximate; lavapipe's is off by 0.14 steps at 64).
 TEST_P(ExecutorTest, AlbedoTextureMultipliesTheFactorInLinearLight) {
-  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/textured_plane.json", registry_);
+  const LoadedConfig c = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/tests/textured_plane.json", registry_);
   const Texels t = render(c, {});
   const Camera& camera = c.config.scene.camera;
   auto linear = [](int code) { return double(physics::srgb_decode(float(code) / 255)); };
@@ -193,7 +194,7 @@ TEST_P(ExecutorTest, AlbedoTextureMultipliesTheFactorInLinearLight) {
 // The same plane with its shadow map wired: nothing occludes it, so still exactly ρE/π
 // (the depth bias keeps the plane from shadowing itself).
 TEST_P(ExecutorTest, ShadowMappedPlaneDoesNotShadowItself) {
-  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/lambert_plane.json", registry_);
+  const LoadedConfig c = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/tests/lambert_plane.json", registry_);
   const Texels t = render(c, {});
   for (size_t i = 0; i < t.rgba.size(); i += 4) {
     for (size_t ch = 0; ch < 3; ++ch) ASSERT_EQ(t.rgba[i + ch], 0.5f) << "texel " << i / 4 << " ch " << ch;
@@ -203,7 +204,7 @@ TEST_P(ExecutorTest, ShadowMappedPlaneDoesNotShadowItself) {
 // DESIGN.md: a surface in full shadow renders only what other terms give it — here the
 // ambient irradiance A: ρA/π under the slab, ρ(E + A)/π in the open (fp16: 2e-3 relative).
 TEST_P(ExecutorTest, FullShadowLeavesOnlyTheOtherTerms) {
-  const LoadedConfig c = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/full_shadow.json", registry_);
+  const LoadedConfig c = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/tests/full_shadow.json", registry_);
   const Texels t = render(c, {});
   const Scene& scene = c.config.scene;
   const double shadowed = 0.5 * 0.4 / M_PI, open = 0.5 * (M_PI + 0.4) / M_PI;

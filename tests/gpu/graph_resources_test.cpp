@@ -9,6 +9,7 @@
 #include "graph/rhi/vulkan/graph_resources.h"
 #include "passes/passes.h"
 #include "tests/fixtures/full_frame.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::vulkan {
 namespace {
@@ -40,7 +41,7 @@ Context* GraphResourcesTest::context_ = nullptr;
 TEST_P(GraphResourcesTest, PlanMemoryIsWhatVulkanAllocates) {
   PassRegistry registry;
   register_builtin_passes(registry);
-  const LoadedConfig loaded = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/" + GetParam(), registry);
+  const LoadedConfig loaded = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/" + GetParam(), registry);
   expect_plan_matches_allocation(loaded.graph, {});
   expect_plan_matches_allocation(loaded.graph, {.alias = false});
 }

@@ -4,12 +4,13 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include "tests/support/source_dir.h"
 
 namespace volgraph::testing {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kConfigs = fs::path(VOLGRAPH_SOURCE_DIR) / "configs";
+const fs::path kConfigs = fs::path(::volgraph::testing::source_dir()) / "configs";
 
 }  // namespace
 

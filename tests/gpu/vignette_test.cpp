@@ -9,6 +9,7 @@
 #include "graph/execute/executor.h"
 #include "passes/passes.h"
 #include "tests/gpu/backends.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::testing {
 namespace {
@@ -32,7 +33,7 @@ class Vignette : public OnEachBackend<> {
     Overrides o;
     o.size = Extent{kWidth, kHeight, 1};
     o.sets = {"lens.strength=" + std::to_string(strength)};
-    LoadedConfig config = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/tests/vignette.json", registry, o);
+    LoadedConfig config = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/tests/vignette.json", registry, o);
     Executor executor(device(), config.graph, &config.config.scene, {});
     executor.run_frame();
     return executor.read_output(0);

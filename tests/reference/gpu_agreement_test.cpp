@@ -13,6 +13,7 @@
 #include "reference/renderer.h"
 #include "tests/reference/test_scenes.h"
 #include "tools/image_io.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::reference {
 namespace {
@@ -53,7 +54,7 @@ TEST(ReferenceVersusGpu, DemoPrimitivesMatchesTheGoldenImageAwayFromEdges) {
   const LoadedConfig loaded = load_shipped("demo_primitives.json", w, h);
   const Renderer renderer(loaded.config.scene);
   const ReferenceImage image = render_image(renderer, {.width = w, .height = h, .threads = 2});
-  const Image golden = read_pfm(std::string(VOLGRAPH_SOURCE_DIR) + "/tests/golden/demo_primitives.pfm");
+  const Image golden = read_pfm(std::string(::volgraph::testing::source_dir()) + "/tests/golden/demo_primitives.pfm");
   ASSERT_EQ(golden.width, w);
   ASSERT_EQ(golden.height, h);
   const std::vector<PixelClass> classes = classify(renderer, w, h);

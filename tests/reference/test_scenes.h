@@ -6,6 +6,7 @@
 
 #include "graph/config/config.h"
 #include "passes/passes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::reference {
 
@@ -15,7 +16,7 @@ inline LoadedConfig load_shipped(const std::string& relative, uint32_t width, ui
   register_builtin_passes(registry);
   Overrides o;
   o.size = Extent{width, height, 1};
-  return load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/" + relative, registry, o);
+  return load_config(std::string(::volgraph::testing::source_dir()) + "/configs/" + relative, registry, o);
 }
 
 // A square plane of albedo `albedo` in y = 0 seen from above by a camera at `eye`

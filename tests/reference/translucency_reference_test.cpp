@@ -15,6 +15,7 @@
 #include "tests/reference/test_scenes.h"
 #include "tools/image_io.h"
 #include "physics/tonemap.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::reference {
 namespace {
@@ -534,7 +535,7 @@ TEST(TranslucencyReference, StraightModeAgainstTheGpuGoldens) {
     like_the_gpu.translucent_shadows = false;
     const Renderer renderer(scene, like_the_gpu);
     const ReferenceImage image = render_image(renderer, {.width = w, .height = h, .threads = 2});
-    const Image golden = read_pfm(std::string(VOLGRAPH_SOURCE_DIR) + "/tests/golden/" + name + ".pfm");
+    const Image golden = read_pfm(std::string(::volgraph::testing::source_dir()) + "/tests/golden/" + name + ".pfm");
     ASSERT_EQ(golden.width, w);
     std::vector<int> first(size_t(w) * h, -1);
     for (uint32_t j = 0; j < h; ++j) {

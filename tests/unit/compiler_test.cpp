@@ -8,6 +8,7 @@
 #include "graph/config/config.h"
 #include "graph/plan_report.h"
 #include "passes/passes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph {
 namespace {
@@ -262,7 +263,7 @@ TEST(Compiler, NoAliasGivesEveryResourceItsOwnBytes) {
 class ShippedConfigs : public ::testing::Test {
  protected:
   ShippedConfigs() { register_builtin_passes(registry_); }
-  LoadedConfig load(const std::string& name) { return load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/" + name, registry_); }
+  LoadedConfig load(const std::string& name) { return load_config(std::string(::volgraph::testing::source_dir()) + "/configs/" + name, registry_); }
   PassRegistry registry_;
 };
 

@@ -11,12 +11,13 @@
 
 #include "passes/plumbing/gltf.h"
 #include "passes/plumbing/meshes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::plumbing {
 
 namespace {
 
-const std::string kAssets = std::string(VOLGRAPH_SOURCE_DIR) + "/../shared/assets/gltf/";
+const std::string kAssets = std::string(::volgraph::testing::source_dir()) + "/../shared/assets/gltf/";
 
 TEST(Gltf, SuzanneHasItsTrianglesAndUnitNormals) {
   const GltfModel m = load_gltf(kAssets + "Suzanne/Suzanne.gltf");

@@ -10,6 +10,7 @@
 #include "passes/passes.h"
 #include "passes/plumbing/gltf.h"
 #include "physics/translucency.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph {
 namespace {
@@ -18,7 +19,7 @@ using plumbing::GltfModel;
 using plumbing::GltfPrimitive;
 using plumbing::load_gltf;
 
-const std::string kAssets = std::string(VOLGRAPH_SOURCE_DIR) + "/../shared/assets/gltf/";
+const std::string kAssets = std::string(::volgraph::testing::source_dir()) + "/../shared/assets/gltf/";
 
 // The transmittance across the primitive's thickness: exp(−σt·d), σt by RTR4 eq. 14.23.
 Vec3 transmittance_through(const Translucency& t) {

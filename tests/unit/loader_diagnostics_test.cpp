@@ -7,6 +7,7 @@
 
 #include "graph/config/config.h"
 #include "passes/passes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph {
 namespace {
@@ -419,7 +420,7 @@ TEST(MissingFile, ConfigThatDoesNotExist) {
 TEST_F(Loader, AModelsIgnoredFeaturesAreWarningsAtItsFile) {
   const std::string text = R"({ "output": { "size": [16, 16] },
     "scene": { "camera": { "position": [0, 0.3, 1], "target": [0, 0.1, 0] },
-      "objects": [ { "shape": "gltf", "file": ")" + std::string(VOLGRAPH_SOURCE_DIR) + R"(/../shared/assets/gltf/GlassVaseFlowers/GlassVaseFlowers.glb" } ],
+      "objects": [ { "shape": "gltf", "file": ")" + std::string(::volgraph::testing::source_dir()) + R"(/../shared/assets/gltf/GlassVaseFlowers/GlassVaseFlowers.glb" } ],
       "lights": [ { "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1] } ] },
     "graph": { "passes": [ { "name": "lit", "type": "scene" },
       { "name": "out", "type": "composite", "inputs": { "color": "lit.color" } } ], "outputs": ["out.output"] } })";

@@ -1,12 +1,16 @@
 // Pass declarations as `volgraph passes` prints them agree with the resources the loader
 // binds: every slot's declared kind is the kind of every resource it is bound to in the
-// shipped configs, output_like slots included (they take their source slot's kind).
+// shipped configs, output_like slots included (they take their source slot's kind). Step
+// conditions: a pass type whose conditional step makes a slot that a step running more
+// often uses is refused at registration, as is one whose first step is conditional; the
+// loader adds only the steps whose condition holds (translucency's variants and layers).
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
 #include "graph/config/config.h"
 #include "passes/passes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph {
 namespace {
@@ -26,6 +30,84 @@ TEST(PassDecl, TwoSlotsOfOneNameAreRefusedAtRegistration) {
   EXPECT_THROW(registry.add(decl), std::logic_error);
   decl.slots.back().name = "sky_color";
   EXPECT_NO_THROW(registry.add(decl));
+}
+
+// A pass type of steps: `made_by` makes an internal slot under its condition, `used_by` reads it under its own.
+struct SteppedTable : PassTable {
+  SteppedTable(StepCondition first, StepCondition made_by, StepCondition used_by)
+      : PassTable("stepped", PassKind::graphics, "steps under conditions") {
+    step("first", PassKind::graphics, {{target, Usage::color_attachment}}, std::move(first));
+    step("make", PassKind::graphics, {{scratch, Usage::color_attachment}}, std::move(made_by));
+    step("use", PassKind::graphics, {{target, Usage::color_attachment_load}, {scratch, Usage::sampled}}, std::move(used_by));
+  }
+  VariantHandle a = variant("a", "variant a");
+  VariantHandle b = variant("b", "variant b");
+  ParamHandle<int64_t> count = integer("count", 2, 1, 4, "", "how many");
+  SlotHandle target = output("target", ResourceKind::texture2d, Usage::color_attachment, Format::rgba16_float, SizeSpec::of_output(), "the image");
+  SlotHandle scratch = internal("scratch", ResourceKind::texture2d, Format::rgba16_float, SizeSpec::of_output(), "in between");
+};
+
+bool refused(StepCondition first, StepCondition made_by, StepCondition used_by) {
+  SteppedTable table(std::move(first), std::move(made_by), std::move(used_by));
+  try {
+    finish_steps(table.decl);
+  } catch (const std::logic_error&) {
+    return true;
+  }
+  return false;
+}
+
+TEST(PassDecl, AStepThatMakesASlotRunsWheneverItsUsersDo) {
+  const SteppedTable t({}, {}, {});  // its handles' indices
+  EXPECT_FALSE(refused({}, {}, {}));
+  EXPECT_FALSE(refused({}, StepCondition{{t.a.index}}, StepCondition{{t.a.index}}));
+  EXPECT_FALSE(refused({}, StepCondition{{t.a.index, t.b.index}}, StepCondition{{t.b.index}}));
+  EXPECT_FALSE(refused({}, StepCondition{{t.a.index}, t.count.index, 1}, StepCondition{{t.a.index}, t.count.index, 2}));
+  EXPECT_TRUE(refused({}, StepCondition{{t.a.index}}, {}));                    // used in b, made only in a
+  EXPECT_TRUE(refused({}, StepCondition{{t.a.index}}, StepCondition{{t.b.index}}));
+  EXPECT_TRUE(refused({}, StepCondition{{t.a.index}, t.count.index, 2}, StepCondition{{t.a.index}, t.count.index, 1}));
+  EXPECT_TRUE(refused({}, StepCondition{{}, t.count.index, 1}, StepCondition{{t.a.index}}));
+  EXPECT_TRUE(refused(StepCondition{{t.a.index}}, {}, {}));  // the first step is the pass's own graph pass
+}
+
+TEST(PassDecl, AConditionHoldsInItsVariantsWhileItsCountExceedsItsBound) {
+  const SteppedTable t({}, {}, {});
+  const StepCondition in_a_past_two{{t.a.index}, t.count.index, 2};
+  EXPECT_TRUE(in_a_past_two.holds(t.a.index, {int64_t(3)}));
+  EXPECT_FALSE(in_a_past_two.holds(t.a.index, {int64_t(2)}));
+  EXPECT_FALSE(in_a_past_two.holds(t.b.index, {int64_t(3)}));
+  EXPECT_TRUE(StepCondition{}.holds(t.b.index, {int64_t(0)}));
+  EXPECT_TRUE(StepCondition{}.always());
+  EXPECT_FALSE(in_a_past_two.always());
+}
+
+// The graph passes the loader makes of a translucency pass in `variant` with `params`.
+std::vector<std::string> translucency_steps(const std::string& variant, const std::string& params) {
+  PassRegistry registry;
+  register_builtin_passes(registry);
+  const std::string text = R"({ "output": { "size": [8, 8] },
+  "scene": { "camera": { "position": [0, 0, 3], "target": [0, 0, 0] },
+             "materials": { "veil": { "albedo": [1, 1, 1], "alpha": 0.5 } },
+             "objects": [ { "shape": "plane", "material": "veil", "transform": { "rotate_deg": [90, 0, 0] } } ] },
+  "graph": { "passes": [
+    { "name": "lit", "type": "scene" },
+    { "name": "glass", "type": "translucency", "variant": ")" + variant + R"(", "params": )" + params + R"(,
+      "inputs": { "color": "lit.color", "depth": "lit.depth", "frame": "lit.frame" } } ],
+    "outputs": ["glass.color"] } })";
+  std::vector<std::string> names;
+  for (const GraphPass& p : load_config_text("steps.json", text, registry).graph.passes) {
+    if (p.name.rfind("glass", 0) == 0) names.push_back(p.name);
+  }
+  return names;
+}
+
+TEST(PassDecl, TheLoaderAddsOnlyTheStepsWhoseConditionHolds) {
+  using Names = std::vector<std::string>;
+  EXPECT_EQ(translucency_steps("sorted", "{}"), (Names{"glass/back_faces", "glass/surfaces"}));
+  EXPECT_EQ(translucency_steps("weighted_oit", "{}"), (Names{"glass/back_faces", "glass/accumulate", "glass/resolve"}));
+  EXPECT_EQ(translucency_steps("depth_peeling", R"({ "layers": 2 })"),
+            (Names{"glass/back_faces", "glass/peel_depth_0", "glass/peel_shade_0", "glass/peel_depth_1", "glass/peel_shade_1"}));
+  EXPECT_EQ(translucency_steps("depth_peeling", "{}").size(), 1u + 2 * 8);  // the default: 8 layers
 }
 
 TEST(PassDecl, OutputLikeSlotsHaveTheirSourcesKind) {
@@ -48,7 +130,7 @@ TEST(PassDecl, DeclaredKindsMatchTheBoundResourcesInEveryShippedConfig) {
   register_builtin_passes(registry);
   int configs = 0;
   for (const char* dir : {"configs", "configs/tests"}) {
-    for (const auto& e : fs::directory_iterator(fs::path(VOLGRAPH_SOURCE_DIR) / dir)) {
+    for (const auto& e : fs::directory_iterator(fs::path(::volgraph::testing::source_dir()) / dir)) {
       if (e.path().extension() != ".json") continue;
       ++configs;
       const LoadedConfig config = load_config(e.path().string(), registry);

@@ -7,6 +7,7 @@
 
 #include "graph/config/config.h"
 #include "passes/passes.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph {
 namespace {
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 std::vector<std::string> shipped_configs() {
   std::vector<std::string> out;
   for (const char* dir : {"configs", "configs/tests"}) {
-    for (const auto& e : fs::directory_iterator(fs::path(VOLGRAPH_SOURCE_DIR) / dir)) {
+    for (const auto& e : fs::directory_iterator(fs::path(::volgraph::testing::source_dir()) / dir)) {
       if (e.path().extension() == ".json") out.push_back(e.path().string());
     }
   }
@@ -50,7 +51,7 @@ TEST(Resize, ResizedGraphsEqualGraphsLoadedAtThatSize) {
 TEST(Resize, ChangesTheFrameSizedResources) {
   PassRegistry registry;
   register_builtin_passes(registry);
-  LoadedConfig config = load_config(std::string(VOLGRAPH_SOURCE_DIR) + "/configs/demo_fog.json", registry);
+  LoadedConfig config = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/demo_fog.json", registry);
   const uint64_t before = compile(config.graph).memory.unaliased_bytes;
   resize(config.graph, {2 * config.graph.output_size.width, 2 * config.graph.output_size.height, 1});
   EXPECT_GT(compile(config.graph).memory.unaliased_bytes, 2 * before);

@@ -7,6 +7,7 @@
 #include "physics/srgb.h"
 #include "graph/diagnostics.h"
 #include "passes/plumbing/textures.h"
+#include "tests/support/source_dir.h"
 
 namespace volgraph::plumbing {
 
@@ -63,7 +64,7 @@ TEST(Textures, RefusesWhatIsNotAnImageAndSaysWhy) {
 
 // PNGs whose header is fine but whose texels cannot be decoded: found without decoding.
 TEST(Textures, RefusesATruncatedOrDamagedPngFromItsChunks) {
-  const std::string dir = std::string(VOLGRAPH_SOURCE_DIR) + "/tests/cli/bad/textures/";
+  const std::string dir = std::string(::volgraph::testing::source_dir()) + "/tests/cli/bad/textures/";
   EXPECT_NE(image_file_problem(dir + "truncated.png").find("a truncated PNG"), std::string::npos) << image_file_problem(dir + "truncated.png");
   EXPECT_NE(image_file_problem(dir + "bad_crc.png").find("chunk IDAT at byte 33 fails its CRC"), std::string::npos)
       << image_file_problem(dir + "bad_crc.png");

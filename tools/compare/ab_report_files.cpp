@@ -11,7 +11,7 @@ namespace {
 
 using Files = std::vector<std::pair<std::string, std::vector<std::byte>>>;
 
-std::vector<std::byte> bytes_of(const std::string& text) {
+std::vector<std::byte> owned_bytes(const std::string& text) {
   std::vector<std::byte> out(text.size());
   std::memcpy(out.data(), text.data(), text.size());
   return out;
@@ -71,8 +71,8 @@ double report_display_exposure(const AbReport& report) {
 
 std::vector<std::pair<std::string, std::vector<std::byte>>> ab_report_files(const AbReport& report) {
   Files files;
-  files.emplace_back("report.json", bytes_of(ab_report_json(report)));
-  files.emplace_back("report.html", bytes_of(ab_report_html(report)));
+  files.emplace_back("report.json", owned_bytes(ab_report_json(report)));
+  files.emplace_back("report.html", owned_bytes(ab_report_html(report)));
   const double exposure = report_display_exposure(report);
   for (const Rendered& render : report.renders) {
     const std::string stem = report_file_stem(render.label);

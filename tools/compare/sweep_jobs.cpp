@@ -18,10 +18,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::span<const std::byte> bytes_of(const std::string& text) {
-  return std::as_bytes(std::span(text.data(), text.size()));
-}
-
 // One point file found by the merge.
 struct Copy {
   PointResult result;
@@ -137,8 +133,8 @@ void write_jobs(const std::string& dir, const SweepSpec& spec,
   std::filesystem::create_directories(dir);
   const std::filesystem::path folder(dir);
   OutputFiles files;
-  files.stage((folder / "jobs.txt").string(), "-o", bytes_of(jobs));
-  files.stage((folder / "manifest.json").string(), "-o", bytes_of(manifest.dump(2) + "\n"));
+  files.stage((folder / "jobs.txt").string(), "-o", text_bytes(jobs));
+  files.stage((folder / "manifest.json").string(), "-o", text_bytes(manifest.dump(2) + "\n"));
   files.commit();
 }
 

@@ -80,7 +80,7 @@ bool plottable(const PointResult& p, const std::string& metric) {
 }
 
 // The devices that rendered a point (a failed point may have none: it is listed apart).
-std::vector<std::string> devices_of(const std::vector<PointResult>& results) {
+std::vector<std::string> devices_that_rendered(const std::vector<PointResult>& results) {
   std::vector<std::string> devices;
   for (const PointResult& p : results) {
     if (p.ok && std::find(devices.begin(), devices.end(), p.device) == devices.end()) devices.push_back(p.device);
@@ -345,16 +345,12 @@ size_t spec_points_done(const SweepSpec& spec, const std::vector<PointResult>& o
   }));
 }
 
-std::span<const std::byte> bytes_of(const std::string& text) {
-  return std::as_bytes(std::span(text.data(), text.size()));
-}
-
 // pareto.png from the SVG by rsvg-convert; empty when it fails (stderr says why).
 std::vector<std::byte> render_png(const std::string& dir, const std::string& svg) {
   const std::string stem = (std::filesystem::path(dir) / (".pareto-render-" + std::to_string(::getpid()))).string();
   const std::string svg_file = stem + ".svg", png_file = stem + ".png";
   std::vector<std::byte> png;
-  write_file_checked(svg_file, bytes_of(svg));
+  write_file_checked(svg_file, text_bytes(svg));
   const char* argv[] = {"rsvg-convert", "-o", png_file.c_str(), svg_file.c_str(), nullptr};
   pid_t child = 0;
   int status = 0;
@@ -378,7 +374,7 @@ std::vector<std::byte> render_png(const std::string& dir, const std::string& svg
 }  // namespace
 
 std::string pareto_svg(const SweepSpec& spec, const std::vector<PointResult>& ordered) {
-  const std::vector<std::string> devices = devices_of(ordered);
+  const std::vector<std::string> devices = devices_that_rendered(ordered);
   const std::vector<std::string> all_series = series_of(ordered);
   const size_t panels = std::max<size_t>(devices.size(), 1);
   const double height = panels * panel_height + 10;
@@ -399,7 +395,7 @@ std::string pareto_svg(const SweepSpec& spec, const std::vector<PointResult>& or
 }
 
 std::string sweep_report_html(const SweepSpec& spec, const std::vector<PointResult>& ordered, const std::string& svg) {
-  const std::vector<std::string> devices = devices_of(ordered);
+  const std::vector<std::string> devices = devices_that_rendered(ordered);
   const int failed = int(std::count_if(ordered.begin(), ordered.end(), [](const PointResult& p) { return !p.ok; }));
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>volgraph sweep: "
@@ -466,11 +462,11 @@ void write_aggregates(const std::string& dir, const SweepSpec& spec, std::vector
   const std::string svg = pareto_svg(spec, ordered);
   std::vector<std::byte> png = write_png ? render_png(dir, svg) : std::vector<std::byte>{};
   OutputFiles files;
-  files.stage((folder / "results.json").string(), "-o", bytes_of(results_json(spec, ordered)));
-  files.stage((folder / "results.csv").string(), "-o", bytes_of(results_csv(ordered)));
-  files.stage((folder / "results.md").string(), "-o", bytes_of(results_markdown(spec, ordered)));
-  files.stage((folder / "report.html").string(), "-o", bytes_of(sweep_report_html(spec, ordered, svg)));
-  files.stage((folder / "pareto.svg").string(), "-o", bytes_of(svg));
+  files.stage((folder / "results.json").string(), "-o", text_bytes(results_json(spec, ordered)));
+  files.stage((folder / "results.csv").string(), "-o", text_bytes(results_csv(ordered)));
+  files.stage((folder / "results.md").string(), "-o", text_bytes(results_markdown(spec, ordered)));
+  files.stage((folder / "report.html").string(), "-o", text_bytes(sweep_report_html(spec, ordered, svg)));
+  files.stage((folder / "pareto.svg").string(), "-o", text_bytes(svg));
   if (!png.empty()) files.stage((folder / "pareto.png").string(), "-o", png);
   files.commit();
   std::error_code ec;
