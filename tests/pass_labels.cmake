@@ -183,3 +183,23 @@ pass_tests(translucency "(^|/)Translucency\\." "^TranslucencyConfig\\." "^GltfTr
   "^TranslucencyAccuracy\\.")
 pass_tests(scene "(^|/)Translucency\\.")
 pass_tests(shadow_map "(^|/)ShadowCasters\\.")
+
+# ---- quick: the inner loop before a commit (`tools/volgraph test -L quick`) ----------------
+# Every pass type once on each backend at 64×36, through the shipped configs that together
+# use them all (the golden-image case of each; unit tests, the loader's good and bad configs
+# and the reference on demo_primitives carry the label from their own CMakeLists).
+set(quick_configs demo_atmosphere_sunset_fog demo_atmosphere_noon_bruneton demo_raymarch_fog demo_attenuation_test tests_vignette
+                  demo_analytic_fog demo_atmosphere_haze demo_depth_fog demo_light_volume demo_primitives)
+string(REPLACE ";" "|" quick_alternatives "${quick_configs}")
+quick_tests("(^|/)ConfigRender\\.MatchesItsGoldenImage/(${quick_alternatives})_(vulkan|webgpu)$")
+set(quick_files "")
+foreach(config ${quick_configs})
+  string(REGEX REPLACE "^tests_" "tests/" file "${config}")
+  list(APPEND quick_files "${file}.json")
+endforeach()
+volgraph_config_pass_types(quick_types ${quick_files})
+foreach(type ${VOLGRAPH_PASS_TYPES})
+  if(NOT type IN_LIST quick_types)
+    message(WARNING "tests/pass_labels.cmake: no quick config uses the pass type ${type}: add one to quick_configs")
+  endif()
+endforeach()

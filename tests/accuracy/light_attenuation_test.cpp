@@ -29,7 +29,7 @@
 namespace volgraph::testing {
 namespace {
 
-const std::string kTestConfigs = std::string(::volgraph::testing::source_dir()) + "/configs/tests/";
+const std::string kAttenuationConfigs = std::string(::volgraph::testing::source_dir()) + "/configs/tests/";
 
 // The lamps (a spot and a point light 5–7 m away) and the homogeneous fog (σt 0.15 /m)
 // of the two lamp scenes.
@@ -99,14 +99,14 @@ struct DefaultTechnique {
   std::string why;
 };
 
-constexpr double kNotApplicable = -1;
+constexpr double kAttenuationNotApplicable = -1;
 
 // Bounds: measured on lavapipe (relative mean error over the fog-only pixels) with room for
 // float/fp16 rounding. Without the lights' attenuation toward the media (the froxel chain's
 // and raymarch_fog's defaults before, height_fog's undimmed sun) the errors were 55 % and
 // 48 % on the lamps, 110 % on the sun in height fog (all three); analytic_fog's spot, then
 // weighted by its cone at one point of each ray, 10 %.
-const DefaultTechnique kTechniques[] = {
+const DefaultTechnique kAttenuationTechniques[] = {
     {"froxel_fog.json", "froxel_fog.json", "", 0.2, 0.02,
      "the shipped chain (64 slices to 40 m, 8×8-pixel columns, 12×8 of them): the point light's glow peaks inside a "
      "column and the spot's cone edge crosses columns (measured 14 %, as oracle_point_fog's 10 %); in height fog "
@@ -114,11 +114,11 @@ const DefaultTechnique kTechniques[] = {
     {"raymarch_fog defaults", "", kRaymarchAtDefaults, 0.08, 0.01,
      "64 jittered steps to 40 m (0.6 m): the point light's glow, narrower than a step on the rays passing near it, "
      "sampled once per step (measured 5.5 %); in height fog smooth (measured 0.29 %)"},
-    {"light_volume_fog.json", "light_volume_fog.json", "", 0.005, kNotApplicable,
+    {"light_volume_fog.json", "light_volume_fog.json", "", 0.005, kAttenuationNotApplicable,
      "no shadowing geometry: Gauss–Legendre integrals to the far plane with the cone crossings cut (measured 0.04 %); fp16"},
-    {"analytic_fog.json", "analytic_fog.json", "", 0.005, kNotApplicable,
+    {"analytic_fog.json", "analytic_fog.json", "", 0.005, kAttenuationNotApplicable,
      "the point light's airlight and the spot's integral cut at its cones, by quadrature (measured 0.04 %); fp16"},
-    {"height_fog.json", "height_fog.json", "", kNotApplicable, 0.005,
+    {"height_fog.json", "height_fog.json", "", kAttenuationNotApplicable, 0.005,
      "closed form with the sun dimmed by the fog above each point (measured 0.04 %); fp16"},
 };
 
@@ -130,16 +130,16 @@ std::string config_text(const std::string& scene, const DefaultTechnique& t) {
 class LightAttenuation : public VulkanAccuracyTest {
  protected:
   LoadedConfig load(const std::string& scene, const DefaultTechnique& t) {
-    return accuracy::load_linear_text(kTestConfigs + "light_attenuation.json", config_text(scene, t), registry_);
+    return accuracy::load_linear_text(kAttenuationConfigs + "light_attenuation.json", config_text(scene, t), registry_);
   }
   // Each applicable technique on `scene` within its bound over the fog-only pixels.
   void expect_every_technique_within_bound(const std::string& scene, const char* scene_name, double DefaultTechnique::*bound) {
-    const LoadedConfig first = load(scene, kTechniques[0]);
+    const LoadedConfig first = load(scene, kAttenuationTechniques[0]);
     const Extent size = first.config.output_size;
     const reference::ReferenceImage ref = accuracy::render_reference(first);
     const std::vector<bool> fog_only = accuracy::fog_only_pixels(first.config.scene, size.width, size.height);
-    for (const DefaultTechnique& t : kTechniques) {
-      if (t.*bound == kNotApplicable) continue;
+    for (const DefaultTechnique& t : kAttenuationTechniques) {
+      if (t.*bound == kAttenuationNotApplicable) continue;
       const accuracy::FogComparison c = accuracy::compare_fog(accuracy::render_gpu(gpu_->device(), load(scene, t)), ref, fog_only);
       std::printf("  %s, %s: %s (bound %.3g)\n", scene_name, t.name.c_str(), c.describe().c_str(), t.*bound);
       EXPECT_EQ(c.compared_pixels, c.pixels) << scene_name << " has no surfaces";
@@ -169,7 +169,7 @@ TEST_F(LightAttenuation, SurfacesInFogAgainstTheReference) {
   const struct {
     const DefaultTechnique& technique;
     double bound;
-  } rows[] = {{kTechniques[3], 0.005}, {kTechniques[2], 0.005}};
+  } rows[] = {{kAttenuationTechniques[3], 0.005}, {kAttenuationTechniques[2], 0.005}};
   const LoadedConfig first = load(kLampsInARoom, rows[0].technique);
   const Extent size = first.config.output_size;
   const reference::ReferenceImage ref = accuracy::render_reference(first);

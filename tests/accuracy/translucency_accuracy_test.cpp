@@ -24,7 +24,7 @@
 namespace volgraph::testing {
 namespace {
 
-const std::string kConfig = std::string(::volgraph::testing::source_dir()) + "/configs/tests/oracle_translucent_layers.json";
+const std::string kLayersConfig = std::string(::volgraph::testing::source_dir()) + "/configs/tests/oracle_translucent_layers.json";
 
 class TranslucencyAccuracy : public VulkanAccuracyTest {
  protected:
@@ -33,7 +33,7 @@ class TranslucencyAccuracy : public VulkanAccuracyTest {
     o.size = Extent{96, 54, 1};
     o.variants = {"glass=" + variant};
     o.sets = sets;
-    return accuracy::load_linear(kConfig, registry_, o);
+    return accuracy::load_linear(kLayersConfig, registry_, o);
   }
 };
 

@@ -24,18 +24,19 @@
 #include "physics/atmosphere_lut.h"
 #include "physics/camera.h"
 #include "tests/gpu/backends.h"
+#include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
 namespace {
 
-constexpr const char* kSun = R"({ "name": "sun", "type": "directional", "direction": [0, -0.5, -0.8660254], "irradiance": [2, 2, 2] })";
+constexpr const char* kApplySun = R"({ "name": "sun", "type": "directional", "direction": [0, -0.5, -0.8660254], "irradiance": [2, 2, 2] })";
 
 std::string plane_config() {
   return std::string(R"({ "output": { "size": [8, 8] },
   "scene": { "camera": { "position": [0, 3, 0.001], "target": [0, 0, 0], "fov_y_deg": 20 },
              "materials": { "ground": { "albedo": [0.5, 0.5, 0.5] } },
              "objects": [ { "shape": "plane", "size": [10, 1, 10], "material": "ground" } ],
-             "lights": [ )") + kSun + R"( ],
+             "lights": [ )") + kApplySun + R"( ],
              "atmosphere": { "preset": "earth", "origin_altitude": 500 } },
   "graph": { "passes": [ { "name": "lit", "type": "scene" } ], "outputs": ["lit.color"] } })";
 }
@@ -55,7 +56,7 @@ std::string sphere_config(double radius, const std::string& variant) {
              "materials": { "glow": { "albedo": [0, 0, 0], "emissive": [1, 1, 1] } },
              "objects": [ { "shape": "sphere", "size": [)") + r + ", " + r + ", " + r + R"(], "material": "glow",
                             "transform": { "translate": [0, 2, 0] } } ],
-             "lights": [ )" + kSun + R"( ],
+             "lights": [ )" + kApplySun + R"( ],
              "atmosphere": { "preset": "earth" } },
   "graph": { "passes": [
     { "name": "lit", "type": "scene" },
@@ -81,7 +82,6 @@ class AtmosphereApply : public OnEachBackend<> {
   PassRegistry registry_;
 };
 
-double fp16_steps(double value) { return 2 * std::ldexp(1.0, std::ilogb(std::max(std::abs(value), 6.1e-5)) - 10); }
 
 TEST_P(AtmosphereApply, TheSunThroughTheAirAndTheSkyLightALambertPlane) {
   const LoadedConfig config = load(plane_config());

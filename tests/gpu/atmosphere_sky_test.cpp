@@ -25,7 +25,7 @@
 namespace volgraph::testing {
 namespace {
 
-constexpr uint32_t kWidth = 64, kHeight = 36;
+constexpr uint32_t kAtmosphereSkyWidth = 64, kAtmosphereSkyHeight = 36;
 
 std::string sky_config(const std::string& atmosphere) {
   return R"({ "output": { "size": [64, 36] },
@@ -59,8 +59,8 @@ class Sky : public OnEachBackend<> {
 };
 
 Vec3 pixel_direction(const Camera& camera, uint32_t i, uint32_t j) {
-  const physics::ViewRays rays = physics::view_rays(camera, double(kWidth) / kHeight);
-  return physics::normalize(physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2));
+  const physics::ViewRays rays = physics::view_rays(camera, double(kAtmosphereSkyWidth) / kAtmosphereSkyHeight);
+  return physics::normalize(physics::view_ray(rays, (i + 0.5) / kAtmosphereSkyWidth * 2 - 1, 1 - (j + 0.5) / kAtmosphereSkyHeight * 2));
 }
 
 TEST_P(Sky, SingleScatteringMatchesTheDoubleTwinThroughTheLut) {
@@ -70,8 +70,8 @@ TEST_P(Sky, SingleScatteringMatchesTheDoubleTwinThroughTheLut) {
   const physics::AtmosphereView view = physics::atmosphere_view(scene);
   const Atmosphere& a = *scene.atmosphere;
   double worst = 0, sum_error = 0, sum = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kAtmosphereSkyHeight; ++j) {
+    for (uint32_t i = 0; i < kAtmosphereSkyWidth; ++i) {
       const Vec3 d = pixel_direction(scene.camera, i, j);
       const physics::SkyViewDirection sd = physics::sky_view_direction(view, d);
       if (sd.mu < 0.02) continue;  // the horizon's few pixels: compared apart below
@@ -79,7 +79,7 @@ TEST_P(Sky, SingleScatteringMatchesTheDoubleTwinThroughTheLut) {
       const Vec3 disk = physics::sun_disk_radiance(a, view, d);
       for (size_t c = 0; c < 3; ++c) {
         const double want = 2 * (sky[c] + disk[c]);
-        const double got = image.rgba[4 * (size_t(j) * kWidth + i) + c];
+        const double got = image.rgba[4 * (size_t(j) * kAtmosphereSkyWidth + i) + c];
         ASSERT_TRUE(std::isfinite(got));
         worst = std::max(worst, std::abs(got - want) / want);
         sum_error += std::abs(got - want);
@@ -102,12 +102,12 @@ TEST_P(Sky, WithoutScatteringTheSkyIsBlackAndTheSunIsItsRadianceThroughTheAir) {
   const Scene& scene = config.config.scene;
   const physics::AtmosphereView view = physics::atmosphere_view(scene);
   int disk_pixels = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kAtmosphereSkyHeight; ++j) {
+    for (uint32_t i = 0; i < kAtmosphereSkyWidth; ++i) {
       const Vec3 disk = physics::sun_disk_radiance(*scene.atmosphere, view, pixel_direction(scene.camera, i, j));
       disk_pixels += disk[0] > 0;
       for (size_t c = 0; c < 3; ++c) {
-        const double got = image.rgba[4 * (size_t(j) * kWidth + i) + c];
+        const double got = image.rgba[4 * (size_t(j) * kAtmosphereSkyWidth + i) + c];
         EXPECT_NEAR(got, 2 * disk[c], 2e-3 * 2 * disk[c] + 1e-7) << "pixel " << i << ", " << j;
       }
     }

@@ -25,7 +25,7 @@
 namespace volgraph::testing {
 namespace {
 
-constexpr uint32_t kWidth = 64, kHeight = 36;
+constexpr uint32_t kAtmosphereSkyViewWidth = 64, kAtmosphereSkyViewHeight = 36;
 
 struct SkyCase {
   double altitude = 2;         // the camera's y (m; the scene's origin on the ground)
@@ -35,7 +35,7 @@ struct SkyCase {
   std::string variant = "sky_view_lut";
   std::string sky_params = "{}";
   std::string lut_params = "{}";  // the sky-view LUT's
-  uint32_t width = kWidth, height = kHeight;
+  uint32_t width = kAtmosphereSkyViewWidth, height = kAtmosphereSkyViewHeight;
 };
 
 std::string number(double v) {
@@ -328,9 +328,9 @@ TEST_P(SkyView, WithoutScatteringTheSkyIsBlackAndTheDiskIsExact) {
       const Scene& scene = config.config.scene;
       const physics::AtmosphereView view = physics::atmosphere_view(scene);
       int disk_pixels = 0;
-      for (uint32_t j = 0; j < kHeight; ++j) {
-        for (uint32_t i = 0; i < kWidth; ++i) {
-          const Vec3 disk = physics::sun_disk_radiance(*scene.atmosphere, view, pixel_direction(scene.camera, kWidth, kHeight, i, j));
+      for (uint32_t j = 0; j < kAtmosphereSkyViewHeight; ++j) {
+        for (uint32_t i = 0; i < kAtmosphereSkyViewWidth; ++i) {
+          const Vec3 disk = physics::sun_disk_radiance(*scene.atmosphere, view, pixel_direction(scene.camera, kAtmosphereSkyViewWidth, kAtmosphereSkyViewHeight, i, j));
           disk_pixels += disk[0] > 0;
           const Vec3 got = texel(image, i, j);
           for (size_t c = 0; c < 3; ++c) {
@@ -357,9 +357,9 @@ TEST_P(SkyView, TheSkyIsSymmetricAboutTheSunsVerticalPlane) {
       k.sun_elevation = altitude > 1e5 ? -0.2 : 0.35;
       const Texels image = render(load(k))[0];
       double worst = 0;
-      for (uint32_t j = 0; j < kHeight; ++j) {
-        for (uint32_t i = 0; i < kWidth / 2; ++i) {
-          const Vec3 left = texel(image, i, j), right = texel(image, kWidth - 1 - i, j);
+      for (uint32_t j = 0; j < kAtmosphereSkyViewHeight; ++j) {
+        for (uint32_t i = 0; i < kAtmosphereSkyViewWidth / 2; ++i) {
+          const Vec3 left = texel(image, i, j), right = texel(image, kAtmosphereSkyViewWidth - 1 - i, j);
           for (size_t c = 0; c < 3; ++c) {
             const double scale = std::max(std::abs(left[c]), std::abs(right[c]));
             if (scale > 1e-6) worst = std::max(worst, std::abs(left[c] - right[c]) / scale);
@@ -386,9 +386,9 @@ TEST_P(SkyView, TheLimbDarkenedDiskMatchesItsTwin) {
   const Scene& scene = config.config.scene;
   const physics::AtmosphereView view = physics::atmosphere_view(scene);
   int brighter = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
-      const Vec3 d = pixel_direction(scene.camera, kWidth, kHeight, i, j);
+  for (uint32_t j = 0; j < kAtmosphereSkyViewHeight; ++j) {
+    for (uint32_t i = 0; i < kAtmosphereSkyViewWidth; ++i) {
+      const Vec3 d = pixel_direction(scene.camera, kAtmosphereSkyViewWidth, kAtmosphereSkyViewHeight, i, j);
       const Vec3 want = physics::sun_disk_radiance(*scene.atmosphere, view, d, true);
       const Vec3 uniform = physics::sun_disk_radiance(*scene.atmosphere, view, d, false);
       const Vec3 got = texel(image, i, j);

@@ -32,8 +32,8 @@ using physics::LutUv;
 constexpr size_t kRows = 9, kValues = 4 * kRows;  // atmosphere_twins.comp's ATMOSPHERE_TWIN_ROWS
 constexpr int kPanels = 40;
 
-// std430 mirror of atmosphere_twins.comp's Case.
-struct Case {
+// std430 mirror of atmosphere_twins.comp's TwinCase.
+struct TwinCase {
   float ray[4];  // r, mu, d, mu_s
   float lut[4];  // u, v, cos_azimuth, cos θ
 };
@@ -62,12 +62,12 @@ constexpr std::array<Column, kValues> kColumns{{
 }};
 
 // The cases for one atmosphere: altitudes × view zenith cosines, the rest cycled.
-std::vector<Case> cases(const Atmosphere& a) {
+std::vector<TwinCase> cases(const Atmosphere& a) {
   const double altitudes[] = {0, 1e-3, 1, 100, 1e3, 10e3, 30e3, 59e3, a.top_radius - a.bottom_radius, 100e3, 1000e3};
   const double mu_ss[] = {1, 0.5, 0.05, 0, -0.002, -0.3};
   const double cos_azimuths[] = {1, 0.6, 0, -0.4, -1};
   const double cos_thetas[] = {1, 0.9, 0.3, 0, -0.7, -1};
-  std::vector<Case> out;
+  std::vector<TwinCase> out;
   size_t k = 0;
   for (double h : altitudes) {
     const double r = a.bottom_radius + h, mu_h = physics::mu_horizon(a, r);
@@ -86,7 +86,7 @@ std::vector<Case> cases(const Atmosphere& a) {
 double or_minus_one(const std::optional<double>& d) { return d.value_or(-1.0); }
 
 // The CPU twins' values for one case, in the shader's order, at its float inputs.
-std::array<double, kValues> expected(const Atmosphere& a, const Case& c) {
+std::array<double, kValues> expected(const Atmosphere& a, const TwinCase& c) {
   using namespace physics;
   const double r = c.ray[0], mu = c.ray[1], d = c.ray[2], mu_s = c.ray[3];
   const LutUv uv{c.lut[0], c.lut[1]};
@@ -117,7 +117,7 @@ std::array<double, kValues> expected(const Atmosphere& a, const Case& c) {
           depth[0], depth[1], depth[2], phase_cornette_shanks(0.8, double(c.lut[3]))};
 }
 
-std::vector<float> run_cases(rhi::Device& device, const Atmosphere& a, const std::vector<Case>& table) {
+std::vector<float> run_cases(rhi::Device& device, const Atmosphere& a, const std::vector<TwinCase>& table) {
   const physics::GpuAtmosphere packed = physics::pack_atmosphere(a);
   const std::vector<std::byte> bytes =
       run_twin_shader(device, "atmosphere_twins.comp",
@@ -135,7 +135,7 @@ class AtmosphereTwins : public OnEachBackend<> {
 
 TEST_P(AtmosphereTwins, IncludesMatchTheirCpuTwins) {
   for (const Atmosphere& a : {*physics::atmosphere_preset("earth"), *physics::atmosphere_preset("mars")}) {
-    const std::vector<Case> table = cases(a);
+    const std::vector<TwinCase> table = cases(a);
     const std::vector<float> results = run_cases(device(), a, table);
     std::array<double, kValues> worst{};  // the worst error over the column's bound's scale: |Δ| / (rel·|CPU| + abs)
     std::array<double, kValues> worst_abs{};
@@ -161,7 +161,7 @@ TEST_P(AtmosphereTwins, IncludesMatchTheirCpuTwins) {
 // bounded at 1e-5 (measured: printed).
 TEST_P(AtmosphereTwins, ZenithTransmittanceMatchesTheClosedForm) {
   for (const Atmosphere& a : {*physics::atmosphere_preset("earth"), *physics::atmosphere_preset("mars")}) {
-    std::vector<Case> table;
+    std::vector<TwinCase> table;
     for (double h : {0.0, 1e-3, 1.0, 500.0, 2e3, 8e3, 20e3, 40e3}) table.push_back({{float(a.bottom_radius + h), 1.0f, 0.0f, 1.0f}, {0.5f, 0.5f, 1.0f, 1.0f}});
     const std::vector<float> results = run_cases(device(), a, table);
     double worst = 0;
@@ -183,7 +183,7 @@ TEST_P(AtmosphereTwins, ZenithTransmittanceMatchesTheClosedForm) {
 // (tests/unit/atmosphere_test.cpp computes that one).
 TEST_P(AtmosphereTwins, GroundDistanceFromOneMetreIsStableInFloat) {
   const Atmosphere earth = *physics::atmosphere_preset("earth");
-  const std::vector<Case> table{{{float(earth.bottom_radius + 1), -0.1f, 0.0f, 1.0f}, {0.5f, 0.5f, 1.0f, 1.0f}}};
+  const std::vector<TwinCase> table{{{float(earth.bottom_radius + 1), -0.1f, 0.0f, 1.0f}, {0.5f, 0.5f, 1.0f, 1.0f}}};
   const std::vector<float> results = run_cases(device(), earth, table);
   const double exact = *physics::distance_to_ground(earth, earth.bottom_radius + 1, -0.1);
   EXPECT_NEAR(results[1], exact, 1e-3 * exact);

@@ -35,7 +35,7 @@
 namespace volgraph::testing {
 namespace {
 
-constexpr uint32_t kWidth = 48, kHeight = 32;
+constexpr uint32_t kClosedFogWidth = 48, kClosedFogHeight = 32;
 constexpr double kFp16 = 1e-3;     // one fp16 rounding (4.9e-4) and the float maths
 constexpr double kComposed = 2e-3;  // T, L_scat and the colour each rounded to fp16, then blended
 
@@ -53,7 +53,7 @@ struct ClosedCase {
 // Outputs: 0 the composed linear image, 1 fog_scattering, 2 fog_transmittance.
 std::string config_text(const ClosedCase& c) {
   std::ostringstream o;
-  o << R"({ "output": { "size": [)" << kWidth << ", " << kHeight << R"(] },
+  o << R"({ "output": { "size": [)" << kClosedFogWidth << ", " << kClosedFogHeight << R"(] },
   "scene": { "camera": )" << c.camera << R"(, "background": { "radiance": )" << c.background << R"( },
              "materials": { "glow": { "albedo": [0, 0, 0], "emissive": [0.5, 0.5, 0.5] } },
              "objects": )" << c.objects << R"(, "lights": )" << c.lights << R"(, "media": )" << c.media << R"( },
@@ -91,14 +91,14 @@ class ClosedFog : public OnEachBackend<> {
 
 // The length of pixel (i, j)'s ray per metre of view depth.
 double ray_scale(const Camera& camera, uint32_t i, uint32_t j) {
-  const physics::ViewRays rays = physics::view_rays(camera, double(kWidth) / kHeight);
-  const Vec3 r = physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
+  const physics::ViewRays rays = physics::view_rays(camera, double(kClosedFogWidth) / kClosedFogHeight);
+  const Vec3 r = physics::view_ray(rays, (i + 0.5) / kClosedFogWidth * 2 - 1, 1 - (j + 0.5) / kClosedFogHeight * 2);
   return std::sqrt(physics::dot(r, r));
 }
 
 Vec3 pixel_direction(const Camera& camera, uint32_t i, uint32_t j) {
-  const physics::ViewRays rays = physics::view_rays(camera, double(kWidth) / kHeight);
-  return physics::normalize(physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2));
+  const physics::ViewRays rays = physics::view_rays(camera, double(kClosedFogWidth) / kClosedFogHeight);
+  return physics::normalize(physics::view_ray(rays, (i + 0.5) / kClosedFogWidth * 2 - 1, 1 - (j + 0.5) / kClosedFogHeight * 2));
 }
 
 void expect_near_relative(double got, double want, const std::string& what, double relative = kFp16) {
@@ -125,8 +125,8 @@ TEST_P(ClosedFog, DepthFogIsItsFormulaOfTheDistanceAlongEachRay) {
                        "transform": { "translate": [0, 1, -10], "rotate_deg": [90, 0, 0] } } ])";
     const LoadedConfig config = load(c);
     const Rendered r = render(config);
-    for (uint32_t j = 0; j < kHeight; ++j) {
-      for (uint32_t i = 0; i < kWidth; ++i) {
+    for (uint32_t j = 0; j < kClosedFogHeight; ++j) {
+      for (uint32_t i = 0; i < kClosedFogWidth; ++i) {
         const double f = v.f(wall * ray_scale(config.config.scene.camera, i, j));
         for (size_t ch = 0; ch < 3; ++ch) {
           const std::string where = std::string(v.name) + " pixel " + std::to_string(i) + ", " + std::to_string(j);
@@ -152,8 +152,8 @@ TEST_P(ClosedFog, HeightFogTransmittanceAndDirectionalInScatteringAreExact) {
   const Camera& camera = config.config.scene.camera;
   const double sigma_s[3] = {0.1, 0.2, 0.3}, e[3] = {2, 3, 4};
   const Vec3 travel = physics::normalize({0.3, -0.4, -0.866});
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kClosedFogHeight; ++j) {
+    for (uint32_t i = 0; i < kClosedFogWidth; ++i) {
       const Vec3 d = pixel_direction(camera, i, j);
       const double length = camera.far * ray_scale(camera, i, j);
       const double unit_depth = physics::height_fog_optical_depth(1.0, 0.4, 0.0, camera.position[1], d[1], length);
@@ -212,10 +212,10 @@ TEST_P(ClosedFog, AnalyticFogMatchesTheCpuReferenceForAPointLight) {
   reference::IntegrationSettings precise;
   precise.relative_tolerance = 1e-7;
   const reference::Renderer renderer(config.config.scene, precise);
-  const reference::ReferenceImage want = reference::render_image(renderer, {.width = kWidth, .height = kHeight});
+  const reference::ReferenceImage want = reference::render_image(renderer, {.width = kClosedFogWidth, .height = kClosedFogHeight});
   double worst = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kClosedFogHeight; ++j) {
+    for (uint32_t i = 0; i < kClosedFogWidth; ++i) {
       const Vec3 expected = want.at(i, j);
       for (size_t ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(r.at(r.image, i, j, ch) - expected[ch]) / expected[ch]);
     }

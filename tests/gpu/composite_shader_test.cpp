@@ -16,10 +16,10 @@
 namespace volgraph::testing {
 namespace {
 
-constexpr uint32_t kWidth = 13, kHeight = 11;
+constexpr uint32_t kCompositeShaderWidth = 13, kCompositeShaderHeight = 11;
 
 float radiance_at(uint32_t x, uint32_t y, uint32_t c) {
-  const float v = std::pow(10.0f, -3.0f + 7.0f * float(x + kWidth * y) / float(kWidth * kHeight)) * (1.0f + 0.3f * float(c));
+  const float v = std::pow(10.0f, -3.0f + 7.0f * float(x + kCompositeShaderWidth * y) / float(kCompositeShaderWidth * kCompositeShaderHeight)) * (1.0f + 0.3f * float(c));
   return (x == 3 && y == 2) ? -1.0f : v;  // one negative radiance: clamped to 0
 }
 
@@ -34,17 +34,17 @@ std::vector<float> composite(rhi::Device& device, const std::vector<float>& radi
                              rhi::QuerySetId timestamps = {}) {
   using namespace rhi;
   const TextureId input = device.create_texture({"radiance", ResourceKind::texture2d, Format::rgba32_float,
-                                                 {kWidth, kHeight, 1}, texture_usage::sampled | texture_usage::copy_dst});
+                                                 {kCompositeShaderWidth, kCompositeShaderHeight, 1}, texture_usage::sampled | texture_usage::copy_dst});
   const TextureId frame = device.create_texture({"frame", ResourceKind::texture2d, Format::rgba32_float,
-                                                 {kWidth, kHeight, 1}, texture_usage::storage | texture_usage::copy_src});
+                                                 {kCompositeShaderWidth, kCompositeShaderHeight, 1}, texture_usage::storage | texture_usage::copy_src});
   const BufferId params = device.create_buffer({"composite params", 16, buffer_usage::uniform | buffer_usage::copy_dst});
-  const BufferId readback = device.create_buffer({"readback", uint64_t(kWidth) * kHeight * 16, buffer_usage::copy_dst});
+  const BufferId readback = device.create_buffer({"readback", uint64_t(kCompositeShaderWidth) * kCompositeShaderHeight * 16, buffer_usage::copy_dst});
   device.write_texture(input, bytes_of(radiance));
   struct {
     uint32_t size[2];
     float exposure_ev;
     int32_t tone_map_op;
-  } block{{kWidth, kHeight}, exposure, int32_t(op)};
+  } block{{kCompositeShaderWidth, kCompositeShaderHeight}, exposure, int32_t(op)};
   device.write_buffer(params, 0, std::as_bytes(std::span(&block, 1)));
 
   const plumbing::ComputeProgram program = plumbing::create_compute_program(device, "composite.comp");
@@ -69,7 +69,7 @@ std::vector<float> composite(rhi::Device& device, const std::vector<float>& radi
   encoder->begin_compute_pass("composite");
   encoder->set_pipeline(program.pipeline);
   encoder->set_bind_group(0, group);
-  const auto groups = program.groups_for({kWidth, kHeight, 1});
+  const auto groups = program.groups_for({kCompositeShaderWidth, kCompositeShaderHeight, 1});
   encoder->dispatch(groups[0], groups[1]);
   encoder->end_compute_pass();
   if (timestamps) encoder->write_timestamp(timestamps, 1);
@@ -93,24 +93,24 @@ class CompositeShader : public OnEachBackend<> {
 TEST_P(CompositeShader, MatchesTheCpuTwinForEveryToneMap) {
   ASSERT_FALSE(shader_spirv("composite.comp").empty());
   rhi::Device& device = this->device();
-  std::vector<float> radiance(size_t(kWidth) * kHeight * 4);
-  for (uint32_t y = 0; y < kHeight; ++y)
-    for (uint32_t x = 0; x < kWidth; ++x)
-      for (uint32_t ch = 0; ch < 4; ++ch) radiance[4 * (x + kWidth * y) + ch] = ch == 3 ? 1.0f : radiance_at(x, y, ch);
+  std::vector<float> radiance(size_t(kCompositeShaderWidth) * kCompositeShaderHeight * 4);
+  for (uint32_t y = 0; y < kCompositeShaderHeight; ++y)
+    for (uint32_t x = 0; x < kCompositeShaderWidth; ++x)
+      for (uint32_t ch = 0; ch < 4; ++ch) radiance[4 * (x + kCompositeShaderWidth * y) + ch] = ch == 3 ? 1.0f : radiance_at(x, y, ch);
   for (const physics::ToneMap op : {physics::ToneMap::none, physics::ToneMap::aces, physics::ToneMap::reinhard}) {
     for (const float exposure : {-2.0f, 0.0f, 1.5f}) {
       const std::vector<float> result = composite(device, radiance, exposure, op);
       double worst = 0;
-      for (uint32_t y = 0; y < kHeight; ++y) {
-        for (uint32_t x = 0; x < kWidth; ++x) {
+      for (uint32_t y = 0; y < kCompositeShaderHeight; ++y) {
+        for (uint32_t x = 0; x < kCompositeShaderWidth; ++x) {
           const physics::Rgb in = {radiance_at(x, y, 0), radiance_at(x, y, 1), radiance_at(x, y, 2)};
           const physics::Rgb want = physics::tone_map(in, exposure, op);
           for (uint32_t ch = 0; ch < 3; ++ch) {
-            const double got = result[4 * (x + kWidth * y) + ch];
+            const double got = result[4 * (x + kCompositeShaderWidth * y) + ch];
             // float32 evaluation of the same formula: relative error well under 1e-5.
             worst = std::max(worst, std::abs(got - want[ch]) / std::max(1e-3, std::abs(want[ch])));
           }
-          EXPECT_EQ(result[4 * (x + kWidth * y) + 3], 1.0f);
+          EXPECT_EQ(result[4 * (x + kCompositeShaderWidth * y) + 3], 1.0f);
         }
       }
       EXPECT_LT(worst, 1e-5) << "tone map " << int(op) << " exposure " << exposure;
@@ -123,7 +123,7 @@ TEST_P(CompositeShader, TimestampsBracketTheDispatch) {
   rhi::Device& device = this->device();
   ASSERT_TRUE(device.has_timestamps()) << "lavapipe offers time stamps on both backends";
   const rhi::QuerySetId queries = device.create_timestamp_queries("composite", 2);
-  const std::vector<float> radiance(size_t(kWidth) * kHeight * 4, 1.0f);
+  const std::vector<float> radiance(size_t(kCompositeShaderWidth) * kCompositeShaderHeight * 4, 1.0f);
   for (int frame = 0; frame < 3; ++frame) {  // the query set is reusable frame after frame
     composite(device, radiance, 0.0f, physics::ToneMap::aces, queries);
     const std::vector<double> ns = device.read_timestamps(queries, 0, 2);

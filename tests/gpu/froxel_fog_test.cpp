@@ -30,7 +30,7 @@
 namespace volgraph::testing {
 namespace {
 
-constexpr uint32_t kWidth = 48, kHeight = 32;
+constexpr uint32_t kFroxelFogWidth = 48, kFroxelFogHeight = 32;
 
 struct FogCase {
   std::string media = R"({ "fog": { "sigma_s": [0.2, 0.2, 0.2], "sigma_a": [0, 0, 0] } })";
@@ -58,7 +58,7 @@ const char* kOpacityShadowInputs =
 
 std::string config_text(const FogCase& c) {
   std::ostringstream o;
-  o << R"({ "output": { "size": [)" << kWidth << ", " << kHeight << R"(] },
+  o << R"({ "output": { "size": [)" << kFroxelFogWidth << ", " << kFroxelFogHeight << R"(] },
   "scene": { "camera": )" << c.camera << R"(, "background": { "radiance": )" << c.background << R"( },
              "objects": )" << c.objects << R"(, "lights": )" << c.lights << R"(, "media": )" << c.media << R"( },
   "graph": { "passes": [)" << (c.opacity_shadow_map ? kOpacityShadowPasses : "") << R"(
@@ -106,12 +106,12 @@ TEST_P(FroxelFog, NothingAppearsWithoutLightsAbsorptionOrEmission) {
 // bilinear blend of the columns around it (clamped at the edges). So the expected image
 // is that blend of each column's exact e^(−σa·d_column).
 double column_blend(const Camera& camera, uint32_t i, uint32_t j, const std::function<double(double)>& of_ray_length) {
-  const double columns_x = kWidth / 8.0, columns_y = kHeight / 8.0;
-  const double u = std::clamp((i + 0.5) / kWidth * columns_x - 0.5, 0.0, columns_x - 1);
-  const double v = std::clamp((j + 0.5) / kHeight * columns_y - 0.5, 0.0, columns_y - 1);
+  const double columns_x = kFroxelFogWidth / 8.0, columns_y = kFroxelFogHeight / 8.0;
+  const double u = std::clamp((i + 0.5) / kFroxelFogWidth * columns_x - 0.5, 0.0, columns_x - 1);
+  const double v = std::clamp((j + 0.5) / kFroxelFogHeight * columns_y - 0.5, 0.0, columns_y - 1);
   const int x0 = int(u), y0 = int(v), x1 = std::min(x0 + 1, int(columns_x) - 1), y1 = std::min(y0 + 1, int(columns_y) - 1);
   auto at = [&](int x, int y) {  // the column's centre ray, as a pixel of a columns_x × columns_y frame
-    const physics::ViewRays rays = physics::view_rays(camera, double(kWidth) / kHeight);
+    const physics::ViewRays rays = physics::view_rays(camera, double(kFroxelFogWidth) / kFroxelFogHeight);
     const Vec3 r = physics::view_ray(rays, (x + 0.5) / columns_x * 2 - 1, 1 - (y + 0.5) / columns_y * 2);
     return of_ray_length(std::sqrt(physics::dot(r, r)));
   };
@@ -126,11 +126,11 @@ TEST_P(FroxelFog, APureAbsorberAttenuatesTheBackgroundByBeerLambert) {
   const LoadedConfig config = load(c);
   const Texels t = render(config);
   const double sigma_a[3] = {0.02, 0.05, 0.1}, depth = 20 - 0.1;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kFroxelFogHeight; ++j) {
+    for (uint32_t i = 0; i < kFroxelFogWidth; ++i) {
       for (size_t ch = 0; ch < 3; ++ch) {
         const double want = column_blend(config.config.scene.camera, i, j, [&](double length) { return std::exp(-sigma_a[ch] * depth * length); });
-        ASSERT_NEAR(t.rgba[4 * (j * kWidth + i) + ch], want, 2e-3 * want) << i << ", " << j << " ch " << ch;
+        ASSERT_NEAR(t.rgba[4 * (j * kFroxelFogWidth + i) + ch], want, 2e-3 * want) << i << ", " << j << " ch " << ch;
       }
     }
   }
@@ -149,12 +149,12 @@ double FroxelFog::homogeneous_error(const std::string& variant, int slices) {
   const Texels t = render(config);
   const double s = sigma_s * e / (4 * M_PI), sigma_t = sigma_s + sigma_a;
   double worst = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kFroxelFogHeight; ++j) {
+    for (uint32_t i = 0; i < kFroxelFogWidth; ++i) {
       const double want = column_blend(config.config.scene.camera, i, j, [&](double length) {
         return s * (1 - std::exp(-sigma_t * (20 - 0.1) * length)) / sigma_t;
       });
-      worst = std::max(worst, std::abs(t.rgba[4 * (j * kWidth + i)] - want) / want);
+      worst = std::max(worst, std::abs(t.rgba[4 * (j * kFroxelFogWidth + i)] - want) / want);
     }
   }
   return worst;
@@ -242,12 +242,12 @@ void expect_box_shadow(const Texels& open, const Texels& shadowed, const std::fu
   for (size_t k = 0; k < open.rgba.size(); k += 4) brightest = std::max(brightest, double(open.rgba[k]));
   ASSERT_GT(brightest, 0.0);
   size_t under = 0, beside = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
-      const size_t k = 4 * (j * kWidth + i);
-      if (open.rgba[k] < 1e-2 * brightest || (i + 8 > kWidth / 2 && i < kWidth / 2 + 8)) continue;
-      const double want = i < kWidth / 2 ? std::exp(-1.0) : 1.0;
-      (i < kWidth / 2 ? under : beside)++;
+  for (uint32_t j = 0; j < kFroxelFogHeight; ++j) {
+    for (uint32_t i = 0; i < kFroxelFogWidth; ++i) {
+      const size_t k = 4 * (j * kFroxelFogWidth + i);
+      if (open.rgba[k] < 1e-2 * brightest || (i + 8 > kFroxelFogWidth / 2 && i < kFroxelFogWidth / 2 + 8)) continue;
+      const double want = i < kFroxelFogWidth / 2 ? std::exp(-1.0) : 1.0;
+      (i < kFroxelFogWidth / 2 ? under : beside)++;
       EXPECT_NEAR(shadowed.rgba[k] / open.rgba[k], want, tolerance * want) << i << ", " << j;
       if (also) also(k);
     }
@@ -316,7 +316,7 @@ TEST_P(FroxelFog, ADenseBoxShadowsTheFogUnderItThroughAnOpacityShadowMap) {
 // The graph renders the lit scene alone (no fog in front of the floor).
 TEST_P(FroxelFog, TheOpacityShadowMapDimsSurfacesUnderTheMedia) {
   std::ostringstream text;
-  text << R"({ "output": { "size": [)" << kWidth << ", " << kHeight << R"(] },
+  text << R"({ "output": { "size": [)" << kFroxelFogWidth << ", " << kFroxelFogHeight << R"(] },
   "scene": { "camera": )" << kCameraAtTheLayer << R"(, "media": )" << layer_under_box_media(true) << R"(,
     "materials": { "grey": { "albedo": [0.5, 0.5, 0.5] } },
     "objects": [ { "name": "floor", "shape": "plane", "size": [40, 1, 40], "material": "grey", "transform": { "translate": [0, -0.5, 0] } } ],
@@ -330,11 +330,11 @@ TEST_P(FroxelFog, TheOpacityShadowMapDimsSurfacesUnderTheMedia) {
     "outputs": ["out.output"] } })";
   const LoadedConfig config = load_config_text("floor.json", text.str(), registry_);
   const Texels t = render(config);
-  const physics::ViewRays rays = physics::view_rays(config.config.scene.camera, double(kWidth) / kHeight);
+  const physics::ViewRays rays = physics::view_rays(config.config.scene.camera, double(kFroxelFogWidth) / kFroxelFogHeight);
   size_t checked[2] = {0, 0};
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
-      const Vec3 d = physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
+  for (uint32_t j = 0; j < kFroxelFogHeight; ++j) {
+    for (uint32_t i = 0; i < kFroxelFogWidth; ++i) {
+      const Vec3 d = physics::view_ray(rays, (i + 0.5) / kFroxelFogWidth * 2 - 1, 1 - (j + 0.5) / kFroxelFogHeight * 2);
       if (d[1] >= 0) continue;
       const double t_floor = (-0.5 - rays.position[1]) / d[1];
       const double x = rays.position[0] + t_floor * d[0], z = rays.position[2] + t_floor * d[2];
@@ -342,7 +342,7 @@ TEST_P(FroxelFog, TheOpacityShadowMapDimsSurfacesUnderTheMedia) {
       if (std::abs(x) < 0.5 || std::abs(x + 10) < 0.5 || std::abs(z) < 0.5 || std::abs(z + 4) < 0.5 || z < -15) continue;
       const double want = 0.5 / M_PI * 3 * std::exp(-(under_layer ? 1.0 : 0.0) - (under_box ? 1.0 : 0.0));
       ++checked[under_layer];
-      EXPECT_NEAR(t.rgba[4 * (j * kWidth + i)], want, 1e-2 * want) << i << ", " << j << " x " << x << " z " << z;
+      EXPECT_NEAR(t.rgba[4 * (j * kFroxelFogWidth + i)], want, 1e-2 * want) << i << ", " << j << " x " << x << " z " << z;
     }
   }
   EXPECT_GT(checked[0], 20u);

@@ -44,7 +44,7 @@ namespace {
 using physics::add;
 using physics::scaled;
 
-constexpr uint32_t kWidth = 96, kHeight = 54, kMapSize = 256;
+constexpr uint32_t kLightVolumeWidth = 96, kLightVolumeHeight = 54, kMapSize = 256;
 
 struct VolumeCase {
   std::string light = R"({ "type": "spot", "position": [-1, 6, -2], "direction": [0.2, -1, 0.35], "intensity": [40, 40, 40],
@@ -60,7 +60,7 @@ struct VolumeCase {
 std::string config_text(const VolumeCase& c) {
   const std::string shadow_inputs = c.shadow_map ? R"(, "shadow_map": "shadow.depth", "light_view": "shadow.light_view")" : "";
   std::ostringstream o;
-  o << R"({ "output": { "size": [)" << kWidth << ", " << kHeight << R"(] },
+  o << R"({ "output": { "size": [)" << kLightVolumeWidth << ", " << kLightVolumeHeight << R"(] },
   "scene": { "camera": )" << c.camera << R"(, "background": { "radiance": [0, 0, 0] },
              "materials": { "grey": { "albedo": [0.5, 0.5, 0.5] } },
              "objects": [ { "name": "ground", "shape": "plane", "size": [20, 1, 20], "material": "grey" },
@@ -230,11 +230,11 @@ class LightVolume : public OnEachBackend<> {
     const Medium& fog = *scene_.media.fog;
     const double sigma_s = fog.sigma_s[0], sigma_t = fog.sigma_s[0] + fog.sigma_a[0];
     const Camera& cam = scene_.camera;
-    const physics::ViewRays rays = physics::view_rays(cam, double(kWidth) / kHeight);
+    const physics::ViewRays rays = physics::view_rays(cam, double(kLightVolumeWidth) / kLightVolumeHeight);
     std::vector<double> out;
-    for (uint32_t j = 0; j < kHeight; ++j) {
-      for (uint32_t i = 0; i < kWidth; ++i) {
-        const Vec3 through = physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
+    for (uint32_t j = 0; j < kLightVolumeHeight; ++j) {
+      for (uint32_t i = 0; i < kLightVolumeWidth; ++i) {
+        const Vec3 through = physics::view_ray(rays, (i + 0.5) / kLightVolumeWidth * 2 - 1, 1 - (j + 0.5) / kLightVolumeHeight * 2);
         const double scale = std::sqrt(physics::dot(through, through));
         const double depth = red(f.scene_depth, i, j);
         const double t_end = cam.near * cam.far / (cam.far - depth * (cam.far - cam.near)) * scale;
@@ -294,11 +294,11 @@ TEST_P(LightVolume, DirectionalMatchesTheShadowMapExactly) {
 TEST_P(LightVolume, TransmittanceIsBeerLambertToTheSurface) {
   const Frame f = render(VolumeCase{});
   const Camera& cam = scene_.camera;
-  const physics::ViewRays rays = physics::view_rays(cam, double(kWidth) / kHeight);
+  const physics::ViewRays rays = physics::view_rays(cam, double(kLightVolumeWidth) / kLightVolumeHeight);
   double worst = 0, worst_march = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
-      const Vec3 through = physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
+  for (uint32_t j = 0; j < kLightVolumeHeight; ++j) {
+    for (uint32_t i = 0; i < kLightVolumeWidth; ++i) {
+      const Vec3 through = physics::view_ray(rays, (i + 0.5) / kLightVolumeWidth * 2 - 1, 1 - (j + 0.5) / kLightVolumeHeight * 2);
       const double depth = red(f.scene_depth, i, j);
       const double t_end = cam.near * cam.far / (cam.far - depth * (cam.far - cam.near)) * std::sqrt(physics::dot(through, through));
       const double want = std::exp(-0.2 * t_end);

@@ -45,7 +45,7 @@
 namespace volgraph::testing {
 namespace {
 
-constexpr uint32_t kWidth = 48, kHeight = 32;
+constexpr uint32_t kRaymarchFogWidth = 48, kRaymarchFogHeight = 32;
 
 struct MarchCase {
   std::string media = R"({ "fog": { "sigma_s": [0.2, 0.2, 0.2], "sigma_a": [0, 0, 0] } })";
@@ -62,7 +62,7 @@ struct MarchCase {
 // outputs 1 (scattering) and 2 (transmittance).
 std::string config_text(const MarchCase& c) {
   std::ostringstream o;
-  o << R"({ "output": { "size": [)" << kWidth << ", " << kHeight << R"(] },
+  o << R"({ "output": { "size": [)" << kRaymarchFogWidth << ", " << kRaymarchFogHeight << R"(] },
   "scene": { "camera": )" << c.camera << R"(, "background": { "radiance": )" << c.background << R"( },
              "objects": )" << c.objects << R"(, "lights": )" << c.lights << R"(, "media": )" << c.media << R"( },
   "graph": { "passes": [
@@ -80,7 +80,7 @@ std::string config_text(const MarchCase& c) {
 // Length of the camera ray through the centre of texel (i, j) of a w × h image, per unit
 // of view depth.
 double ray_length(const Camera& camera, uint32_t i, uint32_t j, uint32_t w, uint32_t h) {
-  const physics::ViewRays rays = physics::view_rays(camera, double(kWidth) / kHeight);
+  const physics::ViewRays rays = physics::view_rays(camera, double(kRaymarchFogWidth) / kRaymarchFogHeight);
   const Vec3 r = physics::view_ray(rays, (i + 0.5) / w * 2 - 1, 1 - (j + 0.5) / h * 2);
   return std::sqrt(physics::dot(r, r));
 }
@@ -123,9 +123,9 @@ TEST_P(RaymarchFog, APureAbsorberAttenuatesTheBackgroundByBeerLambert) {
   const LoadedConfig config = load(c);
   const Texels t = render(config)[0];
   const double sigma_a[3] = {0.02, 0.05, 0.1}, depth = 20;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
-      const double d = depth * ray_length(config.config.scene.camera, i, j, kWidth, kHeight);
+  for (uint32_t j = 0; j < kRaymarchFogHeight; ++j) {
+    for (uint32_t i = 0; i < kRaymarchFogWidth; ++i) {
+      const double d = depth * ray_length(config.config.scene.camera, i, j, kRaymarchFogWidth, kRaymarchFogHeight);
       for (size_t ch = 0; ch < 3; ++ch) {
         const double want = std::exp(-sigma_a[ch] * d);
         ASSERT_NEAR(channel(t, i, j, ch), want, 2e-3 * want) << i << ", " << j << " ch " << ch;
@@ -145,7 +145,7 @@ double RaymarchFog::homogeneous_error(int steps, const std::string& resolution, 
             R"(, "max_distance": 20, "resolution": ")" + resolution + R"(", "jitter": true })";
   const LoadedConfig config = load(c);
   const Texels t = render(config, 2)[1];  // frame 1: a jitter other than frame 0's
-  const uint32_t w = resolution == "half" ? kWidth / 2 : kWidth, h = resolution == "half" ? kHeight / 2 : kHeight;
+  const uint32_t w = resolution == "half" ? kRaymarchFogWidth / 2 : kRaymarchFogWidth, h = resolution == "half" ? kRaymarchFogHeight / 2 : kRaymarchFogHeight;
   EXPECT_EQ(t.width, w);
   EXPECT_EQ(t.height, h);
   const double s = sigma_s * e / (4 * M_PI), sigma_t = sigma_s + sigma_a;
@@ -192,10 +192,10 @@ double RaymarchFog::reference_error(int steps) {
   const LoadedConfig config = load(heterogeneous_case(steps));
   const Texels t = render(config)[0];
   const reference::Renderer renderer(config.config.scene);
-  const reference::ReferenceImage truth = reference::render_image(renderer, {.width = kWidth, .height = kHeight, .threads = 2});
+  const reference::ReferenceImage truth = reference::render_image(renderer, {.width = kRaymarchFogWidth, .height = kRaymarchFogHeight, .threads = 2});
   double difference = 0, total = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kRaymarchFogHeight; ++j) {
+    for (uint32_t i = 0; i < kRaymarchFogWidth; ++i) {
       for (size_t ch = 0; ch < 3; ++ch) {
         difference += std::abs(channel(t, i, j, ch) - truth.at(i, j)[ch]);
         total += std::abs(truth.at(i, j)[ch]);
@@ -239,13 +239,13 @@ TEST_P(RaymarchFog, ADenseBoxCastsAVolumetricShadowOnlyWithShadowSteps) {
   for (size_t k = 0; k < open.rgba.size(); k += 4) brightest = std::max(brightest, double(open.rgba[k]));
   ASSERT_GT(brightest, 0.0);
   size_t under_box = 0, beside_box = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kRaymarchFogHeight; ++j) {
+    for (uint32_t i = 0; i < kRaymarchFogWidth; ++i) {
       const double lit = channel(open, i, j, 0);
       if (lit < 1e-2 * brightest) continue;  // the ray misses the layer
       // Pixels left of centre look at x < 0 all along: under the box.
-      const double want = i < kWidth / 2 ? box_transmittance : 1.0;
-      (i < kWidth / 2 ? under_box : beside_box)++;
+      const double want = i < kRaymarchFogWidth / 2 ? box_transmittance : 1.0;
+      (i < kRaymarchFogWidth / 2 ? under_box : beside_box)++;
       EXPECT_NEAR(channel(shadowed, i, j, 0) / lit, want, 5e-3 * want) << i << ", " << j;
       EXPECT_EQ(channel(without_shadows, i, j, 0), channel(open_without_shadows, i, j, 0)) << i << ", " << j;
     }
@@ -320,15 +320,15 @@ TEST_P(RaymarchFog, DepthAwareUpsamplingKeepsTheFogOnItsSideOfASilhouette) {
   c.apply_variant = "depth_aware";
   const Texels depth_aware = final_image(c);
   // Silhouette pixels: the 3×3 neighbourhood has both the box (its fog is dimmer) and the background.
-  auto on_box = [&](int i, int j) { return channel(full, uint32_t(i), uint32_t(j), 0) < 0.5 * channel(full, kWidth - 1, uint32_t(j), 0); };
+  auto on_box = [&](int i, int j) { return channel(full, uint32_t(i), uint32_t(j), 0) < 0.5 * channel(full, kRaymarchFogWidth - 1, uint32_t(j), 0); };
   double edge_error[2] = {0, 0}, all_error[2] = {0, 0};
   size_t edge_pixels = 0;
-  for (int j = 0; j < int(kHeight); ++j) {
-    for (int i = 0; i < int(kWidth); ++i) {
+  for (int j = 0; j < int(kRaymarchFogHeight); ++j) {
+    for (int i = 0; i < int(kRaymarchFogWidth); ++i) {
       bool box = false, open = false;
       for (int dj = -1; dj <= 1; ++dj) {
         for (int di = -1; di <= 1; ++di) {
-          const int x = std::clamp(i + di, 0, int(kWidth) - 1), y = std::clamp(j + dj, 0, int(kHeight) - 1);
+          const int x = std::clamp(i + di, 0, int(kRaymarchFogWidth) - 1), y = std::clamp(j + dj, 0, int(kRaymarchFogHeight) - 1);
           (on_box(x, y) ? box : open) = true;
         }
       }
@@ -343,7 +343,7 @@ TEST_P(RaymarchFog, DepthAwareUpsamplingKeepsTheFogOnItsSideOfASilhouette) {
   }
   ASSERT_GT(edge_pixels, 20u);
   std::printf("  silhouette (%zu px): bilinear %.4g, depth_aware %.4g; whole image: %.4g, %.4g (mean absolute error)\n", edge_pixels,
-              edge_error[0] / edge_pixels, edge_error[1] / edge_pixels, all_error[0] / (kWidth * kHeight), all_error[1] / (kWidth * kHeight));
+              edge_error[0] / edge_pixels, edge_error[1] / edge_pixels, all_error[0] / (kRaymarchFogWidth * kRaymarchFogHeight), all_error[1] / (kRaymarchFogWidth * kRaymarchFogHeight));
   EXPECT_LT(edge_error[1], 0.1 * edge_error[0]);
   EXPECT_LE(all_error[1], all_error[0]);
 }
@@ -376,7 +376,7 @@ const char* kDualLobes = R"("g_back": -0.4, "w_forward": 0.6)";
 // scene → froxel_voxelize → froxel_scatter (`variant`) → scatter_integrate → froxel_apply → composite.
 std::string point_fog_froxel_chain(const std::string& variant) {
   std::ostringstream o;
-  o << R"({ "output": { "size": [)" << kWidth << ", " << kHeight << R"(] },
+  o << R"({ "output": { "size": [)" << kRaymarchFogWidth << ", " << kRaymarchFogHeight << R"(] },
   "scene": { "camera": )" << kPointFogCamera << R"(, "background": { "radiance": [0, 0, 0] }, "objects": [],
              "lights": )" << kPointFogLight << R"(, "media": )" << kPointFogMedia << R"( },
   "graph": { "passes": [
@@ -408,15 +408,15 @@ MarchCase point_fog_march(const std::string& variant) {
 // The radiance of each pixel (rgb, row 0 at the top) by single scattering along its ray
 // to view depth 20, the in-scattering from physics::in_scattering with `phase`.
 std::vector<Vec3> single_scattering_image(const Scene& scene, const physics::PhaseChoice& phase) {
-  const physics::ViewRays rays = physics::view_rays(scene.camera, double(kWidth) / kHeight);
+  const physics::ViewRays rays = physics::view_rays(scene.camera, double(kRaymarchFogWidth) / kRaymarchFogHeight);
   const Medium& fog = *scene.media.fog;
   const Vec3 sigma_t = physics::add(fog.sigma_s, fog.sigma_a);
   const physics::MediaSample sample{.sigma_s = fog.sigma_s, .sigma_a = fog.sigma_a, .g = fog.g};
   const physics::LightMarch march{.steps = 1};
   std::vector<Vec3> image;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
-      const Vec3 r = physics::view_ray(rays, (i + 0.5) / kWidth * 2 - 1, 1 - (j + 0.5) / kHeight * 2);
+  for (uint32_t j = 0; j < kRaymarchFogHeight; ++j) {
+    for (uint32_t i = 0; i < kRaymarchFogWidth; ++i) {
+      const Vec3 r = physics::view_ray(rays, (i + 0.5) / kRaymarchFogWidth * 2 - 1, 1 - (j + 0.5) / kRaymarchFogHeight * 2);
       const double length = std::sqrt(physics::dot(r, r));
       const Vec3 direction = physics::scaled(r, 1 / length), to_camera = physics::scaled(direction, -1);
       Vec3 pixel;
@@ -436,11 +436,11 @@ std::vector<Vec3> single_scattering_image(const Scene& scene, const physics::Pha
 
 double relative_mean_error(const Texels& t, const std::vector<Vec3>& want) {
   double difference = 0, total = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kRaymarchFogHeight; ++j) {
+    for (uint32_t i = 0; i < kRaymarchFogWidth; ++i) {
       for (size_t ch = 0; ch < 3; ++ch) {
-        difference += std::abs(channel(t, i, j, ch) - want[j * kWidth + i][ch]);
-        total += std::abs(want[j * kWidth + i][ch]);
+        difference += std::abs(channel(t, i, j, ch) - want[j * kRaymarchFogWidth + i][ch]);
+        total += std::abs(want[j * kRaymarchFogWidth + i][ch]);
       }
     }
   }
@@ -455,12 +455,12 @@ TEST_P(RaymarchFog, EveryPhaseVariantAgreesWithTheFroxelChainAndTheSingleScatter
     const std::vector<Vec3> want = single_scattering_image(scene, physics::PhaseChoice{v.code, -0.4, 0.6});
     if (v.code == PHASE_HG) {  // the integral here against the reference's own (HG with the medium's g)
       const reference::Renderer renderer(scene);
-      const reference::ReferenceImage truth = reference::render_image(renderer, {.width = kWidth, .height = kHeight, .threads = 2});
+      const reference::ReferenceImage truth = reference::render_image(renderer, {.width = kRaymarchFogWidth, .height = kRaymarchFogHeight, .threads = 2});
       double difference = 0, total = 0;
-      for (uint32_t k = 0; k < kWidth * kHeight; ++k) {
+      for (uint32_t k = 0; k < kRaymarchFogWidth * kRaymarchFogHeight; ++k) {
         for (size_t ch = 0; ch < 3; ++ch) {
-          difference += std::abs(want[k][ch] - truth.at(k % kWidth, k / kWidth)[ch]);
-          total += std::abs(truth.at(k % kWidth, k / kWidth)[ch]);
+          difference += std::abs(want[k][ch] - truth.at(k % kRaymarchFogWidth, k / kRaymarchFogWidth)[ch]);
+          total += std::abs(truth.at(k % kRaymarchFogWidth, k / kRaymarchFogWidth)[ch]);
         }
       }
       std::printf("  single-scattering integral (in_scattering.h) vs the CPU reference, hg: %.2e\n", difference / total);

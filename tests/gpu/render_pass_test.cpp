@@ -13,7 +13,7 @@ namespace volgraph::testing {
 namespace {
 
 using namespace rhi;
-constexpr uint32_t kWidth = 16, kHeight = 12;
+constexpr uint32_t kRenderPassWidth = 16, kRenderPassHeight = 12;
 
 struct Quad {
   float y0, y1;          // NDC, full width
@@ -36,10 +36,10 @@ class RenderPass : public OnEachBackend<> {
   // Draws the quads in order into a cleared frame; returns its RGBA texels, row 0 first.
   std::vector<float> render(const std::vector<Quad>& quads, CullMode cull, BlendMode blend, bool depth_test) {
     const TextureId color = device_->create_texture({"color", ResourceKind::texture2d, Format::rgba32_float,
-                                                     {kWidth, kHeight, 1}, texture_usage::attachment | texture_usage::copy_src});
+                                                     {kRenderPassWidth, kRenderPassHeight, 1}, texture_usage::attachment | texture_usage::copy_src});
     const TextureId depth = device_->create_texture({"depth", ResourceKind::texture2d, Format::d32_float,
-                                                     {kWidth, kHeight, 1}, texture_usage::attachment});
-    const BufferId readback = device_->create_buffer({"readback", uint64_t(kWidth) * kHeight * 16, buffer_usage::copy_dst});
+                                                     {kRenderPassWidth, kRenderPassHeight, 1}, texture_usage::attachment});
+    const BufferId readback = device_->create_buffer({"readback", uint64_t(kRenderPassWidth) * kRenderPassHeight * 16, buffer_usage::copy_dst});
     RenderPipelineDesc pd;
     pd.label = "flat colour";
     pd.vertex_module = vertex_;
@@ -95,7 +95,7 @@ class RenderPass : public OnEachBackend<> {
     return texels;
   }
 
-  static float red(const std::vector<float>& texels, uint32_t x, uint32_t y) { return texels[4 * (y * kWidth + x)]; }
+  static float red(const std::vector<float>& texels, uint32_t x, uint32_t y) { return texels[4 * (y * kRenderPassWidth + x)]; }
 
   rhi::Device* device_ = nullptr;
   BindGroupLayoutId layout_;
@@ -104,10 +104,10 @@ class RenderPass : public OnEachBackend<> {
 
 TEST_P(RenderPass, PositiveNdcYIsTheTopOfTheImage) {
   const auto t = render({{0.0f, 1.0f, 0.5f, {1, 0, 0, 1}}}, CullMode::back, BlendMode::replace, true);
-  for (uint32_t y = 0; y < kHeight; ++y) {
-    for (uint32_t x = 0; x < kWidth; ++x) {
+  for (uint32_t y = 0; y < kRenderPassHeight; ++y) {
+    for (uint32_t x = 0; x < kRenderPassWidth; ++x) {
       // Pixel row j's centre is at NDC y = 1 − (j + 0.5)/H·2: rows 0–5 lie above y = 0.
-      EXPECT_EQ(red(t, x, y), y < kHeight / 2 ? 1.0f : 0.0f) << "pixel " << x << ", " << y;
+      EXPECT_EQ(red(t, x, y), y < kRenderPassHeight / 2 ? 1.0f : 0.0f) << "pixel " << x << ", " << y;
     }
   }
 }

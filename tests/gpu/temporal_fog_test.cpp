@@ -39,7 +39,7 @@
 namespace volgraph::testing {
 namespace {
 
-constexpr uint32_t kWidth = 64, kHeight = 48;
+constexpr uint32_t kTemporalFogWidth = 64, kTemporalFogHeight = 48;
 
 // A hard-edged fog sphere lit by a point light beside it: in-scattering that changes
 // sharply inside a froxel (the sphere's edge, the light's 1/d²), where jitter matters.
@@ -65,7 +65,7 @@ struct FroxelCase {
 // cases measure the blend of voxelize's jitter alone, which the march's own would mix into.
 std::string froxel_config(const FroxelCase& c) {
   std::ostringstream o;
-  o << R"({ "output": { "size": [)" << kWidth << ", " << kHeight << R"(] },
+  o << R"({ "output": { "size": [)" << kTemporalFogWidth << ", " << kTemporalFogHeight << R"(] },
   "scene": { "camera": )" << camera_at(0) << R"(, "lights": )" << c.lights << R"(, "media": )" << c.media << R"( },
   "graph": { "passes": [
     { "name": "fog_media", "type": "froxel_voxelize", "params": )" << c.grid << R"( },
@@ -93,7 +93,7 @@ struct PixelCase {
 // transmittance (1), this frame's (2, 3).
 std::string pixel_config(const PixelCase& c) {
   std::ostringstream o;
-  o << R"({ "output": { "size": [)" << kWidth << ", " << kHeight << R"(] },
+  o << R"({ "output": { "size": [)" << kTemporalFogWidth << ", " << kTemporalFogHeight << R"(] },
   "scene": { "camera": )" << camera_at(0) << R"(, "lights": )" << c.lights << R"(,
              "materials": { "grey": { "albedo": [0.5, 0.5, 0.5] } }, "objects": )" << c.objects << R"(, "media": )" << c.media << R"( },
   "graph": { "passes": [

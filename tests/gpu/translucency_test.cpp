@@ -34,11 +34,12 @@
 #include "reference/image_render.h"
 #include "tests/gpu/backends.h"
 #include "tests/support/source_dir.h"
+#include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
 namespace {
 
-constexpr uint32_t kWidth = 24, kHeight = 16;
+constexpr uint32_t kTranslucencyWidth = 24, kTranslucencyHeight = 16;
 
 // A camera 3 m in front of an emissive wall at z = −1 and `objects` (JSON) between,
 // through scene → translucency (variant) → linear colour.
@@ -67,7 +68,6 @@ std::string with_layers(std::string text, const std::string& layers) {
   return text.insert(at + variant.size(), R"(, "params": { "layers": )" + layers + " }");
 }
 
-double fp16_steps(double value) { return 2 * std::ldexp(1.0, std::ilogb(std::max(std::abs(value), 6.1e-5)) - 10); }
 
 class Translucency : public OnEachBackend<std::tuple<Backend, std::string>> {
  protected:
@@ -86,7 +86,7 @@ class Translucency : public OnEachBackend<std::tuple<Backend, std::string>> {
     return executor.read_output(0);
   }
   // |cos θ| of pixel (i, j)'s ray to the slab's normal (z).
-  double cos_to_z(uint32_t i, uint32_t j) const { return std::abs(physics::pixel_ray(scene_.camera, kWidth, kHeight, i, j)[2]); }
+  double cos_to_z(uint32_t i, uint32_t j) const { return std::abs(physics::pixel_ray(scene_.camera, kTranslucencyWidth, kTranslucencyHeight, i, j)[2]); }
 
   PassRegistry registry_;
   Scene scene_;
@@ -106,8 +106,8 @@ TEST_P(Translucency, ASolidSlabAbsorbsAlongThePathAtEachAngle) {
   const Texels image = render(config(R"("glass": { "albedo": [1, 1, 1], "transmission": 1, "ior": 1, "volume": "solid",
                                                   "attenuation_color": [0.5, 0.25, 0.125], "attenuation_distance": 0.5 })",
                                      R"(, { "shape": "box", "size": [20, 20, 0.5], "material": "glass" })", variant()));
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kTranslucencyHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucencyWidth; ++i) {
       for (size_t k = 0; k < 3; ++k) {
         const double want = physics::slab_transmittance(physics::sigma_t_from_color(c[k], d), d, cos_to_z(i, j));
         EXPECT_NEAR(at(image, i, j, k), want, tolerance(want)) << "pixel " << i << "," << j << " channel " << k;
@@ -121,8 +121,8 @@ TEST_P(Translucency, GlassReflectsFresnelsShareAndPassesTheRest) {
                                      R"(, { "shape": "box", "size": [20, 20, 0.5], "material": "glass" })", variant()));
   const std::array<double, 3> background{0.2, 0.3, 0.4};
   EXPECT_DOUBLE_EQ(physics::interface_reflectance(1.5, 1.0), 0.04);
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kTranslucencyHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucencyWidth; ++i) {
       const double f = physics::interface_reflectance(1.5, cos_to_z(i, j));
       for (size_t k = 0; k < 3; ++k) {
         const double want = f * background[k] + (1 - f) * (1 - f);
@@ -162,8 +162,8 @@ TEST_P(Translucency, CoverageBlendsTheLitSurfaceOverWhatIsBehind) {
                                      R"(, { "shape": "plane", "size": [20, 1, 20], "material": "veil", "transform": { "rotate_deg": [90, 0, 0] } })",
                                      variant(), light));
   const std::array<double, 3> albedo{1, 0.5, 0.25};
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kTranslucencyHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucencyWidth; ++i) {
       for (size_t k = 0; k < 3; ++k) {
         const double want = 0.75 * 1.0 + 0.25 * albedo[k] * 3.14159265 / M_PI;  // the wall is lit too, but reflects nothing
         EXPECT_NEAR(at(image, i, j, k), want, fp16_steps(want)) << "pixel " << i << "," << j << " channel " << k;
@@ -273,8 +273,8 @@ std::string fogged_sheet(const std::string& variant, const std::string& sheet_ma
 // of `far`.
 std::pair<double, double> relative_differences(const Texels& want, const Texels& close, const Texels& far) {
   double worst = 0, gap = 1e30;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kTranslucencyHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucencyWidth; ++i) {
       for (size_t k = 0; k < 3; ++k) {
         const double w = at(want, i, j, k);
         worst = std::max(worst, std::abs(at(close, i, j, k) - w) / w);

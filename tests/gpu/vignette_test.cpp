@@ -15,11 +15,11 @@ namespace volgraph::testing {
 namespace {
 
 constexpr double kFovYDeg = 50;
-constexpr uint32_t kWidth = 48, kHeight = 20;
+constexpr uint32_t kVignetteWidth = 48, kVignetteHeight = 20;
 
 double cos4_of_pixel(uint32_t i, uint32_t j) {
-  const double tan_half = std::tan(kFovYDeg * M_PI / 360.0), aspect = double(kWidth) / double(kHeight);
-  const double x = ((i + 0.5) / kWidth * 2 - 1) * tan_half * aspect, y = (1 - (j + 0.5) / kHeight * 2) * tan_half;
+  const double tan_half = std::tan(kFovYDeg * M_PI / 360.0), aspect = double(kVignetteWidth) / double(kVignetteHeight);
+  const double x = ((i + 0.5) / kVignetteWidth * 2 - 1) * tan_half * aspect, y = (1 - (j + 0.5) / kVignetteHeight * 2) * tan_half;
   const double cos2 = 1 / (1 + x * x + y * y);
   return cos2 * cos2;
 }
@@ -31,7 +31,7 @@ class Vignette : public OnEachBackend<> {
     PassRegistry registry;
     register_builtin_passes(registry);
     Overrides o;
-    o.size = Extent{kWidth, kHeight, 1};
+    o.size = Extent{kVignetteWidth, kVignetteHeight, 1};
     o.sets = {"lens.strength=" + std::to_string(strength)};
     LoadedConfig config = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/tests/vignette.json", registry, o);
     Executor executor(device(), config.graph, &config.config.scene, {});
@@ -43,11 +43,11 @@ class Vignette : public OnEachBackend<> {
 TEST_P(Vignette, FullStrengthIsTheCos4Law) {
   const Texels t = vignetted(1);
   const double radiance[3] = {1.0, 0.5, 0.25};
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kVignetteHeight; ++j) {
+    for (uint32_t i = 0; i < kVignetteWidth; ++i) {
       for (uint32_t c = 0; c < 3; ++c) {
         const double expected = radiance[c] * cos4_of_pixel(i, j);
-        EXPECT_NEAR(t.rgba[4 * (j * kWidth + i) + c], expected, 1e-3 * expected) << "pixel " << i << ", " << j;
+        EXPECT_NEAR(t.rgba[4 * (j * kVignetteWidth + i) + c], expected, 1e-3 * expected) << "pixel " << i << ", " << j;
       }
     }
   }
@@ -56,7 +56,7 @@ TEST_P(Vignette, FullStrengthIsTheCos4Law) {
 
 TEST_P(Vignette, ZeroStrengthLeavesTheColourExactly) {
   const Texels t = vignetted(0);
-  for (size_t p = 0; p < size_t(kWidth) * kHeight; ++p) {
+  for (size_t p = 0; p < size_t(kVignetteWidth) * kVignetteHeight; ++p) {
     EXPECT_EQ(t.rgba[4 * p], 1.0f);
     EXPECT_EQ(t.rgba[4 * p + 1], 0.5f);
     EXPECT_EQ(t.rgba[4 * p + 2], 0.25f);

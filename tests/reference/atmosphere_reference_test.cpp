@@ -54,7 +54,7 @@ bool finite_non_negative(const Vec3& v) {
 
 double largest(const Vec3& v) { return std::max({v[0], v[1], v[2]}); }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
+double elapsed_seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -160,7 +160,7 @@ TEST(AtmosphereReference, SingleScatteringMatchesAFixedStepSum) {
     const Vec3 fixed = fixed_step_single_scattering(a, sun, eye, v);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(adaptive[c], fixed[c], 5e-6 * fixed[c]) << sun_elevation << " " << c;
   }
-  std::printf("single scattering against the 1e5-step sum: 2 rays in %.2f s\n", seconds_since(start));
+  std::printf("single scattering against the 1e5-step sum: 2 rays in %.2f s\n", elapsed_seconds_since(start));
 }
 
 TEST(AtmosphereReference, SingleScatteringByZenithCosinesEqualsTheRaysIntegral) {
@@ -202,7 +202,7 @@ void check_orders(double sun_elevation, const char* name) {
   std::printf("%s: orders N = %u at most, residual beyond N at most %.2e of the sky; orders 1-8 (green):", name,
               max_orders, max_residual);
   for (size_t k = 0; k < 8; ++k) std::printf(" %.3e", energy[k][1]);
-  std::printf("; 12 rays in %.2f s\n", seconds_since(start));
+  std::printf("; 12 rays in %.2f s\n", elapsed_seconds_since(start));
   EXPECT_GE(max_orders, 3u);
   EXPECT_LT(max_orders, reference.settings().max_orders);
   EXPECT_LT(max_residual, 5e-3);
@@ -340,12 +340,12 @@ TEST(AtmosphereReference, PathsOrderTwoMatchesANestedQuadrature) {
   const Vec3 eye{0, a.bottom_radius + 10, 0}, v = normalize(direction_at(30, 120));
   const auto start = std::chrono::steady_clock::now();
   const Vec3 quadrature = order_two_by_quadrature(a, sun, eye, v);
-  const double quadrature_seconds = seconds_since(start);
+  const double quadrature_seconds = elapsed_seconds_since(start);
   const ScatteringOrders paths = AtmosphereReference(a, sun, few_samples(16384)).sky(eye, v, 21).scattering;
   std::printf("order 2: paths %.5e %.5e %.5e (+- %.1e %.1e %.1e), quadrature %.5e %.5e %.5e (%.2f s), paths %.2f s\n",
               paths.radiance[1][0], paths.radiance[1][1], paths.radiance[1][2], paths.standard_error[1][0],
               paths.standard_error[1][1], paths.standard_error[1][2], quadrature[0], quadrature[1], quadrature[2],
-              quadrature_seconds, seconds_since(start) - quadrature_seconds);
+              quadrature_seconds, elapsed_seconds_since(start) - quadrature_seconds);
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(paths.radiance[1][c], quadrature[c], 4 * paths.standard_error[1][c] + 0.02 * quadrature[c]) << c;
 }
@@ -393,7 +393,7 @@ TEST(AtmosphereReference, HorizonRaysFromTheGroundToSpaceAreFiniteAndNonNegative
       }
     }
   }
-  std::printf("horizon stress: %d rays in %.2f s\n", rays, seconds_since(start));
+  std::printf("horizon stress: %d rays in %.2f s\n", rays, elapsed_seconds_since(start));
   // Below the ground (a scene origin_altitude too low): the ray starts on the ground.
   const Atmosphere a = earth();
   const AtmosphereReference reference(a, sun_at(20), few_samples(4));

@@ -3,11 +3,17 @@
 // pixels off by more than a relative threshold (outliers: a moved edge, a broken texel).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace volgraph::testing {
+
+// Two steps of a half float's rounding at `value` (10-bit mantissa; normals down to 6.1e-5):
+// the tolerance of a value read back from an rgba16_float target.
+inline double fp16_steps(double value) { return 2 * std::ldexp(1.0, std::ilogb(std::max(std::abs(value), 6.1e-5)) - 10); }
 
 struct ImageDifference {
   double relative_mean_error = 0;  // Σ|a − b| / Σ|b| over RGB

@@ -63,13 +63,13 @@ double midpoint(const Light& light, const V3& origin, const V3& direction, doubl
   return sum * ds;
 }
 
-struct Case {
+struct IntegralCase {
   Light light;
   V3 origin, direction;
   double length, sigma_t, g;
 };
 
-std::vector<Case> cases() {
+std::vector<IntegralCase> cases() {
   const Light down = scene_spot({0, 6, 0}, {0, -1, 0}, 15, 25);
   const Light tilted = scene_spot({-4, 5, 2}, {1, -1, -0.5}, 10, 30);
   Light point = down;
@@ -87,7 +87,7 @@ std::vector<Case> cases() {
 }
 
 template <typename Real>
-Real evaluate(const Case& c, int panels = kLightVolumePanels) {
+Real evaluate(const IntegralCase& c, int panels = kLightVolumePanels) {
   const std::array<Real, 3> o{Real(c.origin[0]), Real(c.origin[1]), Real(c.origin[2])};
   const std::array<Real, 3> d{Real(c.direction[0]), Real(c.direction[1]), Real(c.direction[2])};
   return light_scattering_to(ray_light<Real>(c.light), o, d, Real(c.length), Real(c.sigma_t), Real(c.g), panels);
@@ -95,7 +95,7 @@ Real evaluate(const Case& c, int panels = kLightVolumePanels) {
 
 TEST(LightVolumeIntegral, PointAndSpotLightsMatchAMidpointSum) {
   double worst_double = 0, worst_float = 0;
-  for (size_t i = 0; const Case& c : cases()) {
+  for (size_t i = 0; const IntegralCase& c : cases()) {
     const double want = midpoint(c.light, c.origin, c.direction, c.length, c.sigma_t, c.g);
     const double got = evaluate<double>(c);
     const double got_float = evaluate<float>(c);
@@ -117,7 +117,7 @@ TEST(LightVolumeIntegral, PointAndSpotLightsMatchAMidpointSum) {
 // The same Gauss–Legendre budget without the cuts at the cone crossings (one piece per
 // ray, as many panels as the cut version uses at most) integrates across the cone's kinks.
 TEST(LightVolumeIntegral, WithoutTheConeCutsTheRuleIsWorse) {
-  const Case c = cases()[0];
+  const IntegralCase c = cases()[0];
   const double want = midpoint(c.light, c.origin, c.direction, c.length, c.sigma_t, c.g);
   // The spot over [0, D] as one piece, with 5 pieces' worth of panels.
   const RayLight<double> spot = ray_light<double>(c.light);
@@ -138,7 +138,7 @@ TEST(LightVolumeIntegral, DirectionalIsTheClosedForm) {
   const V3 view = normalize(V3{1, 0.1, -1});
   const double cos_theta = -dot(sun.direction, view);
   for (const double sigma_t : {0.0, 1e-6, 0.3, 50.0}) {
-    const Case c{sun, {0, 1, 0}, view, 12, sigma_t, 0.6};
+    const IntegralCase c{sun, {0, 1, 0}, view, 12, sigma_t, 0.6};
     const double want = phase_hg(0.6, cos_theta) * (sigma_t > 0 ? (1 - std::exp(-sigma_t * 12)) / sigma_t : 12.0);
     EXPECT_NEAR(evaluate<double>(c) / want, 1.0, 1e-9) << sigma_t;
   }
@@ -150,7 +150,7 @@ TEST(LightVolumeIntegral, StressIsFiniteAndNonNegative) {
     for (const double g : {-0.999, 0.999}) {
       // At the camera, on the ray ahead, and on the ray behind.
       for (const V3& origin : {V3{0, 1, 0}, V3{0, 1, 3}, V3{0, 1, -3}}) {
-        const Case c{spot, origin, normalize(V3{0, 0, -1}), 10, sigma_t, g};
+        const IntegralCase c{spot, origin, normalize(V3{0, 0, -1}), 10, sigma_t, g};
         const float f = evaluate<float>(c);
         const double d = evaluate<double>(c);
         EXPECT_TRUE(std::isfinite(f) && f >= 0) << f;
