@@ -12,7 +12,6 @@
 # Names: TARGET:SUITE, or TARGET:SUITE:K where a suite's cases fall into several groups;
 # run one case alone with the binary: BINARY --gtest_filter=Suite.Case.
 
-list(REMOVE_ITEM _vg_label "")
 if(NOT EXISTS "${_vg_binary}")
   add_test("${_vg_target}:NOT_BUILT" "${_vg_binary}")
   set_tests_properties("${_vg_target}:NOT_BUILT" PROPERTIES LABELS "${_vg_label}")
