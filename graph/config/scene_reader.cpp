@@ -15,6 +15,8 @@ namespace {
 
 constexpr double kHuge = 1e9;            // metres: well past any scene
 constexpr double kMaxRadiance = 1e9;
+// A surface's emission lands in half-float colour targets: above 65504 it would be clamped.
+constexpr double kMaxHalfRadiance = 65504;
 constexpr double kMaxCoefficient = 1e6;  // 1/m
 // Direction vectors shorter than this have no usable direction: normalising them in
 // float (the GPU) underflows, in double (the reference) loses every digit.
@@ -135,7 +137,7 @@ void read_material(const Node& n, const std::string& name, Material& m) {
   if (auto t = n.member("albedo_texture")) {
     if (auto path = t->existing_path()) m.albedo_texture = *path;
   }
-  read(n, "emissive", m.emissive, 0, kMaxRadiance);
+  read(n, "emissive", m.emissive, 0, kMaxHalfRadiance);
   read_translucency(n, m.translucency);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <sstream>
 #include <stdexcept>
 
 #include <tiny_gltf.h>
@@ -245,6 +246,30 @@ bool drawn_extension(const std::string& name) {
   return name == "KHR_materials_transmission" || name == "KHR_materials_ior" || name == "KHR_materials_volume";
 }
 
+// Half float's largest value: the colour targets hold radiance in it (higher is clamped).
+constexpr double kMaxHalfRadiance = 65504;
+
+// Refuses a factor with a component outside [lo, hi] (DESIGN.md: bad input is refused
+// with one message naming where and what was expected).
+void check_range(size_t material, const char* key, const std::vector<double>& factor, double lo, double hi, const char* why) {
+  for (double v : factor) {
+    if (!(v >= lo && v <= hi)) {
+      std::ostringstream s;
+      s << "material " << material << ": " << key << " has " << v << "; expected every component in [" << lo << ", " << hi << "] (" << why << ")";
+      fail(s.str());
+    }
+  }
+}
+
+// glTF 2.0's material schema: baseColorFactor in [0, 1] (a reflectance); emissiveFactor
+// non-negative and, carried as radiance into half-float colour, at most 65504.
+void check_material_colours(const tinygltf::Model& m) {
+  for (size_t i = 0; i < m.materials.size(); ++i) {
+    check_range(i, "pbrMetallicRoughness.baseColorFactor", m.materials[i].pbrMetallicRoughness.baseColorFactor, 0, 1, "glTF 2.0's schema");
+    check_range(i, "emissiveFactor", m.materials[i].emissiveFactor, 0, kMaxHalfRadiance, "radiance in half-float colour");
+  }
+}
+
 // Materials' features the passes do not draw: other extensions, the textures of the drawn
 // ones (their factors alone are used), and primitive modes other than triangles.
 std::vector<std::string> ignored_features(const tinygltf::Model& m) {
@@ -287,8 +312,9 @@ GltfModel load_gltf(const std::string& path) {
                          : loader.LoadASCIIFromFile(&m, &error, &warning, path);
   if (!ok) fail("malformed glTF: " + (error.empty() ? std::string("tinygltf could not read it") : error));
   for (const std::string& extension : m.extensionsRequired) {
-    fail("the file requires the glTF extension " + extension + ", which volgraph does not support");
+    if (!drawn_extension(extension)) fail("the file requires the glTF extension " + extension + ", which volgraph does not support");
   }
+  check_material_colours(m);
   GltfModel model;
   model.ignored = ignored_features(m);
   std::function<void(int, const Mat4&, int)> visit = [&](int node, const Mat4& parent, int depth) {

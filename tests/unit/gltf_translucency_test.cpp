@@ -3,6 +3,8 @@
 // base colours are the colours KHR_materials_volume's attenuation gives each column, so
 // every other row's transmittance through its thickness must equal them.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -38,6 +40,90 @@ double x_extent(const GltfPrimitive& p) {
     hi = std::max(hi, double(p.vertices[v]));
   }
   return hi - lo;
+}
+
+// A one-triangle glTF written to the test's temporary folder: `material` is the JSON of
+// its one material, `required` the JSON array of extensionsRequired (and Used).
+std::string write_triangle_gltf(const std::string& name, const std::string& material, const std::string& required) {
+  const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / (name + ".gltf");
+  std::ofstream(path) << R"({ "asset": { "version": "2.0" }, "extensionsUsed": )" << required
+                      << R"(, "extensionsRequired": )" << required << R"(,
+    "buffers": [ { "byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA" } ],
+    "bufferViews": [ { "buffer": 0, "byteLength": 36 } ],
+    "accessors": [ { "bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0] } ],
+    "materials": [ )" << material << R"( ],
+    "meshes": [ { "primitives": [ { "attributes": { "POSITION": 0 }, "material": 0 } ] } ],
+    "nodes": [ { "mesh": 0 } ], "scenes": [ { "nodes": [0] } ], "scene": 0 })";
+  return path.string();
+}
+
+// The message load_gltf refuses the file with ("" when it loads).
+std::string refusal(const std::string& path) {
+  try {
+    load_gltf(path);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+constexpr const char* kGlassMaterial = R"({ "pbrMetallicRoughness": { "baseColorFactor": [1, 1, 1, 1] },
+  "extensions": { "KHR_materials_transmission": { "transmissionFactor": 1 }, "KHR_materials_ior": { "ior": 1.4 },
+                  "KHR_materials_volume": { "thicknessFactor": 0.5 } } })";
+
+// glTF 2.0 §3.12: a loader refuses a file only for required extensions it does not
+// support; volgraph draws transmission, ior and volume.
+TEST(GltfTranslucency, RequiredTranslucencyExtensionsAreAccepted) {
+  const std::string path = write_triangle_gltf(
+      "required_translucency", kGlassMaterial, R"(["KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_ior"])");
+  ASSERT_EQ(refusal(path), "");
+  const GltfModel m = load_gltf(path);
+  ASSERT_EQ(m.primitives.size(), 1u);
+  EXPECT_EQ(m.primitives[0].translucency.transmission, 1);
+  EXPECT_EQ(m.primitives[0].translucency.ior, 1.4);
+  EXPECT_EQ(m.primitives[0].translucency.volume, VolumeKind::solid);
+  // One it does not draw is still refused, by name.
+  const std::string other = write_triangle_gltf("required_other", kGlassMaterial, R"(["KHR_materials_transmission", "KHR_texture_basisu"])");
+  EXPECT_NE(refusal(other).find("KHR_texture_basisu"), std::string::npos) << refusal(other);
+}
+
+// Bad input is refused with one message naming the material and what was expected
+// (../shared/DESIGN.md): a base colour outside [0, 1] (glTF 2.0's schema) would be
+// negative or amplifying reflectance, an emission above 65504 overflows the half-float colour.
+TEST(GltfTranslucency, OutOfRangeColoursAreRefusedNamingTheMaterial) {
+  const std::string negative = write_triangle_gltf("negative_base", R"({ "pbrMetallicRoughness": { "baseColorFactor": [-0.5, 1, 1, 1] } })", "[]");
+  const std::string bright = write_triangle_gltf("bright_base", R"({ "pbrMetallicRoughness": { "baseColorFactor": [1, 2, 1, 1] } })", "[]");
+  const std::string hot = write_triangle_gltf("hot_emission", R"({ "emissiveFactor": [1e9, 0, 0] })", "[]");
+  const std::string negative_emission = write_triangle_gltf("negative_emission", R"({ "emissiveFactor": [0, -1, 0] })", "[]");
+  for (const std::string& path : {negative, bright}) {
+    const std::string message = refusal(path);
+    EXPECT_NE(message.find("material 0"), std::string::npos) << message;
+    EXPECT_NE(message.find("baseColorFactor"), std::string::npos) << message;
+    EXPECT_NE(message.find("[0, 1]"), std::string::npos) << message;
+  }
+  for (const std::string& path : {hot, negative_emission}) {
+    const std::string message = refusal(path);
+    EXPECT_NE(message.find("material 0"), std::string::npos) << message;
+    EXPECT_NE(message.find("emissiveFactor"), std::string::npos) << message;
+    EXPECT_NE(message.find("65504"), std::string::npos) << message;
+  }
+  // At the limits: loaded.
+  EXPECT_EQ(refusal(write_triangle_gltf("limits", R"({ "pbrMetallicRoughness": { "baseColorFactor": [0, 1, 1, 1] }, "emissiveFactor": [65504, 0, 1] })", "[]")), "");
+  // Through a config: the scene's check names the file (exit 2 from `volgraph validate`).
+  PassRegistry registry;
+  register_builtin_passes(registry);
+  const std::string text = R"({ "output": { "size": [16, 16] },
+    "scene": { "camera": { "position": [0, 0.3, 1], "target": [0, 0.1, 0] },
+      "objects": [ { "shape": "gltf", "file": ")" + negative + R"(" } ],
+      "lights": [ { "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1] } ] },
+    "graph": { "passes": [ { "name": "s", "type": "scene" } ], "outputs": ["s.color"] } })";
+  std::string diagnostics;
+  try {
+    load_config_text("a.json", text, registry);
+  } catch (const ConfigError& e) {
+    diagnostics = e.what();
+  }
+  EXPECT_NE(diagnostics.find(negative + ": material 0"), std::string::npos) << diagnostics;
 }
 
 // The file's nodes in order (one primitive each): the rows R2 (thicknessFactor = edge),

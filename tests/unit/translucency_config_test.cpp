@@ -107,6 +107,10 @@ TEST_F(TranslucencyConfig, BadValuesGetOneClearMessage) {
   EXPECT_NE(error(R"({ "attenuation_distance": 0 })").find("/scene/materials/glass/attenuation_distance: "), std::string::npos);
   EXPECT_NE(error(R"({ "attenuation_color": [0.5, 2, 0.5] })").find("/scene/materials/glass/attenuation_color"), std::string::npos);
   EXPECT_NE(error(R"({ "thickness": -1 })").find("/scene/materials/glass/thickness: "), std::string::npos);
+  // Emission lands in half-float colour: above 65504 it is refused, not clamped silently.
+  EXPECT_NE(error(R"({ "emissive": [1e9, 0, 0] })").find("/scene/materials/glass/emissive"), std::string::npos);
+  EXPECT_NE(error(R"({ "emissive": [1e9, 0, 0] })").find("65504"), std::string::npos) << error(R"({ "emissive": [1e9, 0, 0] })");
+  EXPECT_EQ(translucency(R"({ "emissive": [65504, 0, 0] })").alpha, 1);
   EXPECT_NE(error(R"({ "tranmission": 1 })").find("did you mean \"transmission\""), std::string::npos);
 }
 
