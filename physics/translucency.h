@@ -93,6 +93,17 @@ Real shell_path_length(Real thickness, Real ior, Real cos_incident) {
   return c > Real(0) ? thickness / c : (thickness > Real(0) ? Real(1e30) : Real(0));
 }
 
+// The absorption path inside a solid whose straight path along the view ray is
+// `path_along_view` m, seen at cos θi: the ray refracts at the entry (Snell; RTR4 §14.5.2)
+// and crosses the same slab, thickness h = path_along_view · cos θi, at θt: h / cos θt.
+// Exactly `path_along_view` at ior 1 (no interface) or where θt cannot be had (grazing).
+template <typename Real>
+Real solid_path_length(Real path_along_view, Real ior, Real cos_incident) {
+  if (ior == Real(1)) return path_along_view;
+  const Real c_t = refracted_cosine(ior, cos_incident);
+  return c_t > Real(0) ? path_along_view * std::clamp(std::abs(cos_incident), Real(0), Real(1)) / c_t : path_along_view;
+}
+
 // Where a ray leaves a slab it entered at the origin (a flat solid of parallel faces, the
 // slab approximation of screen-space refraction): `to_incident` (unit, toward the viewer)
 // refracts by Bec's form into an index `ior` (RTR4 eq. 14.28–14.29), crosses the slab's
@@ -135,24 +146,26 @@ struct LayerInputs {
   Vec3Of<Real> irradiance{};      // E reaching the surface (lights, shadows and ambient)
   Vec3Of<Real> environment{};     // radiance the specular reflection sees
   Real reflectance = 0;           // F where the ray enters (interface_reflectance)
-  Real exit_reflectance = 0;      // F where it leaves again (a shell's or solid's far side; 0 thin-walled)
   Vec3Of<Real> path_transmittance{Real(1), Real(1), Real(1)};  // Beer–Lambert inside
 };
 
 // glTF 2.0's dielectric layering (its Appendix B fresnel_mix, with KHR_materials_
 // transmission's mix of diffuse and transmitted lobes) over coverage α:
 //   radiance      = α [F L_env + (1 − F)(1 − t) ρ/π E + emissive]
-//   transmittance = (1 − α) + α (1 − F) t ρ T_path (1 − F_exit).
+//   transmittance = (1 − α) + α (1 − F) t ρ T_path.
+// One interface per object, as KHR_materials_volume has it (its volume is bounded by the
+// surface the ray enters; no second Fresnel factor where it leaves): a thin wall, a shell
+// and a solid alike, so AttenuationTest's rows equal its answer-key row.
 template <typename Real>
 SurfaceLayer<Real> surface_layer(const LayerInputs<Real>& in) {
   SurfaceLayer<Real> out;
   const Real a = std::clamp(in.alpha, Real(0), Real(1)), t = std::clamp(in.transmission, Real(0), Real(1));
-  const Real f = std::clamp(in.reflectance, Real(0), Real(1)), f_exit = std::clamp(in.exit_reflectance, Real(0), Real(1));
+  const Real f = std::clamp(in.reflectance, Real(0), Real(1));
   constexpr Real kInvPi = Real(0.318309886183790671537767526745028724);
   for (size_t c = 0; c < 3; ++c) {
     const Real diffuse = (Real(1) - f) * (Real(1) - t) * in.albedo[c] * kInvPi * in.irradiance[c];
     out.radiance[c] = a * (f * in.environment[c] + diffuse + in.emissive[c]);
-    out.transmittance[c] = (Real(1) - a) + a * (Real(1) - f) * t * in.albedo[c] * in.path_transmittance[c] * (Real(1) - f_exit);
+    out.transmittance[c] = (Real(1) - a) + a * (Real(1) - f) * t * in.albedo[c] * in.path_transmittance[c];
   }
   return out;
 }

@@ -94,8 +94,8 @@ Vec3 Renderer::inside_transmittance(const SurfaceMaterial& m, double length) con
 
 // What physics::surface_layer needs at `hit` for a ray travelling along unit `direction`,
 // as shaders/include/translucent_surface.glsl gathers it: F at the cosine between the
-// normal (turned toward the ray's origin) and the way back, the same F at the exit of a
-// shell or solid, the path inside by the volume kind (`chord` for a solid). `lit`: the
+// normal (turned toward the ray's origin) and the way back (one interface: no exit F), the
+// path inside by the volume kind (`chord` for a solid, taken at the refracted angle). `lit`: the
 // radiance's inputs too (irradiance, environment, emission), else only the transmittance's.
 physics::LayerInputs<double> Renderer::layer_inputs(const SurfaceHit& hit, const Vec3& direction, double chord, bool lit) const {
   const SurfaceMaterial& m = material_of(hit);
@@ -111,10 +111,9 @@ physics::LayerInputs<double> Renderer::layer_inputs(const SurfaceHit& hit, const
     in.environment = environment_;
   }
   in.reflectance = physics::interface_reflectance(tr.ior, cos_view);
-  in.exit_reflectance = tr.volume == VolumeKind::thin_walled ? 0.0 : in.reflectance;
   double path = 0;
   if (tr.volume == VolumeKind::shell) path = physics::shell_path_length(tr.thickness, tr.ior, cos_view);
-  if (tr.volume == VolumeKind::solid) path = chord;
+  if (tr.volume == VolumeKind::solid) path = physics::solid_path_length(chord, tr.ior, cos_view);  // refracted, as the passes
   in.path_transmittance = inside_transmittance(m, path);
   return in;
 }
@@ -251,7 +250,6 @@ Vec3 Renderer::refracted_trace(const Ray& ray, double segment_start, PathState s
 Vec3 Renderer::enter_solid(const SurfaceHit& entry, const Vec3& direction, PathState state) const {
   const SurfaceMaterial& m = material_of(entry);
   physics::LayerInputs<double> in = layer_inputs(entry, direction, 0, true);
-  in.exit_reflectance = 0;
   in.path_transmittance = {1, 1, 1};
   const physics::SurfaceLayer<double> layer = physics::surface_layer(in);
   if (++state.bounces > integration_.max_bounces) return layer.radiance;

@@ -61,6 +61,14 @@ float shell_path_length(float thickness, float ior, float cos_incident) {
   return c > 0.0 ? thickness / c : (thickness > 0.0 ? 1e30 : 0.0);
 }
 
+// A solid's absorption path: its straight path along the view ray as the same slab crossed
+// at the refracted angle, path · cos θi / cos θt (Snell; RTR4 §14.5.2); as is at ior 1.
+float solid_path_length(float path_along_view, float ior, float cos_incident) {
+  if (ior == 1.0) return path_along_view;
+  const float c_t = refracted_cosine(ior, cos_incident);
+  return c_t > 0.0 ? path_along_view * clamp(abs(cos_incident), 0.0, 1.0) / c_t : path_along_view;
+}
+
 // Where a ray leaves a slab it entered at the origin, across the view ray (physics::
 // slab_exit_offset): h sin(θi − θt) / cos θt, h = path_along_view · cos θi; 0 at ior 1.
 vec3 slab_exit_offset(vec3 to_incident, vec3 normal, float ior, float path_along_view) {
@@ -88,20 +96,20 @@ struct LayerInputs {
   vec3 irradiance;
   vec3 environment;
   float reflectance;
-  float exit_reflectance;
   vec3 path_transmittance;
 };
 
 // glTF 2.0's dielectric layering over coverage α:
 //   radiance = α [F L_env + (1 − F)(1 − t) ρ/π E + emissive],
-//   transmittance = (1 − α) + α (1 − F) t ρ T_path (1 − F_exit).
+//   transmittance = (1 − α) + α (1 − F) t ρ T_path: one interface per object
+// (KHR_materials_volume; physics::surface_layer says why).
 SurfaceLayer surface_layer(LayerInputs l) {
   const float a = clamp(l.alpha, 0.0, 1.0), t = clamp(l.transmission, 0.0, 1.0);
-  const float f = clamp(l.reflectance, 0.0, 1.0), f_exit = clamp(l.exit_reflectance, 0.0, 1.0);
+  const float f = clamp(l.reflectance, 0.0, 1.0);
   const vec3 diffuse = (1.0 - f) * (1.0 - t) * l.albedo * 0.318309886 * l.irradiance;
   SurfaceLayer s;
   s.radiance = a * (f * l.environment + diffuse + l.emissive);
-  s.transmittance = vec3(1.0 - a) + a * (1.0 - f) * t * l.albedo * l.path_transmittance * (1.0 - f_exit);
+  s.transmittance = vec3(1.0 - a) + a * (1.0 - f) * t * l.albedo * l.path_transmittance;
   return s;
 }
 

@@ -86,9 +86,9 @@ void main() {
   l.irradiance = surface_irradiance(world_position, n);
   l.environment = translucency.environment.rgb;
   l.reflectance = interface_reflectance(object.translucency.z, cos_view);
-  l.exit_reflectance = int(object.attenuation.w) == kVolumeThinWalled ? 0.0 : l.reflectance;
-  const float inside = inside_path(cos_view, distance_to_fragment);
-  l.path_transmittance = exp(-object.attenuation.rgb * inside);
+  const float inside = inside_path(cos_view, distance_to_fragment);  // along the view ray (refraction's offset needs it)
+  const bool solid = int(object.attenuation.w) == kVolumeSolid;
+  l.path_transmittance = exp(-object.attenuation.rgb * (solid ? solid_path_length(inside, object.translucency.z, cos_view) : inside));
   SurfaceLayer layer = surface_layer(l);
   const float z = view_depth_of(gl_FragCoord.z);
   const vec2 uv = gl_FragCoord.xy / vec2(textureSize(sampler2D(scene_depth, nearest), 0));
