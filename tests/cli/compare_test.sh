@@ -14,6 +14,10 @@
 #                                                       with its error, the sweep goes on, exit 1
 #   compare_test.sh VOLGRAPH sweep_bad SOURCE_DIR       a broken spec: exit 2, one message naming the pointer
 #   compare_test.sh VOLGRAPH shipped SPEC               a shipped sweep spec runs at 32x18, one run
+#   compare_test.sh VOLGRAPH sweep_identity SOURCE_DIR  a folder is one spec's at one set of settings: another
+#                                                       spec's run, tune or merge is refused (exit 2, naming both);
+#                                                       a merge without SPEC reports the folders' figures; the
+#                                                       jobs of --emit-jobs keep --size and --runs
 #   compare_test.sh VOLGRAPH tune SOURCE_DIR            tune on a sweep whose answer is known (a fixture folder)
 set -uo pipefail
 volgraph=$1 mode=$2 arg=${3:-}
@@ -151,6 +155,27 @@ PY
     "$volgraph" sweep "$arg" --size 32x18 --runs 1 --warmup 0 -o "$tmp/s" >"$tmp/out" 2>"$tmp/err" || fail "exit $?: $(tail -c 3000 "$tmp/err")"
     grep -q " 0 failed" "$tmp/out" || fail "$(cat "$tmp/out")"
     grep -q '"pareto": true' "$tmp/s/results.json" || fail "no point on the Pareto front"
+    ;;
+  sweep_identity)
+    tiny_spec "8, 16"
+    cp "$tmp/tiny.json" "$tmp/other.json"
+    "$volgraph" sweep "$tmp/tiny.json" --size 16x9 -o "$tmp/a" >"$tmp/out" 2>"$tmp/err" || fail "sweep: $(cat "$tmp/err")"
+    expect_exit 2 "measured with other settings" "$volgraph" sweep "$tmp/other.json" --size 16x9 -o "$tmp/a"
+    grep -q "tiny.json against .*other.json" "$tmp/err" || fail "the refusal does not name both specs: $(cat "$tmp/err")"
+    expect_exit 2 "measured with other settings" "$volgraph" tune "$tmp/other.json" --size 16x9 --max-error 1 -o "$tmp/a"
+    [ -e "$tmp/a/tuned.txt" ] && fail "tune wrote another spec's choice"
+    "$volgraph" sweep "$tmp/other.json" --size 16x9 -o "$tmp/b" >"$tmp/out" 2>"$tmp/err" || fail "sweep b: $(cat "$tmp/err")"
+    expect_exit 2 "holds another sweep" "$volgraph" sweep --merge "$tmp/a" --merge "$tmp/b" -o "$tmp/m"
+    grep -q "tiny.json against .*other.json" "$tmp/err" || fail "the merge refusal does not name both: $(cat "$tmp/err")"
+    expect_exit 2 "holds another sweep" "$volgraph" sweep "$tmp/tiny.json" --merge "$tmp/a" -o "$tmp/m"  # SPEC at 32x18
+    [ -z "$(ls -A "$tmp/m" 2>/dev/null)" ] || fail "a refused merge left files: $(ls -A "$tmp/m")"
+    "$volgraph" sweep --merge "$tmp/a" -o "$tmp/m" >"$tmp/out" 2>"$tmp/err" || fail "merge without SPEC: $(cat "$tmp/err")"
+    grep -q "16x9, median of 1 frames after 0 warm-up" "$tmp/m/results.md" || fail "results.md misstates: $(head -3 "$tmp/m/results.md")"
+    [ "$(json_value "$tmp/m/results.json" "j['size'], j['runs'], j['spec_points']")" = "[16, 9] 1 2" ] ||
+      fail "results.json misstates the sweep: $(head -c 600 "$tmp/m/results.json")"
+    "$volgraph" sweep "$tmp/tiny.json" --size 16x9 --runs 2 --emit-jobs -o "$tmp/j" >"$tmp/out" 2>"$tmp/err" || fail "emit: $(cat "$tmp/err")"
+    bash -c "$(head -n 1 "$tmp/j/jobs.txt")" >"$tmp/out" 2>"$tmp/err" || fail "a job of a sweep emitted with --size failed: $(cat "$tmp/err")"
+    [ "$(json_value "$tmp/j/points/$(ls "$tmp/j/points" | head -n 1)" "j['timing']['runs']")" = 2 ] || fail "the job dropped --runs 2"
     ;;
   tune)
     tiny_spec "8, 16"
