@@ -221,6 +221,18 @@ std::string version_text() {
 #endif
 }
 
+// Every file ab writes into -o DIR (ab_report_files), for check_outputs_not_inputs.
+std::vector<std::string> ab_output_names() {
+  std::vector<std::string> names = {"report.json", "report.html"};
+  for (const char* stem : {"a", "b", "reference"}) {
+    for (const char* ext : {".png", ".pfm"}) names.push_back(std::string(stem) + ext);
+  }
+  for (const char* pair : {"b_vs_a", "a_vs_reference", "b_vs_reference"}) {
+    for (const char* map : {"error_", "flip_"}) names.push_back(std::string(map) + pair + ".png");
+  }
+  return names;
+}
+
 }  // namespace
 
 int run_ab(const Args& args, const PassRegistry& registry) {
@@ -233,6 +245,8 @@ int run_ab(const Args& args, const PassRegistry& registry) {
     throw UsageError("--reference expects cpu or a .pfm image, got \"" + c.reference + "\"");
   }
   prepare_output_folder(args.output, false);  // created once the settings load
+  check_outputs_not_inputs({{"the config", args.config}, {"--a-graph", c.a_graph}, {"--b-graph", c.b_graph}, {"--reference", c.reference}},
+                           "-o", args.output, ab_output_names());
   const Extent size = size_of(args, registry);
   Side a = load_side(args, registry, "--a", c.a, c.a_graph, size);
   Side b = load_side(args, registry, "--b", c.b, c.b_graph, size);
@@ -415,6 +429,17 @@ SweepSpec spec_of_folders(const std::string& identity, const PassRegistry& regis
   return spec;
 }
 
+// Every file a sweep, its jobs, a merge or tune writes into -o DIR is none of the spec's
+// inputs (the spec, its config, its reference image, its points' graphs).
+void check_sweep_outputs(const SweepSpec& spec, const std::string& dir) {
+  std::vector<NamedInput> inputs = {{"the spec", spec.file}, {"the spec's config", spec.config}, {"the spec's reference", spec.reference}};
+  for (const SweepPoint& p : spec.points) inputs.push_back({"the graph of point " + p.id, p.graph});
+  std::vector<std::string> names = {"results.json", "results.csv", "results.md", "report.html", "pareto.svg", "pareto.png",
+                                    "sweep_settings.txt", "jobs.txt", "manifest.json", "tuned.json", "tuned.txt"};
+  if (spec.reference == "cpu") names.push_back("reference.pfm");  // the kept CPU reference
+  check_outputs_not_inputs(inputs, "-o", dir, names, {"points"});
+}
+
 const SweepPoint& point_named(const SweepSpec& spec, const std::string& id) {
   for (const SweepPoint& p : spec.points) {
     if (p.id == id) return p;
@@ -448,6 +473,7 @@ int run_sweep_command(const Args& args, const PassRegistry& registry) {
     prepare_output_folder(args.output);
     std::optional<SweepSpec> spec;
     if (!args.config.empty()) spec = sweep_spec_for(args, registry);
+    if (spec) check_sweep_outputs(*spec, args.output);
     // One sweep a folder: the folders (and SPEC) must agree; the merged folder is theirs.
     const std::string identity = common_sweep_identity(c.merge, args.output, spec ? &*spec : nullptr);
     if (!spec) spec = spec_of_folders(identity, registry);
@@ -458,6 +484,7 @@ int run_sweep_command(const Args& args, const PassRegistry& registry) {
   }
   if (args.config.empty()) throw UsageError("sweep needs a SPEC file (configs/sweeps/*.json)");
   const SweepSpec spec = sweep_spec_for(args, registry);
+  check_sweep_outputs(spec, args.output);
   prepare_output_folder(args.output);
   claim_sweep_folder(spec, args.output);
   if (c.emit_jobs) {
@@ -499,6 +526,7 @@ int run_tune(const Args& args, const PassRegistry& registry) {
   if (!is_metric_name(metric) || !metric_lower_is_better(metric)) {
     throw UsageError("--metric expects an error metric (lower is better: rmse, rel_rmse, flip, max_abs, rel_mean), got \"" + metric + "\"");
   }
+  check_sweep_outputs(spec, args.output);
   prepare_output_folder(args.output);
   claim_sweep_folder(spec, args.output);
   if (read_results(args.output).size() < spec.points.size()) {  // runs what the folder lacks, else reads it

@@ -18,6 +18,9 @@
 #                                                       spec's run, tune or merge is refused (exit 2, naming both);
 #                                                       a merge without SPEC reports the folders' figures; the
 #                                                       jobs of --emit-jobs keep --size and --runs
+#   compare_test.sh VOLGRAPH outputs_not_inputs SOURCE_DIR  an input inside -o DIR under an output's name (a spec
+#                                                       results.json, a config report.json, tuned.json, a link to
+#                                                       one) is refused, exit 2, and left as it was
 #   compare_test.sh VOLGRAPH tune SOURCE_DIR            tune on a sweep whose answer is known (a fixture folder)
 set -uo pipefail
 volgraph=$1 mode=$2 arg=${3:-}
@@ -176,6 +179,32 @@ PY
     "$volgraph" sweep "$tmp/tiny.json" --size 16x9 --runs 2 --emit-jobs -o "$tmp/j" >"$tmp/out" 2>"$tmp/err" || fail "emit: $(cat "$tmp/err")"
     bash -c "$(head -n 1 "$tmp/j/jobs.txt")" >"$tmp/out" 2>"$tmp/err" || fail "a job of a sweep emitted with --size failed: $(cat "$tmp/err")"
     [ "$(json_value "$tmp/j/points/$(ls "$tmp/j/points" | head -n 1)" "j['timing']['runs']")" = 2 ] || fail "the job dropped --runs 2"
+    ;;
+  outputs_not_inputs)
+    tiny_spec "8, 16"
+    mkdir -p "$tmp/o" "$tmp/elsewhere"
+    for name in results.json tuned.json manifest.json sweep_settings.txt; do
+      cp "$tmp/tiny.json" "$tmp/o/$name"
+      expect_exit 2 "would overwrite the spec" "$volgraph" sweep "$tmp/o/$name" --size 16x9 -o "$tmp/o"
+      cmp -s "$tmp/tiny.json" "$tmp/o/$name" || fail "the spec $name was overwritten"
+      rm "$tmp/o/$name"
+    done
+    cp "$tmp/tiny.json" "$tmp/o/tuned.json"
+    expect_exit 2 "would overwrite the spec" "$volgraph" tune "$tmp/o/tuned.json" --max-error 1 -o "$tmp/o"
+    expect_exit 2 "would overwrite the spec" "$volgraph" sweep "$tmp/o/tuned.json" --emit-jobs -o "$tmp/o/../o"
+    ln -s "$tmp/o/tuned.json" "$tmp/elsewhere/spec.json"  # another name of the same file
+    expect_exit 2 "would overwrite the spec" "$volgraph" tune "$tmp/elsewhere/spec.json" --max-error 1 -o "$tmp/o"
+    cmp -s "$tmp/tiny.json" "$tmp/o/tuned.json" || fail "tune overwrote its spec"
+    rm -r "$tmp/o"; mkdir -p "$tmp/o/points"
+    cp "$tmp/tiny.json" "$tmp/o/points/spec.json"
+    expect_exit 2 "would overwrite the spec" "$volgraph" sweep "$tmp/o/points/spec.json" -o "$tmp/o"
+    sed "s|$arg/configs/demo_fog.json|$tmp/o/results.md|" "$tmp/tiny.json" >"$tmp/cfg_in_o.json"
+    cp "$arg/configs/demo_fog.json" "$tmp/o/results.md"
+    cp -r "$arg/configs/graphs" "$tmp/o/graphs"  # what the config includes
+    expect_exit 2 "would overwrite the spec's config" "$volgraph" sweep "$tmp/cfg_in_o.json" -o "$tmp/o"
+    cp "$arg/configs/demo_fog.json" "$tmp/o/report.json"
+    expect_exit 2 "would overwrite the config" "$volgraph" ab "$tmp/o/report.json" --pass fog_integral --a wronski --b hillaire -o "$tmp/o"
+    cmp -s "$arg/configs/demo_fog.json" "$tmp/o/report.json" || fail "ab overwrote its config"
     ;;
   tune)
     tiny_spec "8, 16"

@@ -16,6 +16,7 @@
 #include "graph/diagnostics.h"
 #include "tools/compare/sweep_folder.h"
 #include "tools/compare/sweep_results.h"
+#include "tools/output_files.h"
 
 namespace volgraph::compare {
 namespace {
@@ -354,6 +355,27 @@ TEST(SweepFolder, MergeTakesOneSweepAndReadsItsFigures) {
   EXPECT_THROW(common_sweep_identity({a.path}, out.path, nullptr), ConfigError);
   TempDir empty;
   EXPECT_THROW(common_sweep_identity({a.path, empty.path}, out.path, nullptr), ConfigError);
+}
+
+// No output may be an input: the same file by another name ("..", a link) is caught, a
+// file of the output folder with no output's name is not.
+TEST(OutputsNotInputs, ComparesCanonicalPaths) {
+  TempDir dir;
+  const std::filesystem::path out(dir.path);
+  std::filesystem::create_directories(out / "sub" / "points");
+  std::ofstream(out / "sub" / "results.json") << "{}";
+  std::filesystem::create_symlink(out / "sub" / "results.json", out / "link.json");
+  const std::string sub = (out / "sub").string();
+  const std::vector<std::string> names = {"results.json"};
+  EXPECT_THROW(check_outputs_not_inputs({{"the spec", sub + "/results.json"}}, "-o", sub, names), ConfigError);
+  EXPECT_THROW(check_outputs_not_inputs({{"the spec", (out / "link.json").string()}}, "-o", dir.path + "/sub/../sub", names), ConfigError);
+  EXPECT_THROW(check_outputs_not_inputs({{"the spec", sub + "/points/x.json"}}, "-o", sub, names, {"points"}), ConfigError);
+  EXPECT_NO_THROW(check_outputs_not_inputs({{"the spec", sub + "/spec.json"}, {"none", ""}, {"ref", "cpu"}}, "-o", sub, names, {"points"}));
+  try {
+    check_outputs_not_inputs({{"the spec", sub + "/results.json"}}, "-o", sub, names);
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("would overwrite the spec"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
