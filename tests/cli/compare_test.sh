@@ -21,6 +21,8 @@
 #   compare_test.sh VOLGRAPH outputs_not_inputs SOURCE_DIR  an input inside -o DIR under an output's name (a spec
 #                                                       results.json, a config report.json, tuned.json, a link to
 #                                                       one) is refused, exit 2, and left as it was
+#   compare_test.sh VOLGRAPH bad_reference SOURCE_DIR  a reference with NaN or Inf, a FIFO, a PFM whose header
+#                                                       claims more than the file holds: exit 2, no report
 #   compare_test.sh VOLGRAPH tune SOURCE_DIR            tune on a sweep whose answer is known (a fixture folder)
 set -uo pipefail
 volgraph=$1 mode=$2 arg=${3:-}
@@ -205,6 +207,26 @@ PY
     cp "$arg/configs/demo_fog.json" "$tmp/o/report.json"
     expect_exit 2 "would overwrite the config" "$volgraph" ab "$tmp/o/report.json" --pass fog_integral --a wronski --b hillaire -o "$tmp/o"
     cmp -s "$arg/configs/demo_fog.json" "$tmp/o/report.json" || fail "ab overwrote its config"
+    ;;
+  bad_reference)
+    tiny_spec "8, 16"
+    # pfm FILE W H VALUE [HEADER_ONLY]: a colour PFM of one value (nan, inf, 0.5), or its header alone.
+    pfm() { python3 -c "import struct,sys; w,h=int(sys.argv[2]),int(sys.argv[3]); f=open(sys.argv[1],'wb'); f.write(b'PF\\n%d %d\\n-1.0\\n'%(w,h));
+if len(sys.argv)<6: f.write(struct.pack('<f',float(sys.argv[4]))*(w*h*3))" "$@"; }
+    config="$arg/configs/demo_fog.json"
+    for value in nan inf -inf; do
+      pfm "$tmp/ref.pfm" 16 9 "$value"
+      expect_exit 2 "non-finite value" "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire --size 16x9 --runs 1 --reference "$tmp/ref.pfm" -o "$tmp/ab"
+      expect_exit 2 "non-finite value" "$volgraph" tune "$tmp/tiny.json" --size 16x9 --reference "$tmp/ref.pfm" --max-error 1 -o "$tmp/t_$value"
+      [ -e "$tmp/t_$value/tuned.txt" ] && fail "tune accepted a $value reference"
+    done
+    python3 -c "import struct; open('$tmp/one.pfm','wb').write(b'PF\\n16 9\\n-1.0\\n' + struct.pack('<f', 0.5)*(16*9*3-1) + struct.pack('<f', float('nan')))"
+    expect_exit 2 "1 non-finite value(s) (NaN or Inf), the first at pixel (15, 0)" "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire --size 16x9 --runs 1 --reference "$tmp/one.pfm" -o "$tmp/ab"
+    mkfifo "$tmp/fifo.pfm"
+    expect_exit 2 "not a regular file" timeout 60 "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire --size 16x9 --runs 1 --reference "$tmp/fifo.pfm" -o "$tmp/ab"
+    pfm "$tmp/huge.pfm" 65536 65536 0 header-only
+    expect_exit 2 "truncated: its header says 65536x65536" "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire --size 16x9 --runs 1 --reference "$tmp/huge.pfm" -o "$tmp/ab"
+    [ -z "$(ls -A "$tmp/ab" 2>/dev/null)" ] || fail "a refused reference left a report: $(ls -A "$tmp/ab")"
     ;;
   tune)
     tiny_spec "8, 16"
