@@ -22,6 +22,7 @@
 #include "tools/compare/interrupt_guard.h"
 #include "tools/compare/metrics.h"
 #include "tools/compare/render_setting.h"
+#include "tools/compare/sweep_folder.h"
 #include "tools/compare/sweep_results.h"
 #include "tools/compare/sweep_spec.h"
 #include "tools/compare/tune.h"
@@ -220,6 +221,18 @@ std::string version_text() {
 #endif
 }
 
+// Every file ab writes into -o DIR (ab_report_files), for check_outputs_not_inputs.
+std::vector<std::string> ab_output_names() {
+  std::vector<std::string> names = {"report.json", "report.html"};
+  for (const char* stem : {"a", "b", "reference"}) {
+    for (const char* ext : {".png", ".pfm"}) names.push_back(std::string(stem) + ext);
+  }
+  for (const char* pair : {"b_vs_a", "a_vs_reference", "b_vs_reference"}) {
+    for (const char* map : {"error_", "flip_"}) names.push_back(std::string(map) + pair + ".png");
+  }
+  return names;
+}
+
 }  // namespace
 
 int run_ab(const Args& args, const PassRegistry& registry) {
@@ -232,6 +245,8 @@ int run_ab(const Args& args, const PassRegistry& registry) {
     throw UsageError("--reference expects cpu or a .pfm image, got \"" + c.reference + "\"");
   }
   prepare_output_folder(args.output, false);  // created once the settings load
+  check_outputs_not_inputs({{"the config", args.config}, {"--a-graph", c.a_graph}, {"--b-graph", c.b_graph}, {"--reference", c.reference}},
+                           "-o", args.output, ab_output_names());
   const Extent size = size_of(args, registry);
   Side a = load_side(args, registry, "--a", c.a, c.a_graph, size);
   Side b = load_side(args, registry, "--b", c.b, c.b_graph, size);
@@ -354,6 +369,13 @@ class SweepRunner {
     std::vector<std::string> words = {ec ? "volgraph" : self, "sweep", fs::absolute(spec.file).string(), "--point", id, "-o",
                                       fs::absolute(dir).string()};
     if (args.validation) words.push_back("--validation");
+    // The command line's overrides travel with each job: its spec is the one the folder holds.
+    const CompareArgs& c = args.compare;
+    if (args.overrides.size) words.insert(words.end(), {"--size", std::to_string(args.overrides.size->width) + "x" + std::to_string(args.overrides.size->height)});
+    if (c.runs) words.insert(words.end(), {"--runs", std::to_string(*c.runs)});
+    if (c.warmup) words.insert(words.end(), {"--warmup", std::to_string(*c.warmup)});
+    if (!c.backend.empty()) words.insert(words.end(), {"--backend", c.backend});
+    if (!c.reference.empty()) words.insert(words.end(), {"--reference", c.reference == "cpu" ? c.reference : fs::absolute(c.reference).string()});
     return shell_command(words);
   }
 
@@ -394,31 +416,28 @@ SweepSpec sweep_spec_for(const Args& args, const PassRegistry& registry) {
   return spec;
 }
 
-// What a sweep folder's points were measured with; a folder holds one sweep's points.
-std::string sweep_settings_text(const SweepSpec& spec) {
-  std::ostringstream o;
-  o << "config " << fs::absolute(spec.config).lexically_normal().string() << "\nsize " << spec.size.width << "x" << spec.size.height
-    << "\nruns " << spec.runs << "\nwarmup " << spec.warmup << "\nframes " << spec.frames << "\nbackend " << spec.backend
-    << "\nreference " << spec.reference << "\nmetric " << spec.metric << "\nmask " << spec.mask << "\n";
-  return o.str();
+// A merge without SPEC: the folders' spec and settings, with the spec's points (for their
+// order and count) when the file named is still there to read.
+SweepSpec spec_of_folders(const std::string& identity, const PassRegistry& registry) {
+  SweepSpec spec = spec_of_identity(identity);
+  try {
+    const SweepSpec read = read_sweep_spec(spec.file, registry);
+    spec.description = read.description;
+    spec.points = read.points;
+  } catch (const std::exception&) {  // moved or changed since: the points keep their id order
+  }
+  return spec;
 }
 
-// DIR/sweep_settings.txt: written by the first run, checked by every later one, so that a
-// resumed sweep never mixes points measured another way.
-void check_sweep_folder(const SweepSpec& spec, const std::string& dir) {
-  const std::string file = (fs::path(dir) / "sweep_settings.txt").string();
-  const std::string now = sweep_settings_text(spec);
-  std::ifstream in(file);
-  if (!in) {
-    write_file_checked(file, std::as_bytes(std::span(now)));
-    return;
-  }
-  std::ostringstream held;
-  held << in.rdbuf();
-  if (held.str() == now) return;
-  throw ConfigError({{{"<command line>", "-o " + dir, 0},
-                      "holds the points of a sweep measured with other settings (" + file +
-                          "); expected an empty folder or the same spec, size, runs, backend and reference"}});
+// Every file a sweep, its jobs, a merge or tune writes into -o DIR is none of the spec's
+// inputs (the spec, its config, its reference image, its points' graphs).
+void check_sweep_outputs(const SweepSpec& spec, const std::string& dir) {
+  std::vector<NamedInput> inputs = {{"the spec", spec.file}, {"the spec's config", spec.config}, {"the spec's reference", spec.reference}};
+  for (const SweepPoint& p : spec.points) inputs.push_back({"the graph of point " + p.id, p.graph});
+  std::vector<std::string> names = {"results.json", "results.csv", "results.md", "report.html", "pareto.svg", "pareto.png",
+                                    "sweep_settings.txt", "jobs.txt", "manifest.json", "tuned.json", "tuned.txt"};
+  if (spec.reference == "cpu") names.push_back("reference.pfm");  // the kept CPU reference
+  check_outputs_not_inputs(inputs, "-o", dir, names, {"points"});
 }
 
 const SweepPoint& point_named(const SweepSpec& spec, const std::string& id) {
@@ -453,15 +472,21 @@ int run_sweep_command(const Args& args, const PassRegistry& registry) {
   if (!c.merge.empty()) {
     prepare_output_folder(args.output);
     std::optional<SweepSpec> spec;
-    if (!args.config.empty()) spec = read_sweep_spec(args.config, registry);
-    merge_results(c.merge, args.output, spec ? &*spec : nullptr);
+    if (!args.config.empty()) spec = sweep_spec_for(args, registry);
+    if (spec) check_sweep_outputs(*spec, args.output);
+    // One sweep a folder: the folders (and SPEC) must agree; the merged folder is theirs.
+    const std::string identity = common_sweep_identity(c.merge, args.output, spec ? &*spec : nullptr);
+    if (!spec) spec = spec_of_folders(identity, registry);
+    claim_sweep_folder(*spec, args.output);
+    merge_results(c.merge, args.output, &*spec);
     std::cout << "sweep: merged " << c.merge.size() << " folder(s) into " << args.output << "\n";
     return kOk;
   }
   if (args.config.empty()) throw UsageError("sweep needs a SPEC file (configs/sweeps/*.json)");
   const SweepSpec spec = sweep_spec_for(args, registry);
+  check_sweep_outputs(spec, args.output);
   prepare_output_folder(args.output);
-  check_sweep_folder(spec, args.output);
+  claim_sweep_folder(spec, args.output);
   if (c.emit_jobs) {
     sweep_reference(args, spec, sweep_base(registry, spec), args.output);  // DIR/reference.pfm once, for every job; no device
     write_jobs(args.output, spec, [&](const SweepPoint& p) { return SweepRunner::job_command(args, spec, p.id, args.output); });
@@ -501,8 +526,9 @@ int run_tune(const Args& args, const PassRegistry& registry) {
   if (!is_metric_name(metric) || !metric_lower_is_better(metric)) {
     throw UsageError("--metric expects an error metric (lower is better: rmse, rel_rmse, flip, max_abs, rel_mean), got \"" + metric + "\"");
   }
+  check_sweep_outputs(spec, args.output);
   prepare_output_folder(args.output);
-  check_sweep_folder(spec, args.output);
+  claim_sweep_folder(spec, args.output);
   if (read_results(args.output).size() < spec.points.size()) {  // runs what the folder lacks, else reads it
     InterruptGuard interrupt;
     SweepRunner runner(args, registry, spec, args.output);

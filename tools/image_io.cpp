@@ -120,8 +120,17 @@ void write_image(const std::string& path, const Image& image, const std::string&
 }
 
 Image read_pfm(const std::string& path) {
+  // Only a regular file: opening a FIFO or a device would block or never end.
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) fail("pfm", path, "no such file");
+  if (!std::filesystem::is_regular_file(status)) fail("pfm", path, "is not a regular file (a folder, FIFO or device); expected a .pfm file");
+  const uintmax_t file_bytes = std::filesystem::file_size(path, ec);
   FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) fail("pfm", path, "cannot open it");
+  if (!f || ec) {
+    if (f) std::fclose(f);
+    fail("pfm", path, "cannot open it");
+  }
   char kind[3] = {};
   unsigned w = 0, h = 0;
   float scale = 0;
@@ -130,6 +139,14 @@ Image read_pfm(const std::string& path) {
   if (!header || std::string(kind) != "PF" || scale >= 0 || w == 0 || h == 0 || w > 65536 || h > 65536) {
     std::fclose(f);
     fail("pfm", path, "not a little-endian colour PFM");
+  }
+  // The header's size against the file's before any allocation: a header may claim 65536².
+  const uintmax_t pixel_bytes = uintmax_t(w) * h * 3 * sizeof(float);
+  const long header_bytes = std::ftell(f);
+  if (header_bytes < 0 || file_bytes < uintmax_t(header_bytes) + pixel_bytes) {
+    std::fclose(f);
+    fail("pfm", path, "truncated: its header says " + std::to_string(w) + "x" + std::to_string(h) + " (" +
+                          std::to_string(uintmax_t(header_bytes) + pixel_bytes) + " bytes), the file holds " + std::to_string(file_bytes));
   }
   image.width = w;
   image.height = h;

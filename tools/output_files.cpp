@@ -40,6 +40,32 @@ void check_output_target(const std::string& path, const std::string& flag) {
   }
 }
 
+std::string canonical_path_text(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+  return ec ? std::filesystem::path(path).lexically_normal().string() : canonical.string();
+}
+
+void check_outputs_not_inputs(const std::vector<NamedInput>& inputs, const std::string& flag, const std::string& dir,
+                              const std::vector<std::string>& names, const std::vector<std::string>& folders) {
+  const std::filesystem::path out(canonical_path_text(dir));
+  for (const NamedInput& input : inputs) {
+    if (input.path.empty() || input.path == "cpu") continue;
+    const std::filesystem::path in(canonical_path_text(input.path));
+    std::string clash;
+    for (const std::string& name : names) {
+      if (in == out / name) clash = (std::filesystem::path(dir) / name).string();
+    }
+    for (const std::string& folder : folders) {
+      if (in.parent_path() == out / folder) clash = (std::filesystem::path(dir) / folder).string() + "/";
+    }
+    if (clash.empty()) continue;
+    throw ConfigError({{{"<command line>", flag + " " + dir, 0},
+                        "would overwrite " + input.what + " " + input.path + " (it is the output " + clash +
+                            "); expected an output folder whose outputs are not inputs"}});
+  }
+}
+
 OutputFiles::~OutputFiles() {
   std::error_code ec;
   for (const Staged& s : staged_) std::filesystem::remove(s.temporary, ec);

@@ -29,6 +29,19 @@ void write_file_checked(const std::string& path, std::span<const std::byte> byte
 // Throws ConfigError at `flag` (e.g. "-o") with what is wrong.
 void check_output_target(const std::string& path, const std::string& flag);
 
+// A file the command reads, and what it is to the user ("the spec", "--reference").
+struct NamedInput {
+  std::string what, path;
+};
+// `path` with its folders resolved (symbolic links, "..") so that two names of one file
+// compare equal; the parts that do not exist yet are kept as written.
+std::string canonical_path_text(const std::string& path);
+// No output may be an input (DESIGN.md: an input overwritten is lost): throws ConfigError
+// at `flag DIR` naming both when an input is one of the files `names` in DIR, or lies in
+// one of the folders `folders` of DIR (e.g. points), compared as canonical paths.
+void check_outputs_not_inputs(const std::vector<NamedInput>& inputs, const std::string& flag, const std::string& dir,
+                              const std::vector<std::string>& names, const std::vector<std::string>& folders = {});
+
 class OutputFiles {
  public:
   OutputFiles() = default;

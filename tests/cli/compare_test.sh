@@ -14,6 +14,15 @@
 #                                                       with its error, the sweep goes on, exit 1
 #   compare_test.sh VOLGRAPH sweep_bad SOURCE_DIR       a broken spec: exit 2, one message naming the pointer
 #   compare_test.sh VOLGRAPH shipped SPEC               a shipped sweep spec runs at 32x18, one run
+#   compare_test.sh VOLGRAPH sweep_identity SOURCE_DIR  a folder is one spec's at one set of settings: another
+#                                                       spec's run, tune or merge is refused (exit 2, naming both);
+#                                                       a merge without SPEC reports the folders' figures; the
+#                                                       jobs of --emit-jobs keep --size and --runs
+#   compare_test.sh VOLGRAPH outputs_not_inputs SOURCE_DIR  an input inside -o DIR under an output's name (a spec
+#                                                       results.json, a config report.json, tuned.json, a link to
+#                                                       one) is refused, exit 2, and left as it was
+#   compare_test.sh VOLGRAPH bad_reference SOURCE_DIR  a reference with NaN or Inf, a FIFO, a PFM whose header
+#                                                       claims more than the file holds: exit 2, no report
 #   compare_test.sh VOLGRAPH tune SOURCE_DIR            tune on a sweep whose answer is known (a fixture folder)
 set -uo pipefail
 volgraph=$1 mode=$2 arg=${3:-}
@@ -151,6 +160,73 @@ PY
     "$volgraph" sweep "$arg" --size 32x18 --runs 1 --warmup 0 -o "$tmp/s" >"$tmp/out" 2>"$tmp/err" || fail "exit $?: $(tail -c 3000 "$tmp/err")"
     grep -q " 0 failed" "$tmp/out" || fail "$(cat "$tmp/out")"
     grep -q '"pareto": true' "$tmp/s/results.json" || fail "no point on the Pareto front"
+    ;;
+  sweep_identity)
+    tiny_spec "8, 16"
+    cp "$tmp/tiny.json" "$tmp/other.json"
+    "$volgraph" sweep "$tmp/tiny.json" --size 16x9 -o "$tmp/a" >"$tmp/out" 2>"$tmp/err" || fail "sweep: $(cat "$tmp/err")"
+    expect_exit 2 "measured with other settings" "$volgraph" sweep "$tmp/other.json" --size 16x9 -o "$tmp/a"
+    grep -q "tiny.json against .*other.json" "$tmp/err" || fail "the refusal does not name both specs: $(cat "$tmp/err")"
+    expect_exit 2 "measured with other settings" "$volgraph" tune "$tmp/other.json" --size 16x9 --max-error 1 -o "$tmp/a"
+    [ -e "$tmp/a/tuned.txt" ] && fail "tune wrote another spec's choice"
+    "$volgraph" sweep "$tmp/other.json" --size 16x9 -o "$tmp/b" >"$tmp/out" 2>"$tmp/err" || fail "sweep b: $(cat "$tmp/err")"
+    expect_exit 2 "holds another sweep" "$volgraph" sweep --merge "$tmp/a" --merge "$tmp/b" -o "$tmp/m"
+    grep -q "tiny.json against .*other.json" "$tmp/err" || fail "the merge refusal does not name both: $(cat "$tmp/err")"
+    expect_exit 2 "holds another sweep" "$volgraph" sweep "$tmp/tiny.json" --merge "$tmp/a" -o "$tmp/m"  # SPEC at 32x18
+    [ -z "$(ls -A "$tmp/m" 2>/dev/null)" ] || fail "a refused merge left files: $(ls -A "$tmp/m")"
+    "$volgraph" sweep --merge "$tmp/a" -o "$tmp/m" >"$tmp/out" 2>"$tmp/err" || fail "merge without SPEC: $(cat "$tmp/err")"
+    grep -q "16x9, median of 1 frames after 0 warm-up" "$tmp/m/results.md" || fail "results.md misstates: $(head -3 "$tmp/m/results.md")"
+    [ "$(json_value "$tmp/m/results.json" "j['size'], j['runs'], j['spec_points']")" = "[16, 9] 1 2" ] ||
+      fail "results.json misstates the sweep: $(head -c 600 "$tmp/m/results.json")"
+    "$volgraph" sweep "$tmp/tiny.json" --size 16x9 --runs 2 --emit-jobs -o "$tmp/j" >"$tmp/out" 2>"$tmp/err" || fail "emit: $(cat "$tmp/err")"
+    bash -c "$(head -n 1 "$tmp/j/jobs.txt")" >"$tmp/out" 2>"$tmp/err" || fail "a job of a sweep emitted with --size failed: $(cat "$tmp/err")"
+    [ "$(json_value "$tmp/j/points/$(ls "$tmp/j/points" | head -n 1)" "j['timing']['runs']")" = 2 ] || fail "the job dropped --runs 2"
+    ;;
+  outputs_not_inputs)
+    tiny_spec "8, 16"
+    mkdir -p "$tmp/o" "$tmp/elsewhere"
+    for name in results.json tuned.json manifest.json sweep_settings.txt; do
+      cp "$tmp/tiny.json" "$tmp/o/$name"
+      expect_exit 2 "would overwrite the spec" "$volgraph" sweep "$tmp/o/$name" --size 16x9 -o "$tmp/o"
+      cmp -s "$tmp/tiny.json" "$tmp/o/$name" || fail "the spec $name was overwritten"
+      rm "$tmp/o/$name"
+    done
+    cp "$tmp/tiny.json" "$tmp/o/tuned.json"
+    expect_exit 2 "would overwrite the spec" "$volgraph" tune "$tmp/o/tuned.json" --max-error 1 -o "$tmp/o"
+    expect_exit 2 "would overwrite the spec" "$volgraph" sweep "$tmp/o/tuned.json" --emit-jobs -o "$tmp/o/../o"
+    ln -s "$tmp/o/tuned.json" "$tmp/elsewhere/spec.json"  # another name of the same file
+    expect_exit 2 "would overwrite the spec" "$volgraph" tune "$tmp/elsewhere/spec.json" --max-error 1 -o "$tmp/o"
+    cmp -s "$tmp/tiny.json" "$tmp/o/tuned.json" || fail "tune overwrote its spec"
+    rm -r "$tmp/o"; mkdir -p "$tmp/o/points"
+    cp "$tmp/tiny.json" "$tmp/o/points/spec.json"
+    expect_exit 2 "would overwrite the spec" "$volgraph" sweep "$tmp/o/points/spec.json" -o "$tmp/o"
+    sed "s|$arg/configs/demo_fog.json|$tmp/o/results.md|" "$tmp/tiny.json" >"$tmp/cfg_in_o.json"
+    cp "$arg/configs/demo_fog.json" "$tmp/o/results.md"
+    cp -r "$arg/configs/graphs" "$tmp/o/graphs"  # what the config includes
+    expect_exit 2 "would overwrite the spec's config" "$volgraph" sweep "$tmp/cfg_in_o.json" -o "$tmp/o"
+    cp "$arg/configs/demo_fog.json" "$tmp/o/report.json"
+    expect_exit 2 "would overwrite the config" "$volgraph" ab "$tmp/o/report.json" --pass fog_integral --a wronski --b hillaire -o "$tmp/o"
+    cmp -s "$arg/configs/demo_fog.json" "$tmp/o/report.json" || fail "ab overwrote its config"
+    ;;
+  bad_reference)
+    tiny_spec "8, 16"
+    # pfm FILE W H VALUE [HEADER_ONLY]: a colour PFM of one value (nan, inf, 0.5), or its header alone.
+    pfm() { python3 -c "import struct,sys; w,h=int(sys.argv[2]),int(sys.argv[3]); f=open(sys.argv[1],'wb'); f.write(b'PF\\n%d %d\\n-1.0\\n'%(w,h));
+if len(sys.argv)<6: f.write(struct.pack('<f',float(sys.argv[4]))*(w*h*3))" "$@"; }
+    config="$arg/configs/demo_fog.json"
+    for value in nan inf -inf; do
+      pfm "$tmp/ref.pfm" 16 9 "$value"
+      expect_exit 2 "non-finite value" "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire --size 16x9 --runs 1 --reference "$tmp/ref.pfm" -o "$tmp/ab"
+      expect_exit 2 "non-finite value" "$volgraph" tune "$tmp/tiny.json" --size 16x9 --reference "$tmp/ref.pfm" --max-error 1 -o "$tmp/t_$value"
+      [ -e "$tmp/t_$value/tuned.txt" ] && fail "tune accepted a $value reference"
+    done
+    python3 -c "import struct; open('$tmp/one.pfm','wb').write(b'PF\\n16 9\\n-1.0\\n' + struct.pack('<f', 0.5)*(16*9*3-1) + struct.pack('<f', float('nan')))"
+    expect_exit 2 "1 non-finite value(s) (NaN or Inf), the first at pixel (15, 0)" "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire --size 16x9 --runs 1 --reference "$tmp/one.pfm" -o "$tmp/ab"
+    mkfifo "$tmp/fifo.pfm"
+    expect_exit 2 "not a regular file" timeout 60 "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire --size 16x9 --runs 1 --reference "$tmp/fifo.pfm" -o "$tmp/ab"
+    pfm "$tmp/huge.pfm" 65536 65536 0 header-only
+    expect_exit 2 "truncated: its header says 65536x65536" "$volgraph" ab "$config" --pass fog_integral --a wronski --b hillaire --size 16x9 --runs 1 --reference "$tmp/huge.pfm" -o "$tmp/ab"
+    [ -z "$(ls -A "$tmp/ab" 2>/dev/null)" ] || fail "a refused reference left a report: $(ls -A "$tmp/ab")"
     ;;
   tune)
     tiny_spec "8, 16"

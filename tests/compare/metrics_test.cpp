@@ -218,8 +218,23 @@ TEST(ErrorMetrics, AnEmptyMaskComparesNothing) {
   const ErrorMetrics m =
       measure_error(constant(8, 8, {1, 1, 1}), constant(8, 8, {0, 0, 0}), PixelMask(64, false));
   EXPECT_EQ(m.compared_pixels, 0u);
-  EXPECT_EQ(m.rmse, 0.0);
-  EXPECT_EQ(m.psnr_db, kInf);
+  EXPECT_TRUE(std::isnan(m.rmse));
+  EXPECT_TRUE(std::isnan(m.psnr_db));
+}
+
+// No figure turns NaN into a perfect score: a reference (or test) with no finite pixel
+// compares nothing, and every figure says so (NaN), never rel_rmse 0, PSNR inf, SSIM 1.
+TEST(ErrorMetrics, NonFiniteImagesAreNeverAPerfectMatch) {
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const RgbImage good = constant(8, 8, {0.5f, 0.5f, 0.5f});
+  for (const RgbImage& bad : {constant(8, 8, {nan, nan, nan}), constant(8, 8, {inf, inf, inf}), constant(8, 8, {nan, 0, -inf})}) {
+    for (const ErrorMetrics& m : {measure_error(good, bad), measure_error(bad, good), measure_error(bad, bad)}) {
+      EXPECT_EQ(m.compared_pixels, 0u);
+      for (const std::string& name : metric_names()) {
+        EXPECT_TRUE(std::isnan(metric_value(m, name))) << name << " = " << metric_value(m, name);
+      }
+    }
+  }
 }
 
 TEST(ErrorMetrics, APrecomputedFlipMapGivesTheSameFigures) {

@@ -13,7 +13,10 @@
 #include <stdexcept>
 
 #include "tests/compare/test_files.h"
+#include "graph/diagnostics.h"
+#include "tools/compare/sweep_folder.h"
 #include "tools/compare/sweep_results.h"
+#include "tools/output_files.h"
 
 namespace volgraph::compare {
 namespace {
@@ -284,6 +287,95 @@ TEST(SweepMerge, PointOfAnotherDeviceSplitsTheOutputsCopy) {
   EXPECT_TRUE(std::filesystem::exists(out.path + "/points/p0@" + device_hash("gpu X") + ".json"));
   EXPECT_TRUE(std::filesystem::exists(out.path + "/points/p0@" + device_hash("gpu Y") + ".json"));
   EXPECT_EQ(read_results(out.path).size(), 2u);
+}
+
+
+// A folder belongs to one sweep: another spec on the same config, or other settings, is
+// refused naming both; the same spec and settings resume.
+TEST(SweepFolder, RefusesAnotherSpecOrSettings) {
+  TempDir dir;
+  const SweepSpec first = spec_of(2);
+  claim_sweep_folder(first, dir.path);
+  EXPECT_NO_THROW(claim_sweep_folder(first, dir.path));
+  SweepSpec other_spec = first;
+  other_spec.file = "configs/sweeps/other.json";
+  try {
+    claim_sweep_folder(other_spec, dir.path);
+    FAIL() << "another spec's sweep was accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("fake.json against"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("other.json"), std::string::npos) << e.what();
+  }
+  for (auto change : {+[](SweepSpec& s) { s.runs = 9; }, +[](SweepSpec& s) { s.warmup = 3; },
+                      +[](SweepSpec& s) { s.size = {16, 9, 1}; }, +[](SweepSpec& s) { s.config = "configs/demo_x.json"; },
+                      +[](SweepSpec& s) { s.metric = "flip"; }, +[](SweepSpec& s) { s.mask = "fog_only"; }}) {
+    SweepSpec changed = first;
+    change(changed);
+    EXPECT_THROW(claim_sweep_folder(changed, dir.path), ConfigError);
+  }
+}
+
+// Points without a recorded sweep, or an empty record beside points: not a sweep folder
+// to add to. An empty record in an empty folder (a failed write) does not block a rerun.
+TEST(SweepFolder, PointsWithoutIdentityAreRefusedAnEmptyRecordIsNot) {
+  TempDir dir;
+  std::ofstream(std::filesystem::path(dir.path) / "sweep_settings.txt").close();
+  EXPECT_NO_THROW(claim_sweep_folder(spec_of(1), dir.path));
+  EXPECT_EQ(read(std::filesystem::path(dir.path) / "sweep_settings.txt"), sweep_identity_text(spec_of(1)));
+  TempDir bare;
+  save_point(bare.path, PointResult{"p0"});
+  EXPECT_THROW(claim_sweep_folder(spec_of(1), bare.path), ConfigError);
+  std::ofstream(std::filesystem::path(bare.path) / "sweep_settings.txt").close();
+  EXPECT_THROW(claim_sweep_folder(spec_of(1), bare.path), ConfigError);
+}
+
+// A merge takes the folders of one sweep; the SPEC given must be theirs; without SPEC the
+// figures (size, runs, warm-up) are the folders'.
+TEST(SweepFolder, MergeTakesOneSweepAndReadsItsFigures) {
+  TempDir a, b, c, out;
+  SweepSpec spec = spec_of(2);
+  spec.size = {32, 18, 1};
+  spec.runs = 3;
+  spec.warmup = 2;
+  claim_sweep_folder(spec, a.path);
+  claim_sweep_folder(spec, b.path);
+  SweepSpec other = spec;
+  other.file = "configs/sweeps/other.json";
+  claim_sweep_folder(other, c.path);
+  const std::string identity = common_sweep_identity({a.path, b.path}, out.path, nullptr);
+  EXPECT_EQ(identity, sweep_identity_text(spec));
+  const SweepSpec back = spec_of_identity(identity);
+  EXPECT_EQ(back.size, spec.size);
+  EXPECT_EQ(back.runs, 3);
+  EXPECT_EQ(back.warmup, 2);
+  EXPECT_EQ(sweep_identity_text(back), identity);
+  EXPECT_THROW(common_sweep_identity({a.path, c.path}, out.path, nullptr), ConfigError);
+  EXPECT_THROW(common_sweep_identity({a.path}, out.path, &other), ConfigError);
+  claim_sweep_folder(other, out.path);
+  EXPECT_THROW(common_sweep_identity({a.path}, out.path, nullptr), ConfigError);
+  TempDir empty;
+  EXPECT_THROW(common_sweep_identity({a.path, empty.path}, out.path, nullptr), ConfigError);
+}
+
+// No output may be an input: the same file by another name ("..", a link) is caught, a
+// file of the output folder with no output's name is not.
+TEST(OutputsNotInputs, ComparesCanonicalPaths) {
+  TempDir dir;
+  const std::filesystem::path out(dir.path);
+  std::filesystem::create_directories(out / "sub" / "points");
+  std::ofstream(out / "sub" / "results.json") << "{}";
+  std::filesystem::create_symlink(out / "sub" / "results.json", out / "link.json");
+  const std::string sub = (out / "sub").string();
+  const std::vector<std::string> names = {"results.json"};
+  EXPECT_THROW(check_outputs_not_inputs({{"the spec", sub + "/results.json"}}, "-o", sub, names), ConfigError);
+  EXPECT_THROW(check_outputs_not_inputs({{"the spec", (out / "link.json").string()}}, "-o", dir.path + "/sub/../sub", names), ConfigError);
+  EXPECT_THROW(check_outputs_not_inputs({{"the spec", sub + "/points/x.json"}}, "-o", sub, names, {"points"}), ConfigError);
+  EXPECT_NO_THROW(check_outputs_not_inputs({{"the spec", sub + "/spec.json"}, {"none", ""}, {"ref", "cpu"}}, "-o", sub, names, {"points"}));
+  try {
+    check_outputs_not_inputs({{"the spec", sub + "/results.json"}}, "-o", sub, names);
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("would overwrite the spec"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

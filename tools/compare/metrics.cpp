@@ -80,6 +80,14 @@ double mean_over(const std::vector<float>& map, const std::vector<bool>& compare
   return sum / double(compared_pixels);
 }
 
+// Nothing compared (an empty mask, no pixel finite in both images) is no match at all:
+// every figure NaN, never the 0 error, infinite PSNR and SSIM 1 of a perfect one.
+ErrorMetrics nothing_compared(ErrorMetrics m) {
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  m.rmse = m.relative_rmse = m.psnr_db = m.ssim = m.flip = m.max_abs_error = m.relative_mean_error = none;
+  return m;
+}
+
 // Every figure but FLIP; `compared` returns which pixels entered them.
 ErrorMetrics measure_without_flip(const RgbImage& test, const RgbImage& reference, const PixelMask& mask,
                                   std::vector<bool>& compared) {
@@ -107,10 +115,7 @@ ErrorMetrics measure_without_flip(const RgbImage& test, const RgbImage& referenc
       ++s.values;
     }
   }
-  if (m.compared_pixels == 0) {
-    m.psnr_db = kInfinity;
-    return m;
-  }
+  if (m.compared_pixels == 0) return nothing_compared(m);
   m.rmse = std::sqrt(s.squared_error / double(s.values));
   m.relative_rmse = ratio(m.rmse, std::sqrt(s.squared_reference / double(s.values)));
   m.max_abs_error = s.max_abs_error;

@@ -27,7 +27,8 @@ struct ErrorMetrics {
 
 // The figures over the pixels of `mask` (every pixel when it is empty). Pixels where
 // the test image is not finite are counted (nan_values, inf_values) and left out of
-// the other figures (so are pixels where the reference is not finite, uncounted).
+// the other figures (so are pixels where the reference is not finite, uncounted). When no
+// pixel is compared every figure is NaN: no comparison is never a perfect score.
 // Throws std::invalid_argument when the image sizes differ or the mask is neither empty
 // nor one value a pixel.
 //

@@ -1,5 +1,7 @@
 #include "tools/compare/render_setting.h"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "graph/diagnostics.h"
@@ -117,7 +119,17 @@ RgbImage read_reference_image(const std::string& path, uint32_t width, uint32_t 
     throw ConfigError({{where, "the reference is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                                    "; expected the comparison's size, " + std::to_string(width) + "x" + std::to_string(height)}});
   }
-  return rgb_from_rgba(image.width, image.height, image.rgba);
+  RgbImage rgb = rgb_from_rgba(image.width, image.height, image.rgba);
+  // A reference is the truth the figures are measured against: a NaN or Inf in it is bad
+  // input, not a pixel to leave out (all of them left out would score a perfect match).
+  const auto bad = std::find_if(rgb.rgb.begin(), rgb.rgb.end(), [](float v) { return !std::isfinite(v); });
+  if (bad != rgb.rgb.end()) {
+    const size_t pixel = size_t(bad - rgb.rgb.begin()) / 3;
+    const size_t count = size_t(std::count_if(rgb.rgb.begin(), rgb.rgb.end(), [](float v) { return !std::isfinite(v); }));
+    throw ConfigError({{where, std::to_string(count) + " non-finite value(s) (NaN or Inf), the first at pixel (" + std::to_string(pixel % width) +
+                                   ", " + std::to_string(pixel / width) + "); expected a reference with every value finite"}});
+  }
+  return rgb;
 }
 
 const std::vector<std::string>& mask_names() {
