@@ -1,4 +1,5 @@
-// The caches every Device keeps for its passes: bind groups by content, stock samplers.
+// The caches every Device keeps for its passes: bind groups by content, stock samplers,
+// sampled textures by their source.
 #include "graph/rhi/rhi.h"
 
 namespace volgraph::rhi {
@@ -29,6 +30,14 @@ SamplerId Device::stock_sampler(StockSampler which) {
     case StockSampler::count: break;
   }
   return sampler;
+}
+
+TextureViewId Device::cached_texture_view(const std::string& key, const std::function<TextureViewId()>& make) {
+  const auto found = texture_views_.find(key);
+  if (found != texture_views_.end()) return found->second;
+  const TextureViewId view = make();
+  texture_views_.emplace(key, view);
+  return view;
 }
 
 }  // namespace volgraph::rhi

@@ -12,6 +12,7 @@
 #include <map>
 #include <tuple>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -288,6 +289,11 @@ class Device {
   BindGroupId cached_bind_group(const BindGroupDesc& desc);
   // One sampler of each StockSampler kind, made on first use.
   SamplerId stock_sampler(StockSampler which);
+  // A sampled texture's view by its source's key (a file and its image): made by `make`
+  // on the first request, then the same view for the device's life, so the passes that
+  // draw one scene (scene, shadow_map, translucency) and the frames after decode and
+  // upload each image once.
+  TextureViewId cached_texture_view(const std::string& key, const std::function<TextureViewId()>& make);
 
   virtual BufferId create_buffer(const BufferDesc& desc) = 0;
   virtual TextureId create_texture(const TextureDesc& desc) = 0;
@@ -335,6 +341,7 @@ class Device {
   };
   std::map<BindGroupKey, BindGroupId> bind_groups_;
   std::array<SamplerId, size_t(StockSampler::count)> stock_samplers_{};
+  std::map<std::string, TextureViewId, std::less<>> texture_views_;
 };
 
 }  // namespace volgraph::rhi

@@ -158,9 +158,7 @@ rhi::TextureViewId TextureCache::upload(const std::string& label, Rgba8Image ima
 }
 
 rhi::TextureViewId TextureCache::srgb(const std::string& key, const std::function<Rgba8Image()>& load) {
-  const auto found = textures_.find(key);
-  if (found != textures_.end()) return found->second;
-  return textures_[key] = upload(key, load());
+  return device_.cached_texture_view(key, [&] { return upload(key, load()); });
 }
 
 rhi::TextureViewId TextureCache::white() {

@@ -40,7 +40,8 @@ struct SamplerWrap {
 class TextureCache {
  public:
   explicit TextureCache(rhi::Device& device) : device_(device) {}
-  // The view of an sRGB texture with its mip chain, loaded by `load` on first use of `key`.
+  // The view of an sRGB texture with its mip chain, loaded by `load` on the device's first
+  // use of `key` (rhi::Device::cached_texture_view: shared by every pass on the device).
   rhi::TextureViewId srgb(const std::string& key, const std::function<Rgba8Image()>& load);
   // 1×1 white: the texture of a material without one (factor × 1).
   rhi::TextureViewId white();
@@ -51,7 +52,6 @@ class TextureCache {
   rhi::TextureViewId upload(const std::string& label, Rgba8Image image);
 
   rhi::Device& device_;
-  std::map<std::string, rhi::TextureViewId> textures_;
   std::map<SamplerWrap, rhi::SamplerId> samplers_;
 };
 
