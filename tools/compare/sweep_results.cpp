@@ -278,7 +278,13 @@ void save_point_as(const std::string& dir, const std::string& stem, const PointR
   stored.pareto = false;
   const std::string target = (folder / (stem + ".json")).string();
   const std::string temporary = target + ".tmp-" + std::to_string(::getpid());
-  write_file_checked(temporary, bytes_of(point_result_json(stored)), target);
+  try {
+    write_file_checked(temporary, bytes_of(point_result_json(stored)), target);
+  } catch (const IoError&) {  // a full disk leaves no temporary behind
+    std::error_code ec;
+    std::filesystem::remove(temporary, ec);
+    throw;
+  }
   if (std::rename(temporary.c_str(), target.c_str()) != 0) {
     std::error_code ec;
     std::filesystem::remove(temporary, ec);
