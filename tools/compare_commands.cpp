@@ -254,7 +254,7 @@ int run_ab(const Args& args, const PassRegistry& registry) {
   compile_loaded(b.loaded, args.compile);
   prepare_output_folder(args.output);
 
-  InterruptGuard interrupt;  // a Ctrl-C while the report is written waits for it: all files or none
+  InterruptGuard interrupt("no report written (a report is written whole or not at all)");  // a Ctrl-C while the report is written waits for it
   ComparisonDevice session(args.backend, args.device, args.validation);
   rhi::Device& device = session.device();
   const RunSettings run{args.frames, c.warmup.value_or(1), c.runs.value_or(5), args.compile};

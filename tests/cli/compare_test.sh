@@ -17,7 +17,8 @@
 #   compare_test.sh VOLGRAPH sweep_identity SOURCE_DIR  a folder is one spec's at one set of settings: another
 #                                                       spec's run, tune or merge is refused (exit 2, naming both);
 #                                                       a merge without SPEC reports the folders' figures; the
-#                                                       jobs of --emit-jobs keep --size and --runs
+#                                                       jobs of --emit-jobs keep --size and --runs; a damaged
+#                                                       folder is bad input (exit 2)
 #   compare_test.sh VOLGRAPH outputs_not_inputs SOURCE_DIR  an input inside -o DIR under an output's name (a spec
 #                                                       results.json, a config report.json, tuned.json, a link to
 #                                                       one) is refused, exit 2, and left as it was
@@ -181,6 +182,13 @@ PY
     "$volgraph" sweep "$tmp/tiny.json" --size 16x9 --runs 2 --emit-jobs -o "$tmp/j" >"$tmp/out" 2>"$tmp/err" || fail "emit: $(cat "$tmp/err")"
     bash -c "$(head -n 1 "$tmp/j/jobs.txt")" >"$tmp/out" 2>"$tmp/err" || fail "a job of a sweep emitted with --size failed: $(cat "$tmp/err")"
     [ "$(json_value "$tmp/j/points/$(ls "$tmp/j/points" | head -n 1)" "j['timing']['runs']")" = 2 ] || fail "the job dropped --runs 2"
+    # A damaged folder is bad input naming the file: a point file cut short, `points` a file.
+    first=$(ls "$tmp/a/points" | head -n 1)
+    head -c 100 "$tmp/a/points/$first" >"$tmp/cut" && mv "$tmp/cut" "$tmp/a/points/$first"
+    expect_exit 2 "points/$first: error: not JSON" "$volgraph" sweep "$tmp/tiny.json" --size 16x9 -o "$tmp/a"
+    expect_exit 2 "points/$first: error: not JSON" "$volgraph" sweep --merge "$tmp/a" -o "$tmp/m2"
+    rm -r "$tmp/a/points" && echo x >"$tmp/a/points"
+    expect_exit 2 "points: error: is not a folder" "$volgraph" tune "$tmp/tiny.json" --size 16x9 --max-error 1 -o "$tmp/a"
     ;;
   outputs_not_inputs)
     tiny_spec "8, 16"

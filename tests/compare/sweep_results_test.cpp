@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "graph/diagnostics.h"
 #include "tools/compare/sweep_report.h"
 
 namespace volgraph::compare {
@@ -150,18 +151,18 @@ TEST(SweepResults, ParseErrorsNameTheFileAndTheValue) {
   try {
     parse_point_result(j.dump(), "dir/points/x.json");
     FAIL() << "accepted a string median";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("dir/points/x.json: /timing/frame_wall_ms/median: expected a number"),
+  } catch (const ConfigError& e) {  // bad input (exit 2), not an internal error
+    EXPECT_NE(std::string(e.what()).find("dir/points/x.json: error at /timing/frame_wall_ms/median: expected a number"),
               std::string::npos)
         << e.what();
   }
   j.erase("metrics");
-  EXPECT_THROW(parse_point_result(j.dump(), "x.json"), std::runtime_error);
+  EXPECT_THROW(parse_point_result(j.dump(), "x.json"), ConfigError);
   try {
     parse_point_result("{\"id\": \"ab", "dir/points/cut.json");
     FAIL() << "accepted a truncated file";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("dir/points/cut.json: not JSON"), std::string::npos) << e.what();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("dir/points/cut.json: error: not JSON"), std::string::npos) << e.what();
   }
 }
 
@@ -197,9 +198,28 @@ TEST(SweepResults, CorruptPointFileIsAnErrorNamingIt) {
   try {
     read_results(dir.path);
     FAIL() << "read a corrupt point file";
-  } catch (const std::runtime_error& e) {
+  } catch (const ConfigError& e) {  // a damaged folder is bad input (exit 2)
     EXPECT_NE(std::string(e.what()).find("points/bb.json"), std::string::npos) << e.what();
   }
+}
+
+// Every damage a sweep folder can take is bad input naming the file: a point file cut
+// short, one missing a field, empty, a folder under a point's name, `points` a file.
+TEST(SweepResults, DamagedFoldersAreBadInput) {
+  const std::string whole = point_result_json(point("aa", "d", 1, 0.1));
+  nlohmann::ordered_json missing = nlohmann::ordered_json::parse(whole);
+  missing.erase("timing");
+  for (const std::string& text : {whole.substr(0, whole.size() / 2), missing.dump(), std::string(), std::string("[]")}) {
+    TempDir dir;
+    std::filesystem::create_directories(dir.path + "/points");
+    std::ofstream(dir.path + "/points/aa.json") << text;
+    EXPECT_THROW(read_results(dir.path), ConfigError) << text;
+  }
+  TempDir file;
+  std::ofstream(file.path + "/points") << "not a folder";
+  EXPECT_THROW(read_results(file.path), ConfigError);
+  TempDir out;
+  EXPECT_THROW(merge_results({file.path}, out.path, nullptr), ConfigError);
 }
 
 TEST(SweepResults, NoPointsFolderIsNoResults) {

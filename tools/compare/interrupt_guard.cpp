@@ -4,10 +4,11 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 namespace volgraph::compare {
 
-InterruptGuard::InterruptGuard() {
+InterruptGuard::InterruptGuard(std::string message) : message_(std::move(message)) {
   sigemptyset(&signals_);
   for (int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&signals_, signal);
   pthread_sigmask(SIG_BLOCK, &signals_, &before_);
@@ -16,7 +17,7 @@ InterruptGuard::InterruptGuard() {
     sigwait(&signals_, &signal);
     if (done_) return;  // the guard's own wake-up at its end
     const std::lock_guard<std::mutex> lock(writes_);
-    std::fputs("\nvolgraph: interrupted; every finished point is saved (the same command resumes)\n", stderr);
+    std::fprintf(stderr, "\nvolgraph: interrupted; %s\n", message_.c_str());
     std::_Exit(128 + signal);
   });
 }

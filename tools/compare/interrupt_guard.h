@@ -12,13 +12,16 @@
 #include <atomic>
 #include <csignal>
 #include <mutex>
+#include <string>
 #include <thread>
 
 namespace volgraph::compare {
 
 class InterruptGuard {
  public:
-  InterruptGuard();
+  // `message`: what an interrupt leaves, printed before the exit (a sweep's saved points
+  // are not an A/B report's).
+  explicit InterruptGuard(std::string message = "every finished point is saved (the same command resumes)");
   ~InterruptGuard();
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
@@ -29,6 +32,7 @@ class InterruptGuard {
  private:
   sigset_t signals_{}, before_{};
   std::mutex writes_;
+  std::string message_;
   std::atomic<bool> done_{false};
   std::thread watcher_;
 };

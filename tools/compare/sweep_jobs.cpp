@@ -26,6 +26,7 @@ struct Copy {
 };
 
 std::vector<std::filesystem::path> point_files(const std::string& dir) {
+  check_points_folder(dir);
   const std::filesystem::path folder = std::filesystem::path(dir) / "points";
   std::vector<std::filesystem::path> files;
   std::error_code ec;

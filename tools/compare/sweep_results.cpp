@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "graph/diagnostics.h"
 #include "tools/compare/figures_json.h"
 #include "tools/output_files.h"
 
@@ -26,7 +27,7 @@ class Reader {
   explicit Reader(std::string file) : file_(std::move(file)) {}
 
   [[noreturn]] void fail(const std::string& pointer, const std::string& expected) const {
-    throw std::runtime_error(file_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + expected);
+    throw ConfigError({{{file_, pointer.empty() ? "/" : pointer, 0}, expected}});  // a damaged folder is bad input
   }
 
   const Json& member(const Json& object, const std::string& pointer, const std::string& key) const {
@@ -210,7 +211,7 @@ PointResult parse_point_result(const std::string& text, const std::string& file)
   try {
     j = Json::parse(text);
   } catch (const Json::parse_error& e) {
-    throw std::runtime_error(file + ": not JSON (" + e.what() + ")");
+    throw ConfigError({{{file, "", 0}, std::string("not JSON (") + e.what() + "); expected a point result (a damaged sweep folder: remove the file to run the point again)"}});
   }
   return read_point(Reader(file), j);
 }
@@ -235,13 +236,22 @@ void mark_pareto(std::vector<PointResult>& results) {
 
 PointResult read_point_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path.string() + ": cannot be read");
+  if (!in) throw ConfigError({{{path.string(), "", 0}, "cannot be read; expected a point result"}});
   std::ostringstream text;
   text << in.rdbuf();
   return parse_point_result(text.str(), path.string());
 }
 
+void check_points_folder(const std::string& dir) {
+  const std::filesystem::path folder = std::filesystem::path(dir) / "points";
+  std::error_code ec;
+  if (std::filesystem::exists(folder, ec) && !std::filesystem::is_directory(folder, ec)) {
+    throw ConfigError({{{folder.string(), "", 0}, "is not a folder; expected the sweep's folder of point results"}});
+  }
+}
+
 std::vector<PointResult> read_results(const std::string& dir) {
+  check_points_folder(dir);
   const std::filesystem::path folder = std::filesystem::path(dir) / "points";
   std::vector<PointResult> results;
   std::error_code ec;
@@ -268,7 +278,13 @@ void save_point_as(const std::string& dir, const std::string& stem, const PointR
   stored.pareto = false;
   const std::string target = (folder / (stem + ".json")).string();
   const std::string temporary = target + ".tmp-" + std::to_string(::getpid());
-  write_file_checked(temporary, bytes_of(point_result_json(stored)), target);
+  try {
+    write_file_checked(temporary, bytes_of(point_result_json(stored)), target);
+  } catch (const IoError&) {  // a full disk leaves no temporary behind
+    std::error_code ec;
+    std::filesystem::remove(temporary, ec);
+    throw;
+  }
   if (std::rename(temporary.c_str(), target.c_str()) != 0) {
     std::error_code ec;
     std::filesystem::remove(temporary, ec);

@@ -38,17 +38,20 @@ struct PointResult {
 };
 
 std::string point_result_json(const PointResult& result);
-// Throws std::runtime_error naming `file` when the text is not a point result.
+// Throws ConfigError naming `file` (and the JSON pointer) when the text is not a point result.
 PointResult parse_point_result(const std::string& text, const std::string& file);
 // The point result in the file at `path` (parse_point_result of its text); throws
-// std::runtime_error naming it when it cannot be read.
+// ConfigError naming it when it cannot be read.
 PointResult read_point_file(const std::filesystem::path& path);
 
 // Marks, within each device, the points no other point of that device beats in both
 // frame time (median) and the metric; failed points are never on the front.
 void mark_pareto(std::vector<PointResult>& results);
 
-// The finished points in DIR/points (every *.json there), sorted by id.
+// Throws ConfigError when DIR/points exists and is not a folder (a damaged sweep folder).
+void check_points_folder(const std::string& dir);
+// The finished points in DIR/points (every *.json there), sorted by id. A damaged point
+// file or points folder is bad input: ConfigError naming the file (and JSON pointer).
 std::vector<PointResult> read_results(const std::string& dir);
 // Writes DIR/points/<id>.json (temporary name, then rename).
 void save_point(const std::string& dir, const PointResult& result);
