@@ -1,6 +1,7 @@
 #include "graph/execute/pass_execution.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace volgraph {
 
@@ -26,6 +27,19 @@ const ResourceUse* PassSetup::use_of(SlotHandle slot) const {
     }
   }
   return nullptr;
+}
+
+int64_t PassSetup::producer_param(SlotHandle slot, std::string_view param) const {
+  const uint32_t creator = graph.resources[resource(slot)].creator;
+  const GraphPass* producer = creator == kNone ? nullptr : &graph.passes[creator];
+  const int index = producer ? producer->decl->param_index(param) : -1;
+  if (index < 0) {
+    throw std::logic_error(graph_pass().name + ": slot " + graph_pass().decl->slots.at(slot.index).name +
+                           " is not made by a pass with an integer parameter " + std::string(param));
+  }
+  const ParamValue& value = size_t(index) < producer->params.size() ? producer->params[size_t(index)]
+                                                                     : producer->decl->params.at(size_t(index)).default_value;
+  return std::get<int64_t>(value);
 }
 
 bool PassSetup::bound(SlotHandle slot) const {

@@ -54,6 +54,10 @@ class PassSetup {
   rhi::TextureId texture(SlotHandle slot) const { return resources_.texture(resource(slot)); }
   rhi::TextureViewId view(SlotHandle slot) const { return resources_.view(resource(slot)); }
   rhi::BufferId buffer(SlotHandle slot) const { return resources_.buffer(resource(slot)); }
+  // The integer parameter `param` of the pass that makes the resource wired to `slot`: a
+  // reader takes its input's shape from its producer (one source for it, never a copy of
+  // its own that may disagree). Throws when that pass has no such parameter.
+  int64_t producer_param(SlotHandle slot, std::string_view param) const;
 
   // One of the device's shared samplers.
   rhi::SamplerId sampler(rhi::StockSampler which) const { return device.stock_sampler(which); }

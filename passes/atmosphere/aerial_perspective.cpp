@@ -47,7 +47,6 @@ struct AerialPerspectiveTable : PassTable {
   ParamHandle<int64_t> slices = integer("slices", 32, 1, 512, "", "slices along each ray");
   ParamHandle<double> distance = number("distance", 32e3, 1, 1e7, "m", "how far along each ray the volume reaches");
   ParamHandle<double> samples = number("samples", 40, 1, 512, "", "midpoint samples from the camera to each slice (hillaire)");
-  ParamHandle<int64_t> nu = integer("nu", 8, 2, 64, "texels", "bruneton: the scattering table's nu slices (atmosphere_bruneton_tables.nu)");
   // Slots.
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
@@ -101,10 +100,11 @@ class AerialPerspectiveExecution final : public PassExecution {
   }
 
  private:
-  // bruneton: the scattering table's shape (its nu slices a parameter, as the tables').
+  // bruneton: the scattering table's shape, its nu slices those of the tables pass that
+  // made it (atmosphere_bruneton_tables.nu: one source, so a reader never disagrees).
   GpuBrunetonTableParams table_shape(const PassSetup& s) const {
     const Extent e = s.extent(t_.scattering);
-    return bruneton_table_shape(e.width, e.height, e.depth, s.param(t_.nu));
+    return bruneton_table_shape(e.width, e.height, e.depth, s.producer_param(t_.scattering, "nu"));
   }
 
   void record_bruneton(PassContext& c) const {

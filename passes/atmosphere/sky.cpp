@@ -63,7 +63,6 @@ struct SkyTable : PassTable {
   ParamHandle<double> min_samples = number("min_samples", 40, 1, 512, "", "samples along the shortest rays of the march (Hillaire 2020: 4)");
   ParamHandle<double> max_samples = number("max_samples", 40, 1, 512, "", "samples along the march's rays of 100 km and longer (Hillaire 2020: 14)");
   ParamHandle<double> sample_offset = number("sample_offset", 0.5, 0, 1, "", "where in its step each sample of the march sits (Hillaire 2020: 0.3)");
-  ParamHandle<int64_t> nu = integer("nu", 8, 2, 64, "texels", "bruneton: the scattering table's nu slices (atmosphere_bruneton_tables.nu)");
   ParamHandle<bool> multiscattering_term = flag("multiscattering", true, "add σs · Ψ_ms along the march and Ψ_ms to the ground's light (off: single scattering alone)");
   // Slots: every variant's common ones, then each variant's own (optional: its variant names them).
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
@@ -146,10 +145,11 @@ class SkyExecution final : public PassExecution {
     return {c.view(t_.sky_view), c.view(has_multiscattering(c) ? t_.multiscattering : t_.sky_view)};
   }
 
-  // bruneton: the scattering table's shape (its nu slices a parameter, as the tables').
+  // bruneton: the scattering table's shape, its nu slices those of the tables pass that
+  // made it (atmosphere_bruneton_tables.nu: one source, so a reader never disagrees).
   GpuBrunetonTableParams table_shape(const PassSetup& s) const {
     const Extent e = s.extent(t_.scattering);
-    return bruneton_table_shape(e.width, e.height, e.depth, s.param(t_.nu));
+    return bruneton_table_shape(e.width, e.height, e.depth, s.producer_param(t_.scattering, "nu"));
   }
 
   bool has_multiscattering(const PassContext& c) const { return c.bound(t_.multiscattering); }

@@ -50,7 +50,6 @@ std::string sphere_config(double radius, const std::string& variant) {
     { "name": "tables", "type": "atmosphere_bruneton_tables", "params": { "nu": 4, "nu_mu_s": 32, "mu": 16, "r": 4, "orders": 2 },
       "inputs": { "transmittance": "lut.transmittance" } },)" : "";
   const std::string volume_inputs = variant == "bruneton" ? R"("scattering": "tables.scattering", "single_mie_scattering": "tables.single_mie_scattering")" : R"("multiscattering": "ms.multiscattering")";
-  const std::string volume_params = variant == "bruneton" ? R"(, "nu": 4)" : "";
   return std::string(R"({ "output": { "size": [16, 16] },
   "scene": { "camera": { "position": [0, 2, 0], "target": [0, 2.5, -10], "fov_y_deg": 60, "near": 0.5, "far": 20000 },
              "materials": { "glow": { "albedo": [0, 0, 0], "emissive": [1, 1, 1] } },
@@ -63,7 +62,7 @@ std::string sphere_config(double radius, const std::string& variant) {
     { "name": "lut", "type": "atmosphere_transmittance_lut" },
     { "name": "ms", "type": "atmosphere_multiscattering_lut", "inputs": { "transmittance": "lut.transmittance" } },)" + bruneton + R"(
     { "name": "aerial", "type": "atmosphere_aerial_perspective", "variant": ")" + variant + R"(",
-      "params": { "resolution": 16, "slices": 8, "distance": 8000)" + volume_params + R"( },
+      "params": { "resolution": 16, "slices": 8, "distance": 8000 },
       "inputs": { "transmittance": "lut.transmittance", )" + volume_inputs + R"( } },
     { "name": "air", "type": "aerial_perspective_apply",
       "inputs": { "color": "lit.color", "depth": "lit.depth", "aerial_scattering": "aerial.aerial_scattering",
