@@ -403,9 +403,21 @@ int run_reference(const Args& args, const PassRegistry& registry) {
   return reference_render(args, load(args, registry));
 }
 
-int run_passes(const Args&, const PassRegistry& registry) { return print_passes(registry); }
+// passes and devices take no arguments and no options: a word after them is bad input.
+void no_arguments(CLI::App&, Args&) {}
+void check_no_arguments(const Args& args) {
+  if (!args.config.empty()) throw UsageError(args.command + " takes no arguments, got \"" + args.config + "\"");
+}
 
-int run_devices(const Args&, const PassRegistry&) { return print_devices(); }
+int run_passes(const Args& args, const PassRegistry& registry) {
+  check_no_arguments(args);
+  return print_passes(registry);
+}
+
+int run_devices(const Args& args, const PassRegistry&) {
+  check_no_arguments(args);
+  return print_devices();
+}
 
 // The options of each comparison command: the shared ones and its own.
 void declare_ab(CLI::App& app, Args& args) {
@@ -439,14 +451,30 @@ constexpr Command kCommands[] = {
     {"plan", every_option, run_plan},
     {"render", every_option, run_render},
     {"reference", every_option, run_reference},
-    {"passes", every_option, run_passes},
-    {"devices", every_option, run_devices},
+    {"passes", no_arguments, run_passes},
+    {"devices", no_arguments, run_devices},
     {"ab", declare_ab, run_ab},
     {"sweep", declare_sweep, run_sweep_command},
     {"tune", declare_tune, run_tune},
 };
 
+// --device N names a device that exists: an index past the last one is bad input, said
+// before any work or output (the indices count the Vulkan 1.3 devices, as
+// vulkan::Context picks them). With no such device at all, the render says so (exit 1).
+void check_device_index(const Args& args) {
+  if (args.device < 0) return;
+  size_t count = 0;
+  for (const auto& d : vulkan::Context::list_devices()) count += d.api_version >= VK_API_VERSION_1_3 ? 1 : 0;
+  if (count == 0 || size_t(args.device) < count) return;
+  throw UsageError("--device " + std::to_string(args.device) + ": no such Vulkan device; there " +
+                   (count == 1 ? std::string("is 1 (index 0)") : "are " + std::to_string(count) + " (indices 0 to " + std::to_string(count - 1) + ")") +
+                   ", listed by volgraph devices");
+}
+
 int run(const Args& args, const PassRegistry& registry) {
+  for (const char* uses_device : {"render", "ab", "sweep", "tune"}) {
+    if (args.command == uses_device) check_device_index(args);
+  }
   for (const Command& command : kCommands) {
     if (args.command == command.name) return command.run(args, registry);
   }

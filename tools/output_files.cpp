@@ -14,6 +14,23 @@ namespace {
 
 std::string system_reason() { return std::strerror(errno); }
 
+// A temporary name for `target` in its folder, unique to this process and stage
+// ("NAME.tmp-PID-INDEX.EXT": readers that skip ".tmp-" names rely on the tag and the
+// extension), no longer than a name the folder takes (NAME_MAX, 255 where not said):
+// a target's name near that limit is cut to leave room for the tag, so that any name the
+// filesystem accepts can be staged.
+std::string temporary_name(const std::filesystem::path& target, size_t index) {
+  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+  const long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  const size_t name_max = limit > 0 ? size_t(limit) : 255;
+  const std::string extension = target.extension().string();
+  const std::string tag =
+      ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(index) + (extension.size() <= 32 ? extension : "");
+  std::string name = target.filename().string();
+  if (name.size() + tag.size() > name_max) name.resize(name_max > tag.size() ? name_max - tag.size() : 0);
+  return (target.parent_path() / (name + tag)).string();
+}
+
 }  // namespace
 
 void write_file_checked(const std::string& path, std::span<const std::byte> bytes, const std::string& name) {
@@ -73,9 +90,7 @@ OutputFiles::~OutputFiles() {
 
 void OutputFiles::stage(const std::string& path, const std::string& flag, std::span<const std::byte> bytes) {
   check_output_target(path, flag);
-  const std::filesystem::path target(path);
-  const std::string temporary =
-      path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(staged_.size()) + target.extension().string();
+  const std::string temporary = temporary_name(std::filesystem::path(path), staged_.size());
   staged_.push_back({temporary, path});
   write_file_checked(temporary, bytes, path);
 }

@@ -147,6 +147,34 @@ hostile_case() {
         "$volgraph" render "$config" --size 8x4 -o "$tmp/full/x.png" --dump "lit.color=$tmp/full/lit.pfm"
       [ -z "$(ls -A "$tmp/full")" ] || fail "a failed --dump left: $(ls -A "$tmp/full")"
       ;;
+    device_index)  # --device N past the last device: bad input (exit 2), the count said, nothing written
+      n=$("$volgraph" devices | grep -c '^[0-9][0-9]*: ')
+      [ "$n" -ge 1 ] || fail "volgraph devices lists no Vulkan device"
+      root=$(dirname "$config")/..
+      expect_exit 2 "volgraph: --device $n: no such Vulkan device; there" "$volgraph" render "$config" -o "$tmp/x.png" --size 8x4 --device "$n"
+      expect_exit 2 "volgraph: --device $n: no such Vulkan device; there" "$volgraph" ab "$config" --pass final --a aces --b reinhard \
+        --size 8x4 --runs 1 --warmup 0 -o "$tmp/ab" --device "$n"
+      expect_exit 2 "volgraph: --device $n: no such Vulkan device; there" "$volgraph" sweep "$root/configs/sweeps/froxel_far.json" \
+        --size 8x4 -o "$tmp/sweep" --device "$n"
+      expect_exit 2 "volgraph: --device 100000: no such Vulkan device; there" "$volgraph" render "$config" -o "$tmp/x.png" --device 100000
+      [ "$(wc -l <"$tmp/err")" -le 2 ] || fail "more than one message: $(cat "$tmp/err")"
+      no_files_but
+      ;;
+    long_output_name)  # a 250-byte file name (NAME_MAX is 255): its temporary still fits, the file is written, no temporary left
+      name=$(head -c 246 /dev/zero | tr '\0' a).pfm timings=$(head -c 250 /dev/zero | tr '\0' t).json
+      "$volgraph" render "$config" --size 8x4 -o "$tmp/$name" --timings-out "$tmp/$timings" 2>"$tmp/err" ||
+        fail "render -o (250-byte name) exit $?: $(cat "$tmp/err")"
+      [ "$(head -c 2 "$tmp/$name")" = "PF" ] || fail "no PFM written under the 250-byte name"
+      [ -s "$tmp/$timings" ] || fail "no --timings-out written under a 255-byte name"
+      no_files_but "$name" "$timings"
+      ;;
+    extra_arguments)  # commands that take no arguments refuse one: exit 2, one message
+      for command in devices passes; do
+        expect_exit 2 "volgraph: $command takes no arguments, got \"extra\"" "$volgraph" $command extra
+        [ "$(wc -l <"$tmp/err")" -le 2 ] || fail "$command extra: more than one message: $(cat "$tmp/err")"
+        [ ! -s "$tmp/out" ] || fail "$command extra printed: $(cat "$tmp/out")"
+      done
+      ;;
     *) fail "unknown hostile case $1" ;;
   esac
 }
