@@ -238,24 +238,20 @@ if(_vg_uncovered)
   message(STATUS "tests/pass_labels.cmake: no GoogleTest rule gives these pass types a label: ${_vg_uncovered}")
 endif()
 
-# volgraph_gtest_groups(TARGET LABEL [CASE_SECONDS N] [GROUP_SIZE N] [FILE_BY_FILE] [LABELS L...]): TARGET's
+# volgraph_gtest_groups(TARGET LABEL [CASE_SECONDS N] [GROUP_SIZE N] [LABELS L...]): TARGET's
 # GoogleTest cases as ctest tests, a group of cases sharing a suite and labels per test
 # (tests/gtest_groups_run.cmake, at ctest time), each labelled LABEL and the pass types the
 # table gives its cases. CASE_SECONDS: each case's deadline (default 60); GROUP_SIZE: the
 # most cases a group runs (default 16). TARGET links volgraph_gtest_main
 # (tests/support/gtest_main.cpp), whose --case-seconds enforces the deadline.
-# FILE_BY_FILE: no unity build for TARGET (its test files keep same-named helpers).
 # LABELS: more labels for every case (e.g. quick).
 function(volgraph_gtest_groups target label)
-  cmake_parse_arguments(arg "FILE_BY_FILE" "CASE_SECONDS;GROUP_SIZE" "LABELS" ${ARGN})
+  cmake_parse_arguments(arg "" "CASE_SECONDS;GROUP_SIZE" "LABELS" ${ARGN})
   if(NOT arg_CASE_SECONDS)
     set(arg_CASE_SECONDS 60)
   endif()
   if(NOT arg_GROUP_SIZE)
     set(arg_GROUP_SIZE 16)
-  endif()
-  if(arg_FILE_BY_FILE)
-    set_target_properties(${target} PROPERTIES UNITY_BUILD OFF)
   endif()
   target_link_libraries(${target} PRIVATE volgraph_gtest_main)
   get_property(regexes GLOBAL PROPERTY VOLGRAPH_LABEL_REGEXES)

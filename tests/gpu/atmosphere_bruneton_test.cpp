@@ -11,6 +11,7 @@
 // - cached: a second frame runs no step of the pass.
 // Table sizes are small (lavapipe is a CPU); the figures are printed.
 #include <algorithm>
+#include <memory>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -418,23 +419,38 @@ std::string sky_config(int orders, const std::string& sizes, const std::string& 
     "outputs": ["sky.color", "tables.scattering", "tables.irradiance", "tables.single_mie_scattering"] } })";
 }
 
+// One order of the tables at `sizes` and the sky pass's bruneton variant reading them, 2 m up
+// (sky_config): the sky image and the tables read back, as the CPU twin takes them.
+struct SkyFromTables {
+  LoadedConfig config;
+  Texels image;
+  physics::BrunetonTable scattering, single_mie, irradiance;
+};
+
+std::unique_ptr<SkyFromTables> render_sky_from_tables(rhi::Device& device, PassRegistry& registry, const std::string& sizes) {
+  auto sky = std::make_unique<SkyFromTables>(SkyFromTables{load_config_text("sky.json", sky_config(1, sizes, "2"), registry), {}, {}, {}, {}});
+  Executor executor(device, sky->config.graph, &sky->config.config.scene, {});
+  executor.run_frame();
+  sky->image = executor.read_output(0);
+  sky->scattering = table_of(executor.read_output(1));
+  sky->irradiance = table_of(executor.read_output(2));
+  sky->single_mie = table_of(executor.read_output(3));
+  return sky;
+}
+
 // The sky pass's bruneton variant (32 × 18, 60° field of view at the horizon, the sun 20°
 // up behind the camera, E = 2) against the CPU twin of GetSkyRadiance on the tables read
 // back, and against the reference's single scattering (orders = 1): every pixel above the
 // horizon; the ground below it finite and lit.
 TEST_P(AtmosphereBruneton, SkyPassFromTheTablesMatchesTheTwinAndTheReference) {
-  const std::string sizes = R"("nu": 8, "nu_mu_s": 128, "mu": 64, "r": 16, "samples": 400, "irradiance_width": 16, "irradiance_height": 8)";
-  const LoadedConfig config = load_config_text("sky.json", sky_config(1, sizes, "2"), registry_);
-  Executor executor(device(), config.graph, &config.config.scene, {});
-  executor.run_frame();
-  const Texels image = executor.read_output(0), scattering = executor.read_output(1), irradiance = executor.read_output(2),
-               single_mie = executor.read_output(3);
+  const auto sky = render_sky_from_tables(
+      device(), registry_, R"("nu": 8, "nu_mu_s": 128, "mu": 64, "r": 16, "samples": 400, "irradiance_width": 16, "irradiance_height": 8)");
+  const Texels& image = sky->image;
   ASSERT_TRUE(all_finite(image));
-  const Scene& scene = config.config.scene;
+  const Scene& scene = sky->config.config.scene;
   const Atmosphere& a = *scene.atmosphere;
   const physics::AtmosphereView view = physics::atmosphere_view(scene);
-  const physics::BrunetonTable s = table_of(scattering), m = table_of(single_mie), e = table_of(irradiance);
-  const physics::BrunetonTables tables{{8, 16, 64, 16, 16, 8}, &s, &m, &e, exact_transmittance(a)};
+  const physics::BrunetonTables tables{{8, 16, 64, 16, 16, 8}, &sky->scattering, &sky->single_mie, &sky->irradiance, exact_transmittance(a)};
   const reference::AtmosphereReference ref(a, {view.toward_sun, {1, 1, 1}, a.sun_angular_radius}, {.samples = 0});
   const physics::ViewRays rays = physics::view_rays(scene.camera, 32.0 / 18.0);
   const Vec3 camera = physics::scaled(view.up, view.r);
@@ -481,17 +497,13 @@ TEST_P(AtmosphereBruneton, SkyPassFromTheTablesMatchesTheTwinAndTheReference) {
 // a sky with its own nu of 8 read 4-slice tables 35-46 % dark): with 4 nu slices (the sky
 // given no shape) every sky pixel matches the CPU twin on the tables read back.
 TEST_P(AtmosphereBruneton, SkyPassReadsTheShapeOfTheTablesItIsWiredTo) {
-  const std::string sizes = R"("nu": 4, "nu_mu_s": 64, "mu": 64, "r": 16, "samples": 400, "irradiance_width": 16, "irradiance_height": 8)";
-  const LoadedConfig config = load_config_text("sky.json", sky_config(1, sizes, "2"), registry_);
-  Executor executor(device(), config.graph, &config.config.scene, {});
-  executor.run_frame();
-  const Texels image = executor.read_output(0), scattering = executor.read_output(1), irradiance = executor.read_output(2),
-               single_mie = executor.read_output(3);
-  const Scene& scene = config.config.scene;
+  const auto sky = render_sky_from_tables(
+      device(), registry_, R"("nu": 4, "nu_mu_s": 64, "mu": 64, "r": 16, "samples": 400, "irradiance_width": 16, "irradiance_height": 8)");
+  const Texels& image = sky->image;
+  const Scene& scene = sky->config.config.scene;
   const Atmosphere& a = *scene.atmosphere;
   const physics::AtmosphereView view = physics::atmosphere_view(scene);
-  const physics::BrunetonTable s = table_of(scattering), m = table_of(single_mie), e = table_of(irradiance);
-  const physics::BrunetonTables tables{{4, 16, 64, 16, 16, 8}, &s, &m, &e, exact_transmittance(a)};
+  const physics::BrunetonTables tables{{4, 16, 64, 16, 16, 8}, &sky->scattering, &sky->single_mie, &sky->irradiance, exact_transmittance(a)};
   const physics::ViewRays rays = physics::view_rays(scene.camera, 32.0 / 18.0);
   const Vec3 camera = physics::scaled(view.up, view.r);
   double worst = 0;
