@@ -318,14 +318,6 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
 
 // The commands: each runs on the parsed arguments (the command line is checked already).
 
-// `path` with its folders resolved (symbolic links, "..") so that two names of one file
-// compare equal; the parts that do not exist yet are kept as written.
-std::filesystem::path canonical_path(const std::string& path) {
-  std::error_code ec;
-  std::filesystem::path canonical = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
-  return ec ? std::filesystem::path(path).lexically_normal() : canonical;
-}
-
 // The config loaded once at its own size; --size then resizes the graph (extents are
 // resolved for a frame size when it is compiled, graph.h resize()), as a viewer does.
 LoadedConfig load(const Args& args, const PassRegistry& registry) {
@@ -378,10 +370,10 @@ void check_outputs(const Args& args) {
   for (const std::string& d : args.dumps) {
     if (!dump_file(d).empty()) files.push_back({"--dump", dump_file(d)});
   }
-  std::vector<std::pair<std::string, std::filesystem::path>> seen = {{"the config", canonical_path(args.config)}};
+  std::vector<std::pair<std::string, std::filesystem::path>> seen = {{"the config", std::filesystem::path(canonical_path_text(args.config))}};
   for (const auto& [flag, file] : files) {
     check_output_target(file, flag);
-    const std::filesystem::path canonical = canonical_path(file);
+    const std::filesystem::path canonical(canonical_path_text(file));
     for (const auto& [other, path] : seen) {
       if (path == canonical) {
         throw UsageError(flag + " " + file + " is the same file as " + other + "; expected a different file for each output");

@@ -58,6 +58,7 @@ void check_output_target(const std::string& path, const std::string& flag) {
 }
 
 std::string canonical_path_text(const std::string& path) {
+  if (path.empty()) return path;
   std::error_code ec;
   const std::filesystem::path canonical = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
   return ec ? std::filesystem::path(path).lexically_normal().string() : canonical.string();

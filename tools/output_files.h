@@ -34,7 +34,7 @@ struct NamedInput {
   std::string what, path;
 };
 // `path` with its folders resolved (symbolic links, "..") so that two names of one file
-// compare equal; the parts that do not exist yet are kept as written.
+// compare equal; the parts that do not exist yet are kept as written; "" stays "".
 std::string canonical_path_text(const std::string& path);
 // No output may be an input (DESIGN.md: an input overwritten is lost): throws ConfigError
 // at `flag DIR` naming both when an input is one of the files `names` in DIR, or lies in

@@ -17,14 +17,6 @@ namespace fs = std::filesystem;
 
 const char* const kIdentityFile = "sweep_settings.txt";
 
-// Two names of one file compare equal (symbolic links, "..", relative paths).
-std::string canonical_text(const std::string& path) {
-  if (path.empty()) return path;
-  std::error_code ec;
-  const fs::path canonical = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  return ec ? fs::path(path).lexically_normal().string() : canonical.string();
-}
-
 [[noreturn]] void refuse(const std::string& dir, const std::string& message) {
   throw ConfigError({{{"<command line>", dir, 0}, message}});
 }
@@ -56,9 +48,9 @@ std::string identity_file(const std::string& dir) { return (fs::path(dir) / kIde
 
 std::string sweep_identity_text(const SweepSpec& spec) {
   std::ostringstream o;
-  o << "spec " << canonical_text(spec.file) << "\nconfig " << canonical_text(spec.config) << "\nsize " << spec.size.width << "x"
+  o << "spec " << canonical_path_text(spec.file) << "\nconfig " << canonical_path_text(spec.config) << "\nsize " << spec.size.width << "x"
     << spec.size.height << "\nruns " << spec.runs << "\nwarmup " << spec.warmup << "\nframes " << spec.frames << "\nbackend "
-    << spec.backend << "\nreference " << (spec.reference == "cpu" ? spec.reference : canonical_text(spec.reference)) << "\nmetric "
+    << spec.backend << "\nreference " << (spec.reference == "cpu" ? spec.reference : canonical_path_text(spec.reference)) << "\nmetric "
     << spec.metric << "\nmask " << spec.mask << "\n";
   return o.str();
 }
