@@ -1,8 +1,79 @@
 // The caches every Device keeps for its passes: bind groups by content, stock samplers,
-// sampled textures by their source.
+// sampled textures by their source, shader modules, layouts and pipelines by content.
+#include <cstring>
+#include <type_traits>
+
 #include "graph/rhi/rhi.h"
 
 namespace volgraph::rhi {
+namespace {
+
+// Appends the bytes of trivially copyable values to a cache key.
+class ContentKey {
+ public:
+  template <typename T>
+    requires std::is_trivially_copyable_v<T>
+  ContentKey& add(const T& value) {
+    bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T));
+    return *this;
+  }
+  ContentKey& add(std::string_view text) { return add(text.size()).raw(text.data(), text.size()); }
+  template <typename T>
+  ContentKey& add_all(std::span<const T> values) {
+    add(values.size());
+    for (const T& v : values) add(v);
+    return *this;
+  }
+  std::string take() { return std::move(bytes_); }
+
+ private:
+  ContentKey& raw(const void* data, size_t size) {
+    bytes_.append(static_cast<const char*>(data), size);
+    return *this;
+  }
+  std::string bytes_;
+};
+
+ContentKey& add_layout_entries(ContentKey& key, const std::vector<LayoutEntry>& entries) {
+  key.add(entries.size());
+  for (const LayoutEntry& e : entries) {
+    key.add(e.binding).add(e.visibility).add(e.type).add(e.texture_kind).add(e.storage_format).add(e.filtered).add(e.storage_access);
+  }
+  return key;
+}
+
+ContentKey& add_layouts(ContentKey& key, const std::vector<BindGroupLayoutId>& layouts) {
+  key.add(layouts.size());
+  for (const BindGroupLayoutId l : layouts) key.add(l.id);
+  return key;
+}
+
+std::string render_pipeline_key(const RenderPipelineDesc& d) {
+  ContentKey key;
+  key.add(d.vertex_module.id).add(d.vertex_entry).add(d.fragment_module.id).add(d.fragment_entry);
+  key.add(d.vertex_buffers.size());
+  for (const VertexBufferLayout& b : d.vertex_buffers) {
+    key.add(b.stride).add(b.attributes.size());
+    for (const VertexAttribute& a : b.attributes) key.add(a.location).add(a.format).add(a.offset);
+  }
+  key.add(d.colors.size());
+  for (const ColorTargetState& c : d.colors) key.add(c.format).add(c.blend);
+  key.add(d.depth.format).add(d.depth.write).add(d.depth.compare).add(d.depth.bias_constant).add(d.depth.bias_slope);
+  key.add(d.cull).add(d.front_counter_clockwise);
+  return add_layouts(key, d.layouts).take();
+}
+
+// The cached object under `key`, made by `make` on the first request.
+template <typename Id, typename Make>
+Id cached(std::map<std::string, Id, std::less<>>& cache, std::string key, const Make& make) {
+  const auto found = cache.find(key);
+  if (found != cache.end()) return found->second;
+  const Id made = make();
+  cache.emplace(std::move(key), made);
+  return made;
+}
+
+}  // namespace
 
 BindGroupId Device::cached_bind_group(const BindGroupDesc& desc) {
   BindGroupKey key{desc.layout, {}};
@@ -38,6 +109,25 @@ TextureViewId Device::cached_texture_view(const std::string& key, const std::fun
   const TextureViewId view = make();
   texture_views_.emplace(key, view);
   return view;
+}
+
+ShaderModuleId Device::cached_shader_module(std::string_view label, std::span<const uint32_t> spirv) {
+  return cached(shader_modules_, ContentKey().add_all(spirv).take(), [&] { return create_shader_module(label, spirv); });
+}
+
+BindGroupLayoutId Device::cached_bind_group_layout(const BindGroupLayoutDesc& desc) {
+  ContentKey key;
+  return cached(bind_group_layouts_, add_layout_entries(key, desc.entries).take(), [&] { return create_bind_group_layout(desc); });
+}
+
+ComputePipelineId Device::cached_compute_pipeline(const ComputePipelineDesc& desc) {
+  ContentKey key;
+  key.add(desc.module.id).add(desc.entry_point);
+  return cached(compute_pipelines_, add_layouts(key, desc.layouts).take(), [&] { return create_compute_pipeline(desc); });
+}
+
+RenderPipelineId Device::cached_render_pipeline(const RenderPipelineDesc& desc) {
+  return cached(render_pipelines_, render_pipeline_key(desc), [&] { return create_render_pipeline(desc); });
 }
 
 }  // namespace volgraph::rhi

@@ -294,6 +294,14 @@ class Device {
   // draw one scene (scene, shadow_map, translucency) and the frames after decode and
   // upload each image once.
   TextureViewId cached_texture_view(const std::string& key, const std::function<TextureViewId()>& make);
+  // Shader modules, bind group layouts and pipelines by their content, as Dawn and
+  // Granite keep them: made on the first request (with its label), then the same object
+  // for the device's life, so every render and frame on one device compiles each
+  // pipeline once (lavapipe's and Tint's compiles were most of a test's time).
+  ShaderModuleId cached_shader_module(std::string_view label, std::span<const uint32_t> spirv);
+  BindGroupLayoutId cached_bind_group_layout(const BindGroupLayoutDesc& desc);
+  ComputePipelineId cached_compute_pipeline(const ComputePipelineDesc& desc);
+  RenderPipelineId cached_render_pipeline(const RenderPipelineDesc& desc);
 
   virtual BufferId create_buffer(const BufferDesc& desc) = 0;
   virtual TextureId create_texture(const TextureDesc& desc) = 0;
@@ -342,6 +350,11 @@ class Device {
   std::map<BindGroupKey, BindGroupId> bind_groups_;
   std::array<SamplerId, size_t(StockSampler::count)> stock_samplers_{};
   std::map<std::string, TextureViewId, std::less<>> texture_views_;
+  // Keyed by the bytes of what defines the object (device_caches.cpp's content_key).
+  std::map<std::string, ShaderModuleId, std::less<>> shader_modules_;
+  std::map<std::string, BindGroupLayoutId, std::less<>> bind_group_layouts_;
+  std::map<std::string, ComputePipelineId, std::less<>> compute_pipelines_;
+  std::map<std::string, RenderPipelineId, std::less<>> render_pipelines_;
 };
 
 }  // namespace volgraph::rhi

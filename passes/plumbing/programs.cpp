@@ -19,7 +19,7 @@ std::span<const uint32_t> spirv_of(const std::string& shader) {
 
 std::vector<rhi::BindGroupLayoutId> create_layouts(rhi::Device& device, const std::vector<rhi::BindGroupLayoutDesc>& descs) {
   std::vector<rhi::BindGroupLayoutId> layouts;
-  for (const rhi::BindGroupLayoutDesc& d : descs) layouts.push_back(device.create_bind_group_layout(d));
+  for (const rhi::BindGroupLayoutDesc& d : descs) layouts.push_back(device.cached_bind_group_layout(d));
   return layouts;
 }
 
@@ -39,7 +39,7 @@ ComputeProgram create_compute_program(rhi::Device& device, const std::string& sh
   program.layouts = create_layouts(device, rhi::reflect_bind_group_layouts({&stage, 1}, shader));
   program.workgroup_size = rhi::reflect_workgroup_size(spirv);
   program.uniform_blocks = rhi::reflect_uniform_blocks({&stage, 1}, shader);
-  program.pipeline = device.create_compute_pipeline({shader, device.create_shader_module(shader, spirv), "main", program.layouts});
+  program.pipeline = device.cached_compute_pipeline({shader, device.cached_shader_module(shader, spirv), "main", program.layouts});
   return program;
 }
 
@@ -82,10 +82,10 @@ RenderProgram render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, 
     program.layouts = create_layouts(device, program.layout_descs);
   }
   program.uniform_blocks = rhi::reflect_uniform_blocks(stages, desc.label);
-  desc.vertex_module = device.create_shader_module(vertex, stages[0].spirv);
-  if (!fragment.empty()) desc.fragment_module = device.create_shader_module(fragment, stages[1].spirv);
+  desc.vertex_module = device.cached_shader_module(vertex, stages[0].spirv);
+  if (!fragment.empty()) desc.fragment_module = device.cached_shader_module(fragment, stages[1].spirv);
   desc.layouts = program.layouts;
-  program.pipeline = device.create_render_pipeline(desc);
+  program.pipeline = device.cached_render_pipeline(desc);
   return program;
 }
 

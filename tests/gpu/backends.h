@@ -28,12 +28,25 @@ class GpuUnderTest {
  public:
   virtual ~GpuUnderTest() = default;
   virtual rhi::Device& device() = 0;
+  // The validation messages since the last call (or since the device was made); the
+  // device stays.
+  virtual std::vector<std::string> take_messages() = 0;
   // Releases the device (the destruction of its objects is validated too) and returns
-  // every validation message since it was created.
+  // every validation message since the last take_messages.
   virtual std::vector<std::string> finish() = 0;
 };
 
+// A device of `backend` for one test. The tests of one process share one device per
+// backend, as an application keeps its device across frames: its shader modules and
+// pipelines (rhi::Device's caches) are compiled once per process, not once per test
+// (lavapipe's and Tint's compiles were most of a GPU test's time). `finish()` returns the
+// messages the test caused and hands the device back; a device with any message is
+// destroyed instead, so the next test starts on a fresh one. The shared devices are
+// destroyed, and their destruction validated, when the tests end (a message then fails
+// the run, as a global failure).
 std::unique_ptr<GpuUnderTest> create_gpu(Backend backend);
+// A device of its own, destroyed by finish(): for tests of device creation and teardown.
+std::unique_ptr<GpuUnderTest> create_own_gpu(Backend backend);
 
 // Made in the backend's file (webgpu_gpu.cpp, or no_webgpu_gpu.cpp without Dawn).
 bool webgpu_built();

@@ -10,6 +10,7 @@ class WebGpuGpu final : public GpuUnderTest {
  public:
   WebGpuGpu() : device_(webgpu::WebGpuDevice::create({.errors_throw = false})) {}
   rhi::Device& device() override { return *device_; }
+  std::vector<std::string> take_messages() override { return device_->take_messages(); }
   std::vector<std::string> finish() override {
     std::vector<std::string> messages = device_->take_messages();
     device_.reset();
