@@ -71,21 +71,52 @@ void add_profile_kinks(const DensityProfile& profile, double top, std::vector<do
   add_clamp_crossings(profile.upper, boundary, top, out);
 }
 
+// An exponential term below e^(−80) ≈ 1.8e-35 is negligible: over the rest of the ray it
+// adds at most that times its scale height, far below a double's precision on any density
+// that is not itself negligible (docs/reference.md, thin air).
+constexpr double kNegligibleExponential = 1.8e-35;
+
+// Whether a layer's exponential term matters at altitude h (a growing one always does).
+bool exponential_matters(const DensityLayer& layer, double altitude) {
+  if (layer.exp_term == 0 || layer.exp_scale == 0) return false;
+  return layer.exp_scale > 0 || std::abs(layer.exp_term) * std::exp(layer.exp_scale * altitude) > kNegligibleExponential;
+}
+
+// Where a decaying exponential term falls to the negligible level, inside [from, to):
+// above it the panels need not resolve its scale height.
+void add_negligible_altitude(const DensityLayer& layer, double from, double to, std::vector<double>& out) {
+  if (layer.exp_term == 0 || !(layer.exp_scale < 0)) return;
+  const double altitude = std::log(kNegligibleExponential / std::abs(layer.exp_term)) / layer.exp_scale;
+  if (altitude > from && altitude < to) out.push_back(altitude);
+}
+
+void add_negligible_altitudes(const DensityProfile& profile, double top, std::vector<double>& out) {
+  const double boundary = std::clamp(profile.lower.width, 0.0, top);
+  if (boundary > 0) add_negligible_altitude(profile.lower, 0, boundary, out);
+  add_negligible_altitude(profile.upper, boundary, top, out);
+}
+
+// The kinks, and the altitudes above which a layer's exponential is negligible.
 std::vector<double> kink_altitudes(const Atmosphere& atmosphere) {
   const double top = atmosphere.top_radius - atmosphere.bottom_radius;
   std::vector<double> kinks;
-  for (const DensityProfile* p : {&atmosphere.rayleigh_density, &atmosphere.mie_density, &atmosphere.absorption_density})
+  for (const DensityProfile* p : {&atmosphere.rayleigh_density, &atmosphere.mie_density, &atmosphere.absorption_density}) {
     add_profile_kinks(*p, top, kinks);
+    add_negligible_altitudes(*p, top, kinks);
+  }
   return kinks;
 }
 
-// The smallest scale height 1/|exp_scale| among the layers with an exponential term (the
-// atmosphere's thickness when there is none).
-double smallest_scale_height(const Atmosphere& atmosphere) {
+// The smallest scale height 1/|exp_scale| among the layers whose exponential term matters at
+// altitude h (the atmosphere's thickness when there is none; at least 1 mm, the loader's floor).
+// A ray's segment between breaks lies wholly on one side of each negligible altitude, so
+// the segment's midpoint decides for all of it.
+double smallest_scale_height_at(const Atmosphere& atmosphere, double altitude) {
   double smallest = atmosphere.top_radius - atmosphere.bottom_radius;
-  for (const DensityProfile* p : {&atmosphere.rayleigh_density, &atmosphere.mie_density, &atmosphere.absorption_density})
-    for (const DensityLayer* layer : {&p->lower, &p->upper})
-      if (layer->exp_term != 0 && layer->exp_scale != 0) smallest = std::min(smallest, 1.0 / std::abs(layer->exp_scale));
+  for (const DensityProfile* p : {&atmosphere.rayleigh_density, &atmosphere.mie_density, &atmosphere.absorption_density}) {
+    const DensityLayer& layer = layer_at(*p, altitude);
+    if (exponential_matters(layer, altitude)) smallest = std::min(smallest, 1.0 / std::abs(layer.exp_scale));
+  }
   return std::max(smallest, 1e-3);
 }
 
@@ -93,8 +124,10 @@ double smallest_scale_height(const Atmosphere& atmosphere) {
 constexpr std::array<double, 4> kGaussNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
 constexpr std::array<double, 4> kGaussWeights{0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
 
+// The altitude from altitude_at, not r_d − bottom: at planet scale the difference keeps only
+// ~1e-9 m, 1e-6 of a 1 mm scale height.
 Vec3 extinction_along(const Atmosphere& atmosphere, double r, double mu, double d) {
-  return extinction_at(atmosphere, radius_at(r, mu, d) - atmosphere.bottom_radius);
+  return extinction_at(atmosphere, altitude_at(atmosphere, r, mu, d));
 }
 
 // ∫ extinction over [d0, d1] of the ray in `panels` equal 8-point Gauss–Legendre panels.
@@ -235,10 +268,10 @@ Vec3 optical_depth(const Atmosphere& atmosphere, double r, double mu, double len
   Vec3 total{0, 0, 0};
   if (!(length > 0)) return total;
   const std::vector<double> breaks = ray_breaks(atmosphere, r, mu, length);
-  const double scale_height = smallest_scale_height(atmosphere);
   for (size_t i = 0; i + 1 < breaks.size(); ++i) {
     const double d0 = breaks[i], d1 = breaks[i + 1];
     if (d1 <= d0) continue;
+    const double scale_height = smallest_scale_height_at(atmosphere, altitude_at(atmosphere, r, mu, 0.5 * (d0 + d1)));
     const double altitude_span = std::abs(radius_at(r, mu, d1) - radius_at(r, mu, d0));
     const int panels = int(std::clamp(std::ceil(altitude_span / (2 * scale_height)), 1.0, 4096.0));
     total = add(total, gauss_legendre(atmosphere, r, mu, d0, d1, panels));
@@ -260,9 +293,10 @@ double profile_integral(const DensityProfile& profile, double from, double to) {
     const double a = std::max(cuts[i], from), b = cuts[i + 1];
     if (b <= a) continue;
     const DensityLayer& layer = layer_at(profile, 0.5 * (a + b));
-    const double middle = unclamped_density(layer, 0.5 * (a + b));
-    if (middle <= 0) continue;
-    total += middle >= 1 ? b - a : unclamped_integral(layer, a, b);
+    // Between kinks the density is wholly ≤ 0, in (0, 1) or ≥ 1; the sign is read from the
+    // integral, not the midpoint, whose exponential underflows to 0 in thin air (H = 1 mm).
+    if (unclamped_density(layer, 0.5 * (a + b)) >= 1) total += b - a;
+    else total += std::max(unclamped_integral(layer, a, b), 0.0);
   }
   return total;
 }

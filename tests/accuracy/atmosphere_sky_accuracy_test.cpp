@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -58,7 +59,17 @@ struct SkyReference {
   size_t compared = 0;
 };
 
-SkyReference reference_sky(const Scene& scene, uint32_t paths) {
+// `stride`: every stride-th pixel of each row and column; `lowest_sine`: pixels whose ray's
+// zenith component is at least this (sin 1°: 1° above the horizon); `toward_sun` and
+// `nearest_to_sun_deg`: pixels nearer the sun than this are left out (the sun's disk is off).
+struct ComparedPixels {
+  uint32_t stride = kStride;
+  double lowest_sine = std::sin(M_PI / 180);
+  Vec3 toward_sun{0, 1, 0};
+  double nearest_to_sun_deg = 0;
+};
+
+SkyReference reference_sky(const Scene& scene, uint32_t paths, const ComparedPixels& compared = {}) {
   const Atmosphere& a = *scene.atmosphere;
   reference::AtmosphereReferenceSettings settings;
   settings.samples = paths;
@@ -67,9 +78,11 @@ SkyReference reference_sky(const Scene& scene, uint32_t paths) {
   SkyReference out{std::vector<Vec3>(kWidth * kHeight, Vec3{NAN, NAN, NAN}), std::vector<Vec3>(kWidth * kHeight, Vec3{0, 0, 0})};
   reference::render_pixels(
       [&](uint32_t ii, uint32_t jj) {
-        const uint32_t i = ii * kStride + kStride / 2, j = jj * kStride + kStride / 2;
+        const uint32_t i = ii * compared.stride + compared.stride / 2, j = jj * compared.stride + compared.stride / 2;
         const Vec3 d = physics::pixel_ray(scene.camera, kWidth, kHeight, i, j);
-        if (d[1] < std::sin(M_PI / 180)) return Vec3{0, 0, 0};  // the camera's zenith is +y
+        if (d[1] < compared.lowest_sine) return Vec3{0, 0, 0};  // the camera's zenith is +y
+        const double to_sun = d[0] * compared.toward_sun[0] + d[1] * compared.toward_sun[1] + d[2] * compared.toward_sun[2];
+        if (to_sun > std::cos(compared.nearest_to_sun_deg * M_PI / 180) + 1e-9) return Vec3{0, 0, 0};
         const uint64_t key = uint64_t(j) * kWidth + i;
         const reference::SkySample s = air.sky(eye, d, key);
         out.radiance[key] = s.scattering.total;
@@ -80,7 +93,7 @@ SkyReference reference_sky(const Scene& scene, uint32_t paths) {
         }
         return Vec3{0, 0, 0};
       },
-      {.width = kWidth / kStride, .height = kHeight / kStride, .threads = 0});
+      {.width = kWidth / compared.stride, .height = kHeight / compared.stride, .threads = 0});
   out.compared = size_t(std::count_if(out.radiance.begin(), out.radiance.end(), [](const Vec3& v) { return !std::isnan(v[0]); }));
   return out;
 }
@@ -89,6 +102,7 @@ struct SkyError {
   double relative_mean = 0;         // Σ|gpu − ref| / Σ ref
   double signed_relative = 0;       // Σ(gpu − ref) / Σ ref
   double largest = 0;               // the largest |gpu − ref| / ref of a channel
+  size_t largest_at = 0;            // its pixel (j · width + i)
   double noise_per_pixel = 0;       // the reference's standard error over its value, mean over the channels
   double noise_of_signed_sum = 0;   // √Σ se² / Σ ref
 };
@@ -107,7 +121,7 @@ SkyError sky_error(const Texels& gpu, const SkyReference& ref) {
       sum += r;
       variance += ref.standard_error[p][c] * ref.standard_error[p][c];
       noise += ref.standard_error[p][c] / r;
-      e.largest = std::max(e.largest, std::abs(g - r) / r);
+      if (std::abs(g - r) / r > e.largest) e.largest = std::abs(g - r) / r, e.largest_at = p;
       ++n;
     }
   }
@@ -124,13 +138,14 @@ class AtmosphereSkyAccuracy : public VulkanAccuracyTest {
   // multiple-scattering term on or off, the sun's disk off.
   // `variant` "raymarch": the sky pass's per-pixel march instead (its own multiple-scattering
   // term likewise).
-  LoadedConfig sky(double elevation_deg, bool multiscattering, int width = 192, int height = 108, const std::string& variant = "sky_view_lut") {
+  // width 0: the LUT's default size (and samples); `samples` > 0: the LUT's sample count.
+  LoadedConfig sky(double elevation_deg, bool multiscattering, int width = 192, int height = 108, const std::string& variant = "sky_view_lut",
+                   int samples = 0) {
     const std::string ms = multiscattering ? "true" : "false";
-    LoadedConfig loaded = accuracy::load_linear(
-        kConfig, registry_,
-        {.sets = {"sky_view.multiscattering=" + ms, "sky.multiscattering=" + ms, "sky_view.width=" + std::to_string(width),
-                  "sky_view.height=" + std::to_string(height), "sky.sun_disk=false"},
-         .variants = {"sky=" + variant}});
+    std::vector<std::string> sets = {"sky_view.multiscattering=" + ms, "sky.multiscattering=" + ms, "sky.sun_disk=false"};
+    if (width > 0) sets.insert(sets.end(), {"sky_view.width=" + std::to_string(width), "sky_view.height=" + std::to_string(height)});
+    if (samples > 0) sets.insert(sets.end(), {"sky_view.min_samples=" + std::to_string(samples), "sky_view.max_samples=" + std::to_string(samples)});
+    LoadedConfig loaded = accuracy::load_linear(kConfig, registry_, {.sets = sets, .variants = {"sky=" + variant}});
     loaded.config.scene.lights[0].direction = sun_travel(elevation_deg);
     return loaded;
   }
@@ -151,6 +166,49 @@ TEST_F(AtmosphereSkyAccuracy, SingleScatteringIsWithinHalfAPercentOfTheReference
     std::printf("single scattering, sun %g° up, per-pixel march (40 samples): relative mean error %.3g (signed %.3g), largest %.3g\n",
                 elevation, march.relative_mean, march.signed_relative, march.largest);
     EXPECT_LT(march.relative_mean, 5e-3) << "sun " << elevation << "° up, raymarch";
+  }
+}
+
+// The hard view (issue 30): the camera pitched 25° up (the horizon in the image's lowest
+// rows), the sun 2.5° straight below the centre column's pixel nearest `pixel_elevation_deg`
+// up. Compared: every 2nd pixel of each row and column from the horizon up, but those
+// nearer the sun than 2.5°. Returns the direction toward the sun and the pixels' choice.
+ComparedPixels hard_view(LoadedConfig& loaded, double pixel_elevation_deg) {
+  Camera& camera = loaded.config.scene.camera;
+  camera.position = {0, 2, 0};
+  camera.target = {0, 2 + std::tan(25 * M_PI / 180), -1};
+  constexpr uint32_t kStep = 2, kColumn = kWidth / 2 + kStep / 2;
+  Vec3 pixel{0, 0, -1};
+  for (uint32_t j = kStep / 2; j < kHeight; j += kStep) {
+    const Vec3 d = physics::pixel_ray(camera, kWidth, kHeight, kColumn, j);
+    if (std::abs(std::asin(d[1]) - pixel_elevation_deg * M_PI / 180) < std::abs(std::asin(pixel[1]) - pixel_elevation_deg * M_PI / 180)) pixel = d;
+  }
+  // Down from the pixel by 2.5° in the vertical plane through it.
+  const double down = 2.5 * M_PI / 180, e = std::asin(pixel[1]) - down;
+  const double horizontal = std::hypot(pixel[0], pixel[2]);
+  const Vec3 toward_sun{std::cos(e) * pixel[0] / horizontal, std::sin(e), std::cos(e) * pixel[2] / horizontal};
+  loaded.config.scene.lights[0].direction = {-toward_sun[0], -toward_sun[1], -toward_sun[2]};
+  return {.stride = kStep, .lowest_sine = 0, .toward_sun = toward_sun, .nearest_to_sun_deg = 2.5};
+}
+
+// Issue 30: every default within 0.5 % at the WORST pixel of a view with the sun 2.5° from a
+// pixel and the horizon in it (single scattering, against the reference's quadrature).
+TEST_F(AtmosphereSkyAccuracy, SingleScatteringWorstPixelNearTheSunAndTheHorizon) {
+  for (const double pixel_elevation : {5.0, 32.0}) {
+    LoadedConfig base = sky(0, false);
+    const ComparedPixels compared = hard_view(base, pixel_elevation);
+    const SkyReference ref = reference_sky(base.config.scene, 0, compared);
+    const double sun_up = std::asin(compared.toward_sun[1]) * 180 / M_PI;
+    // The defaults (asserted), then Hillaire 2020's 192 × 108 at 40 samples, the default before (printed).
+    for (const auto& [w, h, samples, variant] : {std::tuple{0, 0, 0, "sky_view_lut"}, {0, 0, 0, "raymarch"}, {192, 108, 40, "sky_view_lut"}}) {
+      LoadedConfig loaded = sky(0, false, w, h, variant, samples);
+      hard_view(loaded, pixel_elevation);
+      const SkyError e = sky_error(render(loaded), ref);
+      std::printf("hard view, sun %.3g° up, %s (%s), %zu pixels: relative mean error %.3g (signed %.3g), worst pixel %.3g (%zu, %zu)\n",
+                  sun_up, variant, w == 0 ? "defaults" : "sky view 192x108, 40 samples", ref.compared, e.relative_mean, e.signed_relative,
+                  e.largest, e.largest_at % kWidth, e.largest_at / kWidth);
+      if (w == 0) EXPECT_LT(e.largest, 5e-3) << variant << ", sun " << sun_up << "° up";
+    }
   }
 }
 

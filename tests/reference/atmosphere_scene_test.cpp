@@ -11,6 +11,7 @@
 // the air; a sky pixel against AtmosphereReference::sky; scenes without an atmosphere
 // unchanged bit for bit.
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -190,6 +191,24 @@ TEST(ReferenceAtmosphere, WithoutAnAtmosphereTheImageIsTheSameBitForBitAsBefore)
             0x8c28322b066e1277ull);
   EXPECT_EQ(image_bits_hash(render_image(Renderer(plain.config.scene), {.width = 16, .height = 9, .threads = 2})),
             0xe5fee58bcfbe55bcull);
+}
+
+// Thin air (docs/reference.md): the noon demo with a Rayleigh scale height of 1 mm (the
+// loader's floor, `rayleigh_scale_height: 0.001`) at 16×9 on two threads. Before
+// physics::optical_depth clipped the altitudes where a layer's density is negligible, each
+// call ran 4096 panels: the image took 275 s (a 2×1 image had not finished after 60 s).
+TEST(ReferenceAtmosphere, ThinAirRendersInSecondsWithFinitePixels) {
+  LoadedConfig loaded = load_shipped("demo_atmosphere_noon.json", 16, 9);
+  ASSERT_TRUE(loaded.config.scene.atmosphere.has_value());
+  loaded.config.scene.atmosphere->rayleigh_density = DensityProfile{{}, {0, 1, -1 / 1e-3, 0, 0}};
+  const auto start = std::chrono::steady_clock::now();
+  const Renderer renderer(loaded.config.scene);
+  const ReferenceImage image = render_image(renderer, {.width = 16, .height = 9, .threads = 2});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("thin air (H_R = 1 mm) 16x9, 2 threads: %.2f s\n", seconds);
+  EXPECT_LT(seconds, 20.0);
+  ASSERT_EQ(image.rgb.size(), size_t(16 * 9 * 3));
+  for (double v : image.rgb) ASSERT_TRUE(std::isfinite(v) && v >= 0);
 }
 
 }  // namespace
