@@ -19,8 +19,9 @@
 //   convex solid costs two layers (its back faces end its inside path and shade nothing);
 //   with fewer layers than a pixel has, the nearest ones are left out.
 // In sorted and weighted_oit solid objects' paths inside end at their back faces (a step
-// draws them into back_depth) or at the opaque surface, whichever is nearer: convex
-// solids, one per pixel; in depth_peeling at the layer behind.
+// draws them into back_depth, and their float32 distance into back_distance) or at the
+// opaque surface, whichever is nearer: convex solids, one per pixel; in depth_peeling at
+// the layer behind (its distance written beside its depth).
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
@@ -96,22 +97,29 @@ struct TranslucencyTable : PassTable {
   // Internal targets.
   SlotHandle back_depth = internal("back_depth", ResourceKind::texture2d, Format::d32_float, SizeSpec::of_output(),
                                    "the nearest back face of the solid translucent objects");
+  // A solid's path ends at its back face's distance read as float32: a 32-bit depth at 30 m
+  // (near 0.05 m) resolves only ~1 mm, 2e-3 of a 0.5 m path (issue 30's fp16 goal).
+  SlotHandle back_distance = internal("back_distance", ResourceKind::texture2d, Format::r32_float, SizeSpec::of_output(),
+                                      "the distance (m) from the camera to back_depth's surface (depth_peeling: the odd layers')");
   SlotHandle oit_accumulation = internal("oit_accumulation", ResourceKind::texture2d, Format::rgba16_float, SizeSpec::of_output(),
                                          "weighted_oit: Σ w·radiance, Σ w·opacity");
   SlotHandle oit_optical_depth = internal("oit_optical_depth", ResourceKind::texture2d, Format::rgba16_float, SizeSpec::of_output(),
                                       "weighted_oit: Σ −ln T per channel, the layers' transmittances multiplied");
   SlotHandle peel_depth = internal("peel_depth", ResourceKind::texture2d, Format::d32_float, SizeSpec::of_output(),
                                    "depth_peeling: the even layers' depth (back_depth holds the odd ones')");
+  SlotHandle peel_distance = internal("peel_distance", ResourceKind::texture2d, Format::r32_float, SizeSpec::of_output(),
+                                      "depth_peeling: the distance (m) from the camera to peel_depth's surface");
   // Steps.
   // depth_peeling clears back_depth to the far plane: nothing peeled yet.
-  StepHandle back_faces = step("back_faces", PassKind::graphics, with_surface_inputs({{back_depth, Usage::depth_attachment}}));
+  StepHandle back_faces = step("back_faces", PassKind::graphics,
+                               with_surface_inputs({{back_depth, Usage::depth_attachment}, {back_distance, Usage::color_attachment}}));
   StepHandle surfaces = step("surfaces", PassKind::graphics,
                              with_surface_inputs({{color, Usage::color_attachment_load}, {back_depth, Usage::sampled},
-                                                  {refracted_color, Usage::sampled}}),
+                                                  {back_distance, Usage::sampled}, {refracted_color, Usage::sampled}}),
                              only_in({sorted}));
   StepHandle accumulate = step("accumulate", PassKind::graphics,
                                with_surface_inputs({{oit_accumulation, Usage::color_attachment}, {oit_optical_depth, Usage::color_attachment},
-                                                    {back_depth, Usage::sampled}}),
+                                                    {back_depth, Usage::sampled}, {back_distance, Usage::sampled}}),
                                only_in({weighted_oit}));
   StepHandle resolve = step("resolve", PassKind::graphics,
                             {{color, Usage::color_attachment_load}, {oit_accumulation, Usage::sampled}, {oit_optical_depth, Usage::sampled}},
@@ -122,6 +130,9 @@ struct TranslucencyTable : PassTable {
   // Layer k's depth target, and the layer peeled before it (its fragments lie in front of it).
   SlotHandle layer_depth(size_t k) const { return k % 2 == 0 ? peel_depth : back_depth; }
   SlotHandle behind_layer(size_t k) const { return k % 2 == 0 ? back_depth : peel_depth; }
+  // Their distances (m) from the camera, written beside the depths.
+  SlotHandle layer_distance(size_t k) const { return k % 2 == 0 ? peel_distance : back_distance; }
+  SlotHandle behind_distance(size_t k) const { return k % 2 == 0 ? back_distance : peel_distance; }
 
  private:
   std::array<PeelSteps, kMaxPeeledLayers> peel_steps() {
@@ -130,10 +141,13 @@ struct TranslucencyTable : PassTable {
       const StepCondition while_peeled = only_in_while(depth_peeling, layers, int64_t(k));
       const std::string layer = std::to_string(k);
       steps[k].depth = step("peel_depth_" + layer, PassKind::graphics,
-                            with_surface_inputs({{layer_depth(k), Usage::depth_attachment}, {behind_layer(k), Usage::sampled}}), while_peeled);
+                            with_surface_inputs({{layer_depth(k), Usage::depth_attachment}, {layer_distance(k), Usage::color_attachment},
+                                                 {behind_layer(k), Usage::sampled}}),
+                            while_peeled);
       steps[k].shade = step("peel_shade_" + layer, PassKind::graphics,
                             with_surface_inputs({{color, Usage::color_attachment_load}, {layer_depth(k), Usage::depth_read},
-                                                 {behind_layer(k), Usage::sampled}, {refracted_color, Usage::sampled}}),
+                                                 {behind_layer(k), Usage::sampled}, {behind_distance(k), Usage::sampled},
+                                                 {refracted_color, Usage::sampled}}),
                             while_peeled);
     }
     return steps;
@@ -196,12 +210,13 @@ class TranslucencyExecution final : public PassExecution {
       pd.label = s.name() + " back faces' depth";
       pd.vertex_buffers = {plumbing::SceneGeometry::vertex_layout()};
       pd.depth = {Format::d32_float, true, rhi::CompareFunction::less};
+      pd.colors = {{Format::r32_float, BlendMode::replace}};  // the kept face's distance
       pd.cull = CullMode::front;
       p.back_depth = plumbing::create_render_program(s.device, pd, "scene.vert", "translucency_depth.frag", *like);
     }
     // Peeling keeps the farthest surface in front of the layer before; its shading matches that depth exactly
     // (scene.vert's invariant position).
-    p.peel_depth = surface("peeled layer's depth", "translucency_peel_depth.frag", {}, CullMode::none, like,
+    p.peel_depth = surface("peeled layer's depth", "translucency_peel_depth.frag", {{Format::r32_float, BlendMode::replace}}, CullMode::none, like,
                            {Format::d32_float, true, rhi::CompareFunction::greater});
     const rhi::DepthStencilState at_layer = {Format::d32_float, false, rhi::CompareFunction::equal};
     p.peel_transmittance_all = surface("peeled × transmittance", "translucency_transmittance.frag", {{color, BlendMode::multiply}},
@@ -290,17 +305,17 @@ class TranslucencyExecution final : public PassExecution {
   }
   bool shadowed(const PassSetup& c) const { return c.bound(t_.shadow_map) && c.bound(t_.light_view) && c.param(t_.shadows); }
 
-  // Sets 0, 2 and 3 of the surface programs; `back` the solid objects' back-face depth
-  // (a stand-in while it is being drawn), `refracted` the colour refracting solids show (a
-  // stand-in in the steps that do not declare reading it).
-  void bind_surface_sets(PassContext& c, rhi::TextureViewId back, rhi::TextureViewId refracted) {
+  // Sets 0, 2 and 3 of the surface programs; `back` the solid objects' back-face depth and
+  // `back_distance` its distance (stand-ins while they are being drawn), `refracted` the
+  // colour refracting solids show (a stand-in in the steps that do not declare reading it).
+  void bind_surface_sets(PassContext& c, rhi::TextureViewId back, rhi::TextureViewId back_distance, rhi::TextureViewId refracted) {
     using rhi::BindGroupEntry;
     const plumbing::RenderProgram& p = programs_.transmittance_back;
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
     c.encoder.set_bind_group(0, c.bind_group(p.layouts[0], {BindGroupEntry::of(0, c.buffer(t_.frame)), BindGroupEntry::of(1, block_),
                                                             BindGroupEntry::of(2, c.view(t_.depth)), BindGroupEntry::of(3, back),
                                                             BindGroupEntry::of(4, nearest),
-                                                            BindGroupEntry::of(5, refracted)}));
+                                                            BindGroupEntry::of(5, refracted), BindGroupEntry::of(6, back_distance)}));
     const bool shadow = shadowed(c);
     c.encoder.set_bind_group(2, c.bind_group(p.layouts[2], {BindGroupEntry::of(0, shadow ? c.view(t_.shadow_map) : textures_->white()),
                                                             BindGroupEntry::of(1, nearest),
@@ -331,7 +346,7 @@ class TranslucencyExecution final : public PassExecution {
 
   void draw_solid_back_faces(PassContext& c) {
     c.encoder.set_pipeline(programs_.back_depth.pipeline);
-    bind_surface_sets(c, textures_->white(), textures_->white());
+    bind_surface_sets(c, textures_->white(), textures_->white(), textures_->white());
     for (const plumbing::GpuObject& o : geometry_->objects()) {
       if (o.translucent && o.volume == VolumeKind::solid) plumbing::SceneGeometry::draw(c.encoder, 1, o);
     }
@@ -343,6 +358,7 @@ class TranslucencyExecution final : public PassExecution {
     rhi::RenderPassDesc pass;
     pass.label = c.name();
     pass.depth = {c.view(t_.back_depth), rhi::LoadOp::clear, 1.0f, false};
+    pass.colors = {{c.view(t_.back_distance), rhi::LoadOp::clear, {0, 0, 0, 0}}};
     c.encoder.begin_render_pass(pass);
     if (!c.variant_is(t_.depth_peeling)) draw_solid_back_faces(c);
     c.encoder.end_render_pass();
@@ -353,9 +369,10 @@ class TranslucencyExecution final : public PassExecution {
     rhi::RenderPassDesc pass;
     pass.label = c.name();
     pass.depth = {c.view(t_.layer_depth(k)), rhi::LoadOp::clear, 0.0f, false};
+    pass.colors = {{c.view(t_.layer_distance(k)), rhi::LoadOp::clear, {0, 0, 0, 0}}};
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(programs_.peel_depth.pipeline);
-    bind_surface_sets(c, c.view(t_.behind_layer(k)), textures_->white());
+    bind_surface_sets(c, c.view(t_.behind_layer(k)), textures_->white(), textures_->white());
     for (const plumbing::GpuObject& o : geometry_->objects()) {
       if (o.translucent) plumbing::SceneGeometry::draw(c.encoder, 1, o);
     }
@@ -369,7 +386,8 @@ class TranslucencyExecution final : public PassExecution {
     pass.colors = {{c.view(t_.color), rhi::LoadOp::load}};
     pass.depth = {c.view(t_.layer_depth(k)), rhi::LoadOp::load, 0.0f, true};
     c.encoder.begin_render_pass(pass);
-    bind_surface_sets(c, c.view(t_.behind_layer(k)), refracting(c) ? c.view(t_.refracted_color) : textures_->white());
+    bind_surface_sets(c, c.view(t_.behind_layer(k)), c.view(t_.behind_distance(k)),
+                      refracting(c) ? c.view(t_.refracted_color) : textures_->white());
     const SurfacePrograms& p = programs_;
     for (const plumbing::GpuObject& o : geometry_->objects()) {
       if (!o.translucent) continue;
@@ -387,7 +405,7 @@ class TranslucencyExecution final : public PassExecution {
     pass.label = c.name();
     pass.colors = {{c.view(t_.color), rhi::LoadOp::load}};
     c.encoder.begin_render_pass(pass);
-    bind_surface_sets(c, c.view(t_.back_depth), refracting(c) ? c.view(t_.refracted_color) : textures_->white());
+    bind_surface_sets(c, c.view(t_.back_depth), c.view(t_.back_distance), refracting(c) ? c.view(t_.refracted_color) : textures_->white());
     const SurfacePrograms& p = programs_;
     for (const plumbing::GpuObject* o : back_to_front(*c.scene)) {
       // A solid is seen through its front faces (its inside path reaches the back ones).
@@ -411,7 +429,7 @@ class TranslucencyExecution final : public PassExecution {
     pass.label = c.name();
     pass.colors = {{c.view(t_.oit_accumulation), rhi::LoadOp::clear, {0, 0, 0, 0}}, {c.view(t_.oit_optical_depth), rhi::LoadOp::clear, {0, 0, 0, 0}}};
     c.encoder.begin_render_pass(pass);
-    bind_surface_sets(c, c.view(t_.back_depth), textures_->white());
+    bind_surface_sets(c, c.view(t_.back_depth), c.view(t_.back_distance), textures_->white());
     for (const plumbing::GpuObject& o : geometry_->objects()) {
       if (!o.translucent) continue;
       c.encoder.set_pipeline(o.volume == VolumeKind::solid ? programs_.accumulate_front.pipeline : programs_.accumulate_all.pipeline);

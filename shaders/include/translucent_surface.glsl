@@ -27,6 +27,7 @@ layout(set = 0, binding = 2) uniform texture2D scene_depth;  // the opaque surfa
 layout(set = 0, binding = 3) uniform texture2D back_depth;   // the solid translucent objects' back faces
 layout(set = 0, binding = 4) uniform sampler nearest;
 layout(set = 0, binding = 5) uniform texture2D refracted_color;  // the colour before the pass (screen-space refraction)
+layout(set = 0, binding = 6) uniform texture2D back_distance;    // r32f: back_depth's surface's distance from the camera (m)
 
 layout(set = 3, binding = 0) uniform FogBlock { FogFrame f; } fog;
 layout(set = 3, binding = 1) uniform texture3D integrated_scattering;
@@ -46,15 +47,18 @@ float view_depth_of(float depth) { return linear_view_depth(depth, translucency.
 // the shell crossed at the refracted angle, or (solid) from this fragment to the nearer of
 // the solids' nearest back face and the opaque surface (the far plane where neither is
 // drawn) — the material's thickness where that back face lies in front of the fragment
-// (another solid's, nearer: back_depth holds one back face a pixel).
+// (another solid's, nearer: back_depth holds one back face a pixel). A back face's end is
+// its float32 distance (back_distance), not its 32-bit depth: ~1e-3 of the path at 30 m.
 float inside_path(float cos_view, float distance_to_fragment) {
   const int kind = int(object.attenuation.w);
   const float thickness = object.translucency.w;
   if (kind == kVolumeThinWalled) return 0.0;
   if (kind == kVolumeShell) return shell_path_length(thickness, object.translucency.z, cos_view);
   const ivec2 px = ivec2(gl_FragCoord.xy);
-  const float end = min(texelFetch(sampler2D(back_depth, nearest), px, 0).r, texelFetch(sampler2D(scene_depth, nearest), px, 0).r);
+  const float back = texelFetch(sampler2D(back_depth, nearest), px, 0).r, opaque = texelFetch(sampler2D(scene_depth, nearest), px, 0).r;
+  const float end = min(back, opaque);
   if (end <= gl_FragCoord.z) return thickness;
+  if (back < opaque) return max(texelFetch(sampler2D(back_distance, nearest), px, 0).r - distance_to_fragment, 0.0);
   const float z = view_depth_of(gl_FragCoord.z);
   return (view_depth_of(end) - z) * distance_to_fragment / z;  // view depth to distance along this ray
 }

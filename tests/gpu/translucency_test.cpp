@@ -116,6 +116,34 @@ TEST_P(Translucency, ASolidSlabAbsorbsAlongThePathAtEachAngle) {
   }
 }
 
+// A solid slab 1 m thick 30 m away (near 0.05 m), T down to 4e-4 (σt·d = 7.8): a 32-bit
+// depth there resolves ~1 mm, ~1e-3 of the path and ~1e-2 of T (measured before the back
+// faces' float distance: 9 fp16 steps at worst). Each pixel's e^(−σt·d/|cos θ|) within two
+// fp16 steps: one the colour target's own conversion (lavapipe rounds toward zero), one
+// for the path (≤ 1.3e-4 of it on the deepest channel). weighted_oit sums −ln T in half
+// float: one step of it (4e-3 of T here) on top.
+TEST_P(Translucency, AFarSolidAbsorbsAlongItsPathToAnFp16Step) {
+  const std::array<double, 3> c{0.5, 0.1, 0.02};
+  const double distance = 0.5, thickness = 1.0;
+  const std::string far_camera = R"("camera": { "position": [0, 0, 30], "target": [0, 0, 0], "fov_y_deg": 4, "near": 0.05 },)";
+  const Texels image = render(config(R"("glass": { "albedo": [1, 1, 1], "transmission": 1, "ior": 1, "volume": "solid",
+                                                  "attenuation_color": [0.5, 0.1, 0.02], "attenuation_distance": 0.5 })",
+                                     R"(, { "shape": "box", "size": [20, 20, 1], "material": "glass" })", variant(), "", far_camera));
+  double worst_steps = 0;
+  for (uint32_t j = 0; j < kTranslucencyHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucencyWidth; ++i) {
+      for (size_t k = 0; k < 3; ++k) {
+        const double want = physics::slab_transmittance(physics::sigma_t_from_color(c[k], distance), thickness, cos_to_z(i, j));
+        const double step = fp16_steps(want) / 2;  // one step of the rgba16_float colour at `want`
+        const double oit = variant() == "weighted_oit" ? want * fp16_steps(-std::log(want)) / 2 : 0;  // one step of −ln T
+        worst_steps = std::max(worst_steps, std::abs(at(image, i, j, k) - want) / step);
+        EXPECT_NEAR(at(image, i, j, k), want, 2 * step + oit) << "pixel " << i << "," << j << " channel " << k;
+      }
+    }
+  }
+  std::printf("solid 30 m away (%s): worst |rendered - exact| %.2f fp16 steps\n", variant().c_str(), worst_steps);
+}
+
 // A solid slab of IOR 1.5 turned 45° about y: the ray refracts (Snell), so it absorbs
 // along the slab's thickness over cos θt, not over cos θi (RTR4 §14.5.2): closed form
 // F L_env + (1 − F) e^(−σt d / cos θt) at each pixel's angle to the slab's normal.
