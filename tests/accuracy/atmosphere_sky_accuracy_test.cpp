@@ -21,6 +21,7 @@
 // 6.5-7.0 % at sunset at every LUT size and for the march (signed −4.5 ± 0.3 %, −6.9 ±
 // 0.3 %; the reference's noise 4 % a pixel).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -43,6 +44,8 @@ namespace {
 
 constexpr uint32_t kWidth = 64, kHeight = 36, kStride = 4;
 const std::string kConfig = std::string(::volgraph::testing::source_dir()) + "/configs/tests/atmosphere_sky.json";
+// The name the Bruneton amendment of kConfig loads under (its include resolves beside it).
+const std::string kBrunetonConfig = std::string(::volgraph::testing::source_dir()) + "/configs/tests/atmosphere_sky_bruneton.json";
 
 // The sun `elevation_deg` up, 20° right of the camera's azimuth (−z), as a light's
 // direction of travel.
@@ -151,6 +154,21 @@ class AtmosphereSkyAccuracy : public VulkanAccuracyTest {
   }
   Texels render(const LoadedConfig& loaded) { return accuracy::render_gpu(gpu_->device(), loaded); }
 
+  // The config's sky through Bruneton 2017's tables (graphs/atmosphere_bruneton.json's
+  // amendment, wired to this config's transmittance LUT) at one order (single scattering),
+  // the sun's disk off; `sets`: more "PASS.PARAM=VALUE" (the tables pass is `bruneton`).
+  LoadedConfig bruneton_sky(const std::vector<std::string>& sets = {}) {
+    const std::string text = R"({ "include": ["atmosphere_sky.json"], "graph": { "passes": [
+      { "name": "bruneton", "type": "atmosphere_bruneton_tables", "params": { "orders": 1 },
+        "inputs": { "transmittance": "transmittance_lut.transmittance" } },
+      { "name": "sky", "variant": "bruneton", "inputs": { "scattering": "bruneton.scattering",
+        "single_mie_scattering": "bruneton.single_mie_scattering", "irradiance": "bruneton.irradiance",
+        "sky_view": null, "multiscattering": null } } ] } })";
+    std::vector<std::string> all = {"sky.sun_disk=false"};
+    all.insert(all.end(), sets.begin(), sets.end());
+    return accuracy::load_linear_text(kBrunetonConfig, text, registry_, {.sets = all});
+  }
+
 };
 
 TEST_F(AtmosphereSkyAccuracy, SingleScatteringIsWithinHalfAPercentOfTheReference) {
@@ -208,6 +226,44 @@ TEST_F(AtmosphereSkyAccuracy, SingleScatteringWorstPixelNearTheSunAndTheHorizon)
                   sun_up, variant, w == 0 ? "defaults" : "sky view 192x108, 40 samples", ref.compared, e.relative_mean, e.signed_relative,
                   e.largest, e.largest_at % kWidth, e.largest_at / kWidth);
       if (w == 0) EXPECT_LT(e.largest, 5e-3) << variant << ", sun " << sun_up << "° up";
+    }
+  }
+}
+
+// Issue 30 for Bruneton 2017's sky: its tables (one order: single scattering, the tables'
+// first order) on the same hard view against the reference's single scattering, at the
+// defaults (asserted) and at finer settings (printed).
+// Measured on lavapipe (CPU), worst pixel, sun 2.25° / 30.7° up (first frame, orders 1):
+// - defaults (8 × 32 × 128 × 32, 50 trapezoids): 3.9 % (the horizon, centre) / 5.5 % (beside
+//   the sun); mean 0.47 % / 1.2 % (1.2-2.6 s);
+// - 200 trapezoids, mu_s 64: 1.1 % (the horizon, the image's edge) / 0.26 % (7.4 s).
+// Sources, one setting at a time: beside the sun the trapezoids (400: 0.57 %; nu 32, mu 512,
+// r 128, transmittance 1024 × 256: no change); at the horizon at sunset mu_s (64: 1.1 %,
+// 128 with 400 trapezoids: 0.92 %), not nu (16, 32), mu (256), the transmittance LUT
+// (1024 × 256) or the trapezoids (400). The 0.5 % goal is not met yet: the bound asserted
+// is the defaults' measured error (issue 30 stays open for Bruneton).
+TEST_F(AtmosphereSkyAccuracy, BrunetonSingleScatteringWorstPixelNearTheSunAndTheHorizon) {
+  const std::vector<std::vector<std::string>> settings = {{}, {"bruneton.samples=200", "bruneton.nu_mu_s=512"}};
+  for (const double pixel_elevation : {5.0, 32.0}) {
+    LoadedConfig base = sky(0, false);
+    const ComparedPixels compared = hard_view(base, pixel_elevation);
+    const SkyReference ref = reference_sky(base.config.scene, 0, compared);
+    const double sun_up = std::asin(compared.toward_sun[1]) * 180 / M_PI;
+    for (const std::vector<std::string>& sets : settings) {
+      LoadedConfig loaded = bruneton_sky(sets);
+      hard_view(loaded, pixel_elevation);
+      const auto start = std::chrono::steady_clock::now();
+      const Texels gpu = render(loaded);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const SkyError e = sky_error(gpu, ref);
+      std::string what = sets.empty() ? "defaults" : "";
+      for (const std::string& s : sets) what += (what.empty() ? "" : ", ") + s;
+      std::printf("hard view, sun %.3g° up, bruneton (%s; %.1f s a first frame), %zu pixels: relative mean error %.3g (signed %.3g), "
+                  "worst pixel %.3g (%zu, %zu)\n",
+                  sun_up, what.c_str(), seconds, ref.compared, e.relative_mean, e.signed_relative, e.largest, e.largest_at % kWidth,
+                  e.largest_at / kWidth);
+      // The defaults' measured 3.9 % / 5.5 % (the goal, 0.5 %, is not met yet).
+      if (sets.empty()) EXPECT_LT(e.largest, 6e-2) << "bruneton, sun " << sun_up << "° up";
     }
   }
 }
