@@ -51,6 +51,12 @@ SharedGpus& shared_gpus() {
   return *shared;
 }
 
+// A device of its own, destroyed by finish().
+std::unique_ptr<GpuUnderTest> create_own_gpu(Backend backend) {
+  if (backend == Backend::webgpu) return create_webgpu_gpu();
+  return std::make_unique<VulkanGpu>();
+}
+
 // A shared device lent to one test: finish() hands it back when the test caused no
 // message, destroys it otherwise.
 class LentGpu final : public GpuUnderTest {
@@ -84,11 +90,6 @@ std::vector<Backend> gpu_backends() {
 }
 
 std::string backend_test_name(const ::testing::TestParamInfo<Backend>& info) { return std::string(backend_name(info.param)); }
-
-std::unique_ptr<GpuUnderTest> create_own_gpu(Backend backend) {
-  if (backend == Backend::webgpu) return create_webgpu_gpu();
-  return std::make_unique<VulkanGpu>();
-}
 
 std::unique_ptr<GpuUnderTest> create_gpu(Backend backend) {
   std::unique_ptr<GpuUnderTest> gpu = shared_gpus().take(backend);

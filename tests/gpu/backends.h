@@ -45,8 +45,6 @@ class GpuUnderTest {
 // destroyed, and their destruction validated, when the tests end (a message then fails
 // the run, as a global failure).
 std::unique_ptr<GpuUnderTest> create_gpu(Backend backend);
-// A device of its own, destroyed by finish(): for tests of device creation and teardown.
-std::unique_ptr<GpuUnderTest> create_own_gpu(Backend backend);
 
 // Made in the backend's file (webgpu_gpu.cpp, or no_webgpu_gpu.cpp without Dawn).
 bool webgpu_built();
