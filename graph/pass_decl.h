@@ -7,6 +7,8 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <string>
 #include <variant>
@@ -185,6 +187,19 @@ struct VariantHandle {
   uint16_t index = 0;
   friend bool operator==(VariantHandle, VariantHandle) = default;
 };
+// A choice parameter read as the pass's own enum: each choice's value and name, stated
+// once in the table, so an execution compares values, never names.
+template <typename Enum>
+struct ChoiceHandle {
+  ParamHandle<std::string> text;
+  std::vector<std::pair<Enum, std::string>> choices;
+  Enum value_of(const std::string& name) const {
+    for (const auto& [value, choice_name] : choices) {
+      if (choice_name == name) return value;
+    }
+    throw std::logic_error("no choice named " + name);  // the loader accepts only declared choices
+  }
+};
 
 // What a slot may add to its kind, usage and doc.
 struct SlotOptions {
@@ -219,6 +234,17 @@ class PassTable {
   ParamHandle<std::array<double, 3>> vec3(std::string name, std::array<double, 3> def, double min, double max,
                                           std::string unit, std::string doc);
   ParamHandle<std::string> choice(std::string name, std::string def, std::vector<std::string> choices, std::string doc);
+  template <typename Enum>
+    requires std::is_enum_v<Enum>
+  ChoiceHandle<Enum> choice(std::string name, Enum def, std::vector<std::pair<Enum, std::string>> choices, std::string doc) {
+    std::vector<std::string> names;
+    std::string def_name;
+    for (const auto& [value, choice_name] : choices) {
+      names.push_back(choice_name);
+      if (value == def) def_name = choice_name;
+    }
+    return {choice(std::move(name), std::move(def_name), std::move(names), std::move(doc)), std::move(choices)};
+  }
   SlotHandle input(std::string name, ResourceKind kind, Usage usage, std::string doc, SlotOptions options = {});
   SlotHandle optional_input(std::string name, ResourceKind kind, Usage usage, std::string doc, SlotOptions options = {});
   SlotHandle output(std::string name, ResourceKind kind, Usage usage, Format format, SizeSpec size, std::string doc,

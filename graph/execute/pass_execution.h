@@ -41,6 +41,10 @@ class PassSetup {
   const T& param(ParamHandle<T> handle) const {
     return std::get<T>(param_value(handle.index));
   }
+  template <typename Enum>
+  Enum param(const ChoiceHandle<Enum>& handle) const {
+    return handle.value_of(param(handle.text));
+  }
   const VariantDecl& variant() const { return graph_pass().decl->variants[graph_pass().variant]; }
   bool variant_is(VariantHandle v) const { return graph_pass().variant == v.index; }
   // Which step is recording (a pass made of steps, PassDecl::steps).

@@ -27,8 +27,10 @@ struct FroxelVoxelizeTable : PassTable {
   ParamHandle<int64_t> slices = integer("slices", 64, 1, 512, "", "froxels in view depth");
   ParamHandle<double> near = number("near", 0.1, 1e-3, 1e5, "m", "view depth where the grid starts");
   ParamHandle<double> far = number("far", 100, 1e-2, 1e6, "m", "view depth where the grid ends");
-  ParamHandle<std::string> distribution =
-      choice("distribution", "exponential", {"exponential", "linear"}, "how slices are spaced in view depth");
+  ChoiceHandle<physics::FroxelDistribution> distribution =
+      choice("distribution", physics::FroxelDistribution::exponential,
+             {{physics::FroxelDistribution::exponential, "exponential"}, {physics::FroxelDistribution::linear, "linear"}},
+             "how slices are spaced in view depth");
   ParamHandle<bool> jitter = flag("jitter", true,
                                  "move each froxel's ray across it and its sub-samples along it every frame (frame 0: the centre ray, the strata's centres)");
   ParamHandle<std::array<double, 3>> ambient =
@@ -77,8 +79,7 @@ class FroxelVoxelizeExecution final : public PassExecution {
     inputs_.grid = s.extent(t_.media_scattering);
     inputs_.range.near = s.param(t_.near);
     inputs_.range.far = s.param(t_.far);
-    inputs_.range.distribution = s.param(t_.distribution) == "linear" ? physics::FroxelDistribution::linear
-                                                                       : physics::FroxelDistribution::exponential;
+    inputs_.range.distribution = s.param(t_.distribution);
     inputs_.ambient_radiance = s.param(t_.ambient);
     inputs_.jitter = s.param(t_.jitter);
   }

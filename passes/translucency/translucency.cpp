@@ -54,6 +54,9 @@ struct GpuTranslucencyBlock {
   }
 };
 
+// What a solid of IOR ≠ 1 shows behind it (the `refraction` choice).
+enum class Refraction { screen_space, none };
+
 struct TranslucencyTable : PassTable {
   TranslucencyTable()
       : PassTable("translucency", PassKind::graphics,
@@ -69,8 +72,8 @@ struct TranslucencyTable : PassTable {
       "depth_peeling", "each pixel's layers in exact back-to-front order, peeled from the back (Everitt 2001); up to `layers` of them");
   // Parameters.
   ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
-  ParamHandle<std::string> refraction =
-      choice("refraction", "screen_space", {"screen_space", "none"},
+  ChoiceHandle<Refraction> refraction =
+      choice("refraction", Refraction::screen_space, {{Refraction::screen_space, "screen_space"}, {Refraction::none, "none"}},
              "sorted: solids of IOR ≠ 1 show refracted_color where their refracted ray lands (Sousa 2005; the slab approximation), "
              "when it is wired; none: what lies straight behind");
   ParamHandle<int64_t> layers = integer("layers", 8, 1, kMaxPeeledLayers, "layers",
@@ -299,7 +302,7 @@ class TranslucencyExecution final : public PassExecution {
   bool fogged(const PassSetup& c) const {
     return c.bound(t_.fog_frame) && c.bound(t_.integrated_scattering) && c.bound(t_.integrated_transmittance);
   }
-  bool refracting(const PassSetup& c) const { return c.bound(t_.refracted_color) && c.param(t_.refraction) == "screen_space"; }
+  bool refracting(const PassSetup& c) const { return c.bound(t_.refracted_color) && c.param(t_.refraction) == Refraction::screen_space; }
   bool aired(const PassSetup& c) const {
     return c.bound(t_.aerial_lookup) && c.bound(t_.aerial_scattering) && c.bound(t_.aerial_transmittance);
   }
