@@ -109,8 +109,8 @@ PassTable::PassTable(std::string name, PassKind kind, std::string doc) {
   decl.doc = std::move(doc);
 }
 
-VariantHandle PassTable::variant(std::string name, std::string doc, int32_t shader_code, std::vector<std::string> needs_inputs) {
-  decl.variants.push_back({std::move(name), std::move(doc), std::move(needs_inputs), shader_code});
+VariantHandle PassTable::variant(std::string name, std::string doc, int32_t shader_code) {
+  decl.variants.push_back({std::move(name), std::move(doc), {}, shader_code});
   return {uint16_t(decl.variants.size() - 1)};
 }
 
@@ -147,6 +147,7 @@ SlotHandle PassTable::add_slot(SlotDecl slot, const SlotOptions& options) {
   slot.persistent = options.persistent;
   slot.format_overridable = options.format_overridable;
   slot.size_overridable = options.size_overridable;
+  for (const VariantHandle v : options.required_in) decl.variants.at(v.index).needs_inputs.push_back(slot.name);
   decl.slots.push_back(std::move(slot));
   return {uint16_t(decl.slots.size() - 1)};
 }

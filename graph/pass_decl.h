@@ -42,7 +42,7 @@ struct ParamDecl {
 struct VariantDecl {
   std::string name;
   std::string doc;
-  std::vector<std::string> needs_inputs = {};  // optional input slots this variant requires wired
+  std::vector<std::string> needs_inputs = {};  // optional input slots this variant requires wired (SlotOptions::required_in)
   // What the variant changes in the pass's shader: a constant the pass hands its shader
   // (e.g. PHASE_HG from shaders/include/phase_codes.h, a header C++ and GLSL both read).
   int32_t shader_code = 0;
@@ -207,6 +207,7 @@ struct SlotOptions {
   bool persistent = false;            // outputs: kept across frames, never aliased
   bool format_overridable = false;    // outputs: the config may choose another format
   bool size_overridable = false;      // outputs: the config may choose another size
+  std::vector<VariantHandle> required_in = {};  // optional inputs: the variants that need it wired
 };
 
 // A pass type's declaration written as one table: a pass derives a struct from
@@ -227,7 +228,7 @@ class PassTable {
   PassDecl decl;
 
  protected:
-  VariantHandle variant(std::string name, std::string doc, int32_t shader_code = 0, std::vector<std::string> needs_inputs = {});
+  VariantHandle variant(std::string name, std::string doc, int32_t shader_code = 0);
   ParamHandle<bool> flag(std::string name, bool def, std::string doc);
   ParamHandle<int64_t> integer(std::string name, int64_t def, int64_t min, int64_t max, std::string unit, std::string doc);
   ParamHandle<double> number(std::string name, double def, double min, double max, std::string unit, std::string doc);

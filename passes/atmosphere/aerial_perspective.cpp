@@ -38,10 +38,8 @@ struct AerialPerspectiveTable : PassTable {
     decl.reads_scene = part_bit(ScenePart::atmosphere) | part_bit(ScenePart::camera);
   }
   // Variants.
-  VariantHandle hillaire = variant("hillaire", "each texel integrates its ray from the camera to its slice (Hillaire 2020 §5.4)", 0,
-                                   {"multiscattering"});
-  VariantHandle bruneton = variant("bruneton", "each texel from two lookups in Bruneton 2017's scattering table (GetSkyRadianceToPoint)", 0,
-                                   {"scattering", "single_mie_scattering"});
+  VariantHandle hillaire = variant("hillaire", "each texel integrates its ray from the camera to its slice (Hillaire 2020 §5.4)");
+  VariantHandle bruneton = variant("bruneton", "each texel from two lookups in Bruneton 2017's scattering table (GetSkyRadianceToPoint)");
   // Parameters.
   ParamHandle<int64_t> resolution = integer("resolution", 32, 2, 512, "texels", "columns per side through the frame");
   ParamHandle<int64_t> slices = integer("slices", 32, 1, 512, "", "slices along each ray");
@@ -51,11 +49,11 @@ struct AerialPerspectiveTable : PassTable {
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
   SlotHandle multiscattering = optional_input("multiscattering", ResourceKind::texture2d, Usage::sampled,
-                                              "hillaire: the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering)");
+                                              "hillaire: the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering)", {.required_in = {hillaire}});
   SlotHandle scattering = optional_input("scattering", ResourceKind::texture3d, Usage::sampled,
-                                         "bruneton: the scattering table (atmosphere_bruneton_tables.scattering)");
+                                         "bruneton: the scattering table (atmosphere_bruneton_tables.scattering)", {.required_in = {bruneton}});
   SlotHandle single_mie_scattering = optional_input("single_mie_scattering", ResourceKind::texture3d, Usage::sampled,
-                                                    "bruneton: the single Mie table (atmosphere_bruneton_tables.single_mie_scattering)");
+                                                    "bruneton: the single Mie table (atmosphere_bruneton_tables.single_mie_scattering)", {.required_in = {bruneton}});
   SlotHandle aerial_scattering = output("aerial_scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
                                         SizeSpec::square_layers_of("resolution", "slices"),
                                         "rgb scattered toward the camera from it to each texel, for a sun of unit illuminance");

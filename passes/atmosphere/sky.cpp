@@ -47,14 +47,11 @@ struct SkyTable : PassTable {
   SkyTable() : PassTable("sky", PassKind::graphics, "The atmosphere's sky and sun disk behind the scene's surfaces.") {
     decl.needs = feature_bit(SceneFeature::atmosphere);
   }
-  // Variants: the technique (the first is the default), each with the inputs it needs.
+  // Variants: the technique (the first is the default); its optional inputs name it (required_in).
   VariantHandle sky_view_lut =
-      variant("sky_view_lut", "the sky from the sky-view LUT (bilinear), the sun disk through the transmittance LUT (Hillaire 2020)", 0,
-              {"sky_view"});
-  VariantHandle raymarch = variant("raymarch", "every pixel marches its own ray through the transmittance and multiple-scattering LUTs (Hillaire 2020's RenderSkyRayMarching), no sky-view LUT", 0,
-                                   {"multiscattering"});
-  VariantHandle bruneton = variant("bruneton", "the sky from Bruneton 2017's precomputed scattering table (GetSkyRadiance), the ground by its irradiance table", 0,
-                                   {"scattering", "single_mie_scattering", "irradiance"});
+      variant("sky_view_lut", "the sky from the sky-view LUT (bilinear), the sun disk through the transmittance LUT (Hillaire 2020)");
+  VariantHandle raymarch = variant("raymarch", "every pixel marches its own ray through the transmittance and multiple-scattering LUTs (Hillaire 2020's RenderSkyRayMarching), no sky-view LUT");
+  VariantHandle bruneton = variant("bruneton", "the sky from Bruneton 2017's precomputed scattering table (GetSkyRadiance), the ground by its irradiance table");
   // Parameters.
   ParamHandle<bool> sun_disk = flag("sun_disk", true, "draw the sun's disk");
   ParamHandle<bool> limb_darkening = flag("limb_darkening", false, "darken the sun's disk toward its limb (Hillaire 2016 after Neckel & Labs 1994; its irradiance stays E)");
@@ -69,15 +66,15 @@ struct SkyTable : PassTable {
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
   SlotHandle sky_view = optional_input("sky_view", ResourceKind::texture2d, Usage::sampled,
-                                       "the sky-view LUT (atmosphere_skyview_lut.sky_view), for sky_view_lut");
+                                       "the sky-view LUT (atmosphere_skyview_lut.sky_view), for sky_view_lut", {.required_in = {sky_view_lut}});
   SlotHandle multiscattering = optional_input("multiscattering", ResourceKind::texture2d, Usage::sampled,
-                                              "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering), for raymarch and sky_view_lut's view from space");
+                                              "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering), for raymarch and sky_view_lut's view from space", {.required_in = {raymarch}});
   SlotHandle scattering = optional_input("scattering", ResourceKind::texture3d, Usage::sampled,
-                                         "Bruneton 2017's scattering table (atmosphere_bruneton_tables.scattering), for bruneton");
+                                         "Bruneton 2017's scattering table (atmosphere_bruneton_tables.scattering), for bruneton", {.required_in = {bruneton}});
   SlotHandle single_mie_scattering = optional_input("single_mie_scattering", ResourceKind::texture3d, Usage::sampled,
-                                                    "Bruneton 2017's single Mie table (atmosphere_bruneton_tables.single_mie_scattering), for bruneton");
+                                                    "Bruneton 2017's single Mie table (atmosphere_bruneton_tables.single_mie_scattering), for bruneton", {.required_in = {bruneton}});
   SlotHandle irradiance = optional_input("irradiance", ResourceKind::texture2d, Usage::sampled,
-                                         "Bruneton 2017's sky irradiance table (atmosphere_bruneton_tables.irradiance), for bruneton");
+                                         "Bruneton 2017's sky irradiance table (atmosphere_bruneton_tables.irradiance), for bruneton", {.required_in = {bruneton}});
   // The sky is drawn onto the scene's colour where no surface is, so without an
   // atmosphere (the pass culled) the colour passes through unchanged.
   SlotHandle sky_color = inout("color", ResourceKind::texture2d, Usage::color_attachment_load,

@@ -24,7 +24,7 @@ struct FogApplyTable : PassTable {
   // Variants: how the images are read at each pixel (the first is the default).
   VariantHandle bilinear = variant("bilinear", "the images read bilinearly at each pixel's centre (upsamples a lower resolution)");
   VariantHandle depth_aware =
-      variant("depth_aware", "joint bilateral upsampling (Kopf et al. 2007) guided by the scene's `depth`", 0, {"depth"});
+      variant("depth_aware", "joint bilateral upsampling (Kopf et al. 2007) guided by the scene's `depth`");
   // Slots.
   SlotHandle color = inout("color", ResourceKind::texture2d, Usage::color_attachment_load, "the scene's linear radiance");
   SlotHandle fog_scattering =
@@ -32,7 +32,7 @@ struct FogApplyTable : PassTable {
   SlotHandle fog_transmittance =
       input("fog_transmittance", ResourceKind::texture2d, Usage::sampled, "transmittance from the camera to the surface, rgb");
   SlotHandle depth = optional_input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth, for depth_aware",
-                                    {.format = Format::d32_float});
+                                    {.format = Format::d32_float, .required_in = {depth_aware}});
 };
 
 class FogApplyExecution final : public PassExecution {
