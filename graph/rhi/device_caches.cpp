@@ -19,10 +19,9 @@ class ContentKey {
   }
   ContentKey& add(std::string_view text) { return add(text.size()).raw(text.data(), text.size()); }
   template <typename T>
+    requires std::is_trivially_copyable_v<T>
   ContentKey& add_all(std::span<const T> values) {
-    add(values.size());
-    for (const T& v : values) add(v);
-    return *this;
+    return add(values.size()).raw(values.data(), values.size_bytes());
   }
   std::string take() { return std::move(bytes_); }
 
@@ -104,11 +103,7 @@ SamplerId Device::stock_sampler(StockSampler which) {
 }
 
 TextureViewId Device::cached_texture_view(const std::string& key, const std::function<TextureViewId()>& make) {
-  const auto found = texture_views_.find(key);
-  if (found != texture_views_.end()) return found->second;
-  const TextureViewId view = make();
-  texture_views_.emplace(key, view);
-  return view;
+  return cached(texture_views_, key, make);
 }
 
 ShaderModuleId Device::cached_shader_module(std::string_view label, std::span<const uint32_t> spirv) {

@@ -187,7 +187,7 @@ TEST_F(AtmosphereSkyAccuracy, SingleScatteringIsWithinHalfAPercentOfTheReference
   }
 }
 
-// The hard view (issue 30): the camera pitched 25° up (the horizon in the image's lowest
+// The hard view: the camera pitched 25° up (the horizon in the image's lowest
 // rows), the sun 2.5° straight below the centre column's pixel nearest `pixel_elevation_deg`
 // up. Compared: every 2nd pixel of each row and column from the horizon up, but those
 // nearer the sun than 2.5°. Returns the direction toward the sun and the pixels' choice.
@@ -209,7 +209,7 @@ ComparedPixels hard_view(LoadedConfig& loaded, double pixel_elevation_deg) {
   return {.stride = kStep, .lowest_sine = 0, .toward_sun = toward_sun, .nearest_to_sun_deg = 2.5};
 }
 
-// Issue 30: every default within 0.5 % at the WORST pixel of a view with the sun 2.5° from a
+// Every default within 0.5 % (Hillaire 2020's goal) at the WORST pixel of a view with the sun 2.5° from a
 // pixel and the horizon in it (single scattering, against the reference's quadrature).
 TEST_F(AtmosphereSkyAccuracy, SingleScatteringWorstPixelNearTheSunAndTheHorizon) {
   for (const double pixel_elevation : {5.0, 32.0}) {
@@ -230,7 +230,7 @@ TEST_F(AtmosphereSkyAccuracy, SingleScatteringWorstPixelNearTheSunAndTheHorizon)
   }
 }
 
-// Issue 30 for Bruneton 2017's sky: its tables (one order: single scattering, the tables'
+// The same for Bruneton 2017's sky: its tables (one order: single scattering, the tables'
 // first order) on the same hard view against the reference's single scattering, at the
 // defaults (asserted) and at finer settings (printed).
 // Measured on lavapipe (CPU), worst pixel, sun 2.25° / 30.7° up (first frame, orders 1):
@@ -241,7 +241,7 @@ TEST_F(AtmosphereSkyAccuracy, SingleScatteringWorstPixelNearTheSunAndTheHorizon)
 // r 128, transmittance 1024 × 256: no change); at the horizon at sunset mu_s (64: 1.1 %,
 // 128 with 400 trapezoids: 0.92 %), not nu (16, 32), mu (256), the transmittance LUT
 // (1024 × 256) or the trapezoids (400). The 0.5 % goal is not met yet: the bound asserted
-// is the defaults' measured error (issue 30 stays open for Bruneton).
+// is the defaults' measured error (the 0.5 % goal not met yet).
 TEST_F(AtmosphereSkyAccuracy, BrunetonSingleScatteringWorstPixelNearTheSunAndTheHorizon) {
   const std::vector<std::vector<std::string>> settings = {{}, {"bruneton.samples=200", "bruneton.nu_mu_s=512"}};
   for (const double pixel_elevation : {5.0, 32.0}) {
