@@ -57,7 +57,7 @@ Vec3 table_scattering(const Atmosphere& a, const BrunetonTableSize& size, const 
                       double nu, bool ray_hits_ground) {
   const ScatteringUvwz uvwz = scattering_uvwz(a, r, mu, mu_s, nu, ray_hits_ground, size);
   const ScatteringLookup at = scattering_lookup_coords(uvwz, size);
-  const std::array<double, 4> s0 = table.sample(at.x0, at.y, at.z), s1 = table.sample(at.x1, at.y, at.z);
+  const std::array<double, 4> s0 = table.sample_scattering(at.x0, at.y, at.z), s1 = table.sample_scattering(at.x1, at.y, at.z);
   Vec3 out{};
   for (size_t c = 0; c < 3; ++c) out[c] = s0[c] * (1 - at.lerp) + s1[c] * at.lerp;
   return out;
@@ -185,21 +185,33 @@ std::array<double, 4> BrunetonTable::texel(int x, int y, int z) const {
   return {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
 }
 
-std::array<double, 4> BrunetonTable::sample(double u, double v, double w) const {
-  // Linear between texel centres, clamped at the edges (the shaders' fetched filter).
+namespace {
+// Two texels of one channel, `t` of the way from `low` to `high`: linear, or geometric where
+// both are positive (the scattering tables' mu_s blend: atmosphere_bruneton.glsl's bruneton_mix_mu_s).
+double blend(double low, double high, double t, bool geometric) {
+  if (geometric && low > 0 && high > 0) return std::exp(std::log(low) * (1 - t) + std::log(high) * t);
+  return low * (1 - t) + high * t;
+}
+}  // namespace
+
+std::array<double, 4> BrunetonTable::blended(double u, double v, double w, bool geometric_x) const {
+  // Between texel centres, clamped at the edges (the shaders' fetched filter).
   const double fx = u * width - 0.5, fy = v * height - 0.5, fz = w * depth - 0.5;
   const int x = int(std::floor(fx)), y = int(std::floor(fy)), z = int(std::floor(fz));
   const double tx = fx - x, ty = fy - y, tz = fz - z;
   std::array<double, 4> out{};
-  for (int k = 0; k < 8; ++k) {
-    const int dx = k & 1, dy = (k >> 1) & 1, dz = (k >> 2) & 1;
-    const double weight = (dx ? tx : 1 - tx) * (dy ? ty : 1 - ty) * (depth > 1 ? (dz ? tz : 1 - tz) : (dz ? 0.0 : 1.0));
+  for (int k = 0; k < 4; ++k) {
+    const int dy = k & 1, dz = (k >> 1) & 1;
+    const double weight = (dy ? ty : 1 - ty) * (depth > 1 ? (dz ? tz : 1 - tz) : (dz ? 0.0 : 1.0));
     if (weight == 0) continue;
-    const std::array<double, 4> t = texel(x + dx, y + dy, z + dz);
-    for (int c = 0; c < 4; ++c) out[size_t(c)] += weight * t[size_t(c)];
+    const std::array<double, 4> low = texel(x, y + dy, z + dz), high = texel(x + 1, y + dy, z + dz);
+    for (size_t c = 0; c < 4; ++c) out[c] += weight * blend(low[c], high[c], tx, geometric_x && c < 3);
   }
   return out;
 }
+
+std::array<double, 4> BrunetonTable::sample(double u, double v, double w) const { return blended(u, v, w, false); }
+std::array<double, 4> BrunetonTable::sample_scattering(double u, double v, double w) const { return blended(u, v, w, true); }
 
 Vec3 transmittance_between(const Atmosphere& a, const TransmittanceToTop& t, double r, double mu, double d, bool ray_hits_ground) {
   // Bruneton 2017, GetTransmittance: T(r, mu) / T(r_d, mu_d), reversed for ground rays.

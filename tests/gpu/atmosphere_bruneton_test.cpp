@@ -181,7 +181,7 @@ SkyErrors sky_errors(const Atmosphere& a, const physics::BrunetonTables& tables,
 // Tables of 8 × 16 × 64 × 16 (single scattering by 400 trapezoids): the single-scattered sky
 // against the reference, each channel (single Mie read from its own table in all three).
 TEST_P(AtmosphereBruneton, SingleScatteredSkyFromTheTablesMatchesTheReference) {
-  const std::string sizes = R"("nu": 8, "nu_mu_s": 128, "mu": 64, "r": 16, "samples": 400, "irradiance_width": 16, "irradiance_height": 8)";
+  const std::string sizes = R"("nu": 8, "nu_mu_s": 128, "mu": 64, "r": 16, "single_samples": 400, "irradiance_width": 16, "irradiance_height": 8)";
   const LoadedConfig config = load(1, sizes);
   Executor executor(device(), config.graph, &config.config.scene, {});
   executor.run_frame();
@@ -210,12 +210,15 @@ TEST_P(AtmosphereBruneton, SingleScatteredSkyFromTheTablesMatchesTheReference) {
               "relative at worst r %.3g g %.3g b %.3g, on average r %.3g g %.3g b %.3g (all channels %.3g)\n",
               all.channel_worst[0], all.channel_worst[1], all.channel_worst[2], all.channel_mean[0], all.channel_mean[1],
               all.channel_mean[2], all.mean);
-  // Measured: at worst r 7.5e-3, g 4.6e-3, b 7.0e-3; on average r 2.1e-3, g 2.3e-3, b 3.4e-3
-  // (2.6e-3 over all three). With Mie's green and blue extrapolated from its red (Bruneton
-  // 2017's combined texel, Bruneton & Neyret 2008 Eq. 7) they were 5.0e-2 at worst.
+  // Measured: at worst r 7.5e-3, g 5.1e-3, b 7.3e-3; on average r 2.1e-3, g 2.6e-3, b 4.0e-3
+  // (2.9e-3 over all three). Blended linearly in mu_s (Bruneton 2017) the means were g 2.3e-3
+  // and b 3.4e-3 on this view, but the sunset horizon's worst pixel 3.1× the geometric blend's
+  // (tests/accuracy/atmosphere_sky_accuracy_test.cpp). With Mie's green and blue extrapolated
+  // from its red (Bruneton 2017's combined texel, Bruneton & Neyret 2008 Eq. 7) they were
+  // 5.0e-2 at worst.
   for (size_t c = 0; c < 3; ++c) {
     EXPECT_LT(all.channel_worst[c], 1e-2) << "channel " << c;
-    EXPECT_LT(all.channel_mean[c], 4e-3) << "channel " << c;
+    EXPECT_LT(all.channel_mean[c], 5e-3) << "channel " << c;
   }
   EXPECT_LT(all.mean, 3e-3);
 }
@@ -444,7 +447,7 @@ std::unique_ptr<SkyFromTables> render_sky_from_tables(rhi::Device& device, PassR
 // horizon; the ground below it finite and lit.
 TEST_P(AtmosphereBruneton, SkyPassFromTheTablesMatchesTheTwinAndTheReference) {
   const auto sky = render_sky_from_tables(
-      device(), registry_, R"("nu": 8, "nu_mu_s": 128, "mu": 64, "r": 16, "samples": 400, "irradiance_width": 16, "irradiance_height": 8)");
+      device(), registry_, R"("nu": 8, "nu_mu_s": 128, "mu": 64, "r": 16, "single_samples": 400, "irradiance_width": 16, "irradiance_height": 8)");
   const Texels& image = sky->image;
   ASSERT_TRUE(all_finite(image));
   const Scene& scene = sky->config.config.scene;
@@ -498,7 +501,7 @@ TEST_P(AtmosphereBruneton, SkyPassFromTheTablesMatchesTheTwinAndTheReference) {
 // given no shape) every sky pixel matches the CPU twin on the tables read back.
 TEST_P(AtmosphereBruneton, SkyPassReadsTheShapeOfTheTablesItIsWiredTo) {
   const auto sky = render_sky_from_tables(
-      device(), registry_, R"("nu": 4, "nu_mu_s": 64, "mu": 64, "r": 16, "samples": 400, "irradiance_width": 16, "irradiance_height": 8)");
+      device(), registry_, R"("nu": 4, "nu_mu_s": 64, "mu": 64, "r": 16, "single_samples": 400, "irradiance_width": 16, "irradiance_height": 8)");
   const Texels& image = sky->image;
   const Scene& scene = sky->config.config.scene;
   const Atmosphere& a = *scene.atmosphere;

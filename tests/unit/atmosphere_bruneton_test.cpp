@@ -163,6 +163,20 @@ TEST(AtmosphereBruneton, TableSamplingIsExactAtCentresAndLinearBetween) {
   EXPECT_DOUBLE_EQ(t.sample(0.5, 0.25, 0.25)[2], 4.0);
 }
 
+// Scattering lookups: geometric between two positive x (mu_s) texels, linear where one is
+// zero, and in y (mu) and z (r); alpha linear.
+TEST(AtmosphereBruneton, ScatteringSamplingIsGeometricInMuSWherePositive) {
+  // 2 × 2 × 1: x texels 1 and 4 (red), 0 and 4 (green) in row 0; row 1 doubles row 0.
+  const BrunetonTable t{2, 2, 1, {1, 0, 1, 1, 4, 4, 4, 4, 2, 0, 2, 2, 8, 8, 8, 8}};
+  const std::array<double, 4> midway = t.sample_scattering(0.5, 0.25, 0.5);
+  EXPECT_DOUBLE_EQ(midway[0], 2.0);   // √(1 · 4)
+  EXPECT_DOUBLE_EQ(midway[1], 2.0);   // (0 + 4) / 2: a zero texel blends linearly
+  EXPECT_DOUBLE_EQ(midway[3], 2.5);   // alpha linear
+  EXPECT_DOUBLE_EQ(t.sample_scattering(0.25, 0.25, 0.5)[0], 1.0);  // exact at centres
+  EXPECT_DOUBLE_EQ(t.sample_scattering(0.5, 0.5, 0.5)[0], 3.0);    // linear in y: (2 + 4) / 2
+  EXPECT_DOUBLE_EQ(t.sample(0.5, 0.25, 0.5)[0], 2.5);              // the plain lookup: linear
+}
+
 // The scattering and single Mie tables filled on the CPU by single scattering alone (the
 // texel's own single_scattering), so the lookups can be checked against the quantity they
 // interpolate.
@@ -175,7 +189,7 @@ SingleScatteringTables single_scattering_tables(const Atmosphere& a, const Brune
   for (int z = 0; z < size.r; ++z) {
     for (int y = 0; y < size.mu; ++y) {
       for (int x = 0; x < size.width(); ++x) {
-        const SingleScattering s = single_scattering(a, t, scattering_texel_params(a, x, y, z, size), 50);
+        const SingleScattering s = single_scattering(a, t, scattering_texel_params(a, x, y, z, size));
         tables.rayleigh.rgba.insert(tables.rayleigh.rgba.end(), {float(s.rayleigh[0]), float(s.rayleigh[1]), float(s.rayleigh[2]), 0.0f});
         tables.mie.rgba.insert(tables.mie.rgba.end(), {float(s.mie[0]), float(s.mie[1]), float(s.mie[2]), 0.0f});
       }
