@@ -462,8 +462,9 @@ TEST_P(Translucency, ScreenSpaceRefractionShiftsWhatIsBehindAsTheSlabDoes) {
 //   F L_env + (1 − F) ρ T_key^(1/cos θt) L_behind,
 // F Schlick's at the pixel's angle (physics::interface_reflectance), T_key^(1/cos θt) the
 // key's colour along the refracted path through the cube's thickness (1.3e-3 off T_key at
-// most here). R3 (a thickness texture, not sampled) and the thin-walled key row are not
-// checked. Metric: |render − prediction| / prediction per channel, at most 3e-3 (fp16
+// most here). The answer key row R1 itself, thin-walled cubes tinted by their base colour,
+// must show F L_env + (1 − F) ρ L_behind (one interface, no path). R3 (a thickness texture,
+// not sampled yet) is not checked. Metric: |render − prediction| / prediction per channel, at most 3e-3 (fp16
 // steps and the slab approximation; measured 1.3e-3 at worst on lavapipe, every variant);
 // the prediction × the old exit-interface factor (0.960×) is 3.9e-2 off: fails.
 std::string attenuation_test(const std::string& variant) {
@@ -480,7 +481,7 @@ std::string attenuation_test(const std::string& variant) {
     "outputs": ["glass.color", "behind.copy"] } })";
 }
 
-TEST_P(Translucency, AttenuationTestsSolidRowsShowTheirAnswerKey) {
+TEST_P(Translucency, AttenuationTestsRowsShowTheirAnswerKey) {
   const std::string text = attenuation_test(variant());
   const LoadedConfig loaded = load_config_text("attenuation.json", text, registry_);
   scene_ = loaded.config.scene;
@@ -492,11 +493,12 @@ TEST_P(Translucency, AttenuationTestsSolidRowsShowTheirAnswerKey) {
   const physics::ViewRays rays = physics::view_rays(scene_.camera, double(image.width) / image.height);
   double worst = 0;
   size_t pixels = 0;
-  for (const size_t row : {size_t(0), size_t(6), size_t(12)}) {  // R2, R4, R5 (the file's node order)
+  for (const size_t row : {size_t(0), size_t(6), size_t(12), kAnswerRow}) {  // R2, R4, R5, R1 (the file's node order)
+    const bool answer_key = row == kAnswerRow;
     for (size_t column = 0; column < 5; ++column) {
       const plumbing::GltfPrimitive& cube = model.primitives.at(row + column);
       const Vec3 key = model.primitives.at(kAnswerRow + column).base_color;
-      ASSERT_EQ(cube.translucency.volume, VolumeKind::solid);
+      ASSERT_EQ(cube.translucency.volume, answer_key ? VolumeKind::thin_walled : VolumeKind::solid);
       Vec3 lo{1e30, 1e30, 1e30}, hi{-1e30, -1e30, -1e30};
       for (size_t v = 0; v < cube.vertices.size(); v += 8) {
         for (size_t a = 0; a < 3; ++a) lo[a] = std::min(lo[a], double(cube.vertices[v + a])), hi[a] = std::max(hi[a], double(cube.vertices[v + a]));
@@ -514,7 +516,7 @@ TEST_P(Translucency, AttenuationTestsSolidRowsShowTheirAnswerKey) {
           const double f = physics::interface_reflectance(cube.translucency.ior, cos_i);
           const double cos_t = physics::refracted_cosine(cube.translucency.ior, cos_i);
           for (size_t k = 0; k < 3; ++k) {
-            const double t_path = std::pow(key[k], 1 / cos_t);
+            const double t_path = answer_key ? 1.0 : std::pow(key[k], 1 / cos_t);  // R1: its base colour ρ is the key
             const double want = f * scene_.background[k] + (1 - f) * cube.base_color[k] * t_path * at(behind, i, j, k);
             const double error = std::abs(at(image, i, j, k) - want) / want;
             worst = std::max(worst, error);
@@ -526,7 +528,7 @@ TEST_P(Translucency, AttenuationTestsSolidRowsShowTheirAnswerKey) {
       }
     }
   }
-  std::printf("AttenuationTest (%s): %zu pixels of 15 solid cubes, worst |render - F L_env - (1-F) rho T_key L_behind| / it = %.2e\n",
+  std::printf("AttenuationTest (%s): %zu pixels of 15 solid and 5 thin-walled cubes, worst |render - F L_env - (1-F) rho T_key L_behind| / it = %.2e\n",
               variant().c_str(), pixels, worst);
 }
 
