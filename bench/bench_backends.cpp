@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/device_label.h"
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
 #include "graph/rhi/vulkan/vulkan_device.h"
@@ -60,7 +61,7 @@ Measured measure(rhi::Device& device, const LoadedConfig& c, int frames) {
 std::string timing_kind(const Measured& m) { return m.gpu_timestamps ? "GPU time stamps" : "CPU recording (no time stamps)"; }
 
 void print(const std::string& config, const Measured& vulkan, const Measured& webgpu) {
-  std::printf("\n%s — %s, lavapipe (CPU)\n", config.c_str(), vulkan.device.c_str());
+  std::printf("\n%s — %s\n", config.c_str(), bench::device_label(vulkan.device).c_str());
   std::printf("  per pass: vulkan %s, webgpu %s; medians in ms\n", timing_kind(vulkan).c_str(), timing_kind(webgpu).c_str());
   std::printf("  %-32s %10s %10s %8s\n", "pass", "vulkan", "webgpu", "ratio");
   for (size_t i = 0; i < vulkan.passes.size() && i < webgpu.pass_ms.size(); ++i) {
@@ -77,8 +78,7 @@ int run(int frames, Extent size) {
   auto context = vulkan::Context::create({});
   vulkan::VulkanDevice vulkan_device(*context);
   const auto webgpu_device = webgpu::WebGpuDevice::create({.errors_throw = true});
-  std::printf("bench_backends: %d frames (after one warm-up) at %ux%u; lavapipe (CPU): its \"GPU\" is this CPU\n", frames,
-              size.width, size.height);
+  std::printf("bench_backends: %d frames (after one warm-up) at %ux%u\n", frames, size.width, size.height);
   for (const char* demo : kDemos) {
     Overrides o;
     o.size = size;

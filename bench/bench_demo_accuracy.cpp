@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/device_label.h"
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "passes/passes.h"
 #include "tests/support/fog_accuracy.h"
@@ -86,8 +87,8 @@ int run_demos(Extent size, std::vector<std::string> configs) {
     std::sort(configs.begin(), configs.end());
   }
   std::printf("bench_demo_accuracy: each config at %ux%u, frame 0 (linear, composite none) against the reference; relative mean "
-              "absolute error over all / fog-only / surface-only pixels, as shipped and like for like; lavapipe (CPU) on %s\n",
-              size.width, size.height, device.info().device.c_str());
+              "absolute error over all / fog-only / surface-only pixels, as shipped and like for like; on %s\n",
+              size.width, size.height, bench::device_label(device.info().device).c_str());
   std::printf("%-24s %9s %9s %9s | %9s %9s %9s | %s\n", "config", "all px", "fog-only", "surfaces", "all px", "fog-only", "surfaces",
               "pixels (fog, surfaces)");
   for (const std::string& config : configs) {

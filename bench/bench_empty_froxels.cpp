@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/device_label.h"
 #include "graph/execute/executor.h"
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "passes/passes.h"
@@ -80,8 +81,8 @@ int run(int frames, Extent size, int shadow_steps) {
   }
   const double empty = empty_fraction(skip, media_scattering);
   std::printf("bench_empty_froxels: oracle_fog_sphere.json at %ux%u, froxel chain with shadow_steps %d, %d frames after one "
-              "warm-up, median frame wall time; lavapipe (CPU): its \"GPU\" is this CPU (%s)\n",
-              size.width, size.height, shadow_steps, frames, device.info().device.c_str());
+              "warm-up, median frame wall time; on %s\n",
+              size.width, size.height, shadow_steps, frames, bench::device_label(device.info().device).c_str());
   std::printf("empty froxels: %.1f %%\n", 100 * empty);
   std::printf("skip_empty on : %8.2f ms\nskip_empty off: %8.2f ms\nratio off/on  : %8.2f\n", median(skip_ms), median(all_ms),
               median(all_ms) / median(skip_ms));

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/device_label.h"
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
 #include "graph/rhi/vulkan/vulkan_device.h"
@@ -88,8 +89,8 @@ int run(int repetitions, int frames, Extent size) {
     }
   }
   std::printf("bench_pass_cache: demo_fog.json at %ux%u, %d repetitions of %d frames (a fresh executor each), median frame "
-              "wall time over frames 2..%d (time stamps off); lavapipe (CPU) when its \"GPU\" is this CPU: %s\n",
-              size.width, size.height, repetitions, frames, frames, device.info().device.c_str());
+              "wall time over frames 2..%d (time stamps off); on %s\n",
+              size.width, size.height, repetitions, frames, frames, bench::device_label(device.info().device).c_str());
   for (const Mode* m : {&on, &off}) {
     std::printf("%s cached %s: %8.2f ms   repetitions:", kCachedType, m->name, median(m->ms));
     for (const double v : m->rep_medians) std::printf(" %.2f", v);
