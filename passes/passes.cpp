@@ -1,6 +1,7 @@
 #include "passes/passes.h"
 
 #include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/clouds/cloud_passes.h"
 #include "passes/fog/fog_passes.h"
 #include "passes/plumbing/gltf.h"
 #include "passes/translucency/translucency_passes.h"
@@ -35,6 +36,7 @@ void register_builtin_passes(PassRegistry& registry) {
   registry.add(sky_pass());
   registry.add(translucency_pass());
   registry.add(aerial_perspective_apply_pass());
+  registry.add(cloud_noise_pass());
   // glTF objects with translucent materials need the translucency pass (graph/ reads no glTF).
   registry.set_scene_annotator(plumbing::mark_translucent_gltf_objects);
 }

@@ -160,6 +160,8 @@ pass_tests(atmosphere_skyview_lut "(^|/)(Sky|SkyView)\\.")
 # (→ atmosphere_aerial_perspective bruneton, → scene → sky bruneton); tests/unit/atmosphere_bruneton_test.cpp:
 # the tables' CPU twin and the pass's shape check.
 pass_tests(atmosphere_bruneton_tables "(^|/)AtmosphereBruneton\\." "^AtmosphereBrunetonTables\\.")
+# tests/gpu/cloud_noise_test.cpp and tests/unit/cloud_noise_test.cpp (its text, compiled as C++).
+pass_tests(cloud_noise "(^|/)CloudNoise\\.")
 pass_tests(atmosphere_transmittance_lut "(^|/)AtmosphereBruneton\\.")
 pass_tests(atmosphere_aerial_perspective "(^|/)AtmosphereBruneton\\.AerialPerspective")
 pass_tests(sky "(^|/)AtmosphereBruneton\\.SkyPass")

@@ -624,10 +624,33 @@ void read_atmosphere(const Node& n, Scene& scene) {
   scene.atmosphere = a;
 }
 
+// The cloud layer (scene.clouds): altitudes in metres above the ground, the top above the
+// bottom and both within 100 km (the layer lies in the air, not in space).
+void read_clouds(const Node& n, Scene& scene) {
+  if (!n.object({"bottom_altitude", "top_altitude", "coverage", "type", "extinction", "shape_scale", "detail_scale", "wind"})) return;
+  CloudLayer c;
+  c.where = n.where();
+  const Interval altitude{0, 100000, false, false, " m"};
+  const bool bottom_read = read_in(n, "bottom_altitude", c.bottom_altitude, altitude);
+  const bool top_read = read_in(n, "top_altitude", c.top_altitude, altitude);
+  read_in(n, "coverage", c.coverage, {0, 1});
+  read_in(n, "type", c.type, {0, 1});
+  read_in(n, "extinction", c.extinction, {0, 10, true, false, " /m"});
+  read_in(n, "shape_scale", c.shape_scale, {1, 1e7, false, false, " m"});
+  read_in(n, "detail_scale", c.detail_scale, {0.1, 1e6, false, false, " m"});
+  read(n, "wind", c.wind, -1000, 1000);
+  if (bottom_read && top_read && c.top_altitude <= c.bottom_altitude) {
+    first_member(n, {"top_altitude", "bottom_altitude"})
+        .error("top_altitude (" + full_number(c.top_altitude) + " m) must exceed bottom_altitude (" + full_number(c.bottom_altitude) + " m)");
+    return;
+  }
+  scene.clouds = c;
+}
+
 }  // namespace
 
 void read_scene(const Node& n, Scene& scene) {
-  if (!n.object({"camera", "background", "materials", "objects", "lights", "media", "atmosphere"})) return;
+  if (!n.object({"camera", "background", "materials", "objects", "lights", "media", "atmosphere", "clouds"})) return;
   if (auto c = n.member("camera")) {
     Camera camera;
     read_camera(*c, camera);
@@ -673,6 +696,10 @@ void read_scene(const Node& n, Scene& scene) {
   if (auto atmosphere = n.member("atmosphere")) {  // after the lights: its sun is one of them
     scene.atmosphere.reset();
     read_atmosphere(*atmosphere, scene);
+  }
+  if (auto clouds = n.member("clouds")) {
+    scene.clouds.reset();
+    read_clouds(*clouds, scene);
   }
 }
 

@@ -39,13 +39,14 @@ float half_to_float(uint16_t h) {
 // The texture formats read back as texels (2D, or 3D slice by slice).
 bool readable_as_texels(const ResourceDesc& d) {
   const bool mono = d.format == Format::r32_float || d.format == Format::d32_float;
-  return d.kind != ResourceKind::buffer && (d.format == Format::rgba32_float || d.format == Format::rgba16_float || mono);
+  return d.kind != ResourceKind::buffer &&
+         (d.format == Format::rgba32_float || d.format == Format::rgba16_float || d.format == Format::rgba8_unorm || mono);
 }
 
 DeviceError not_texels(const ResourceDesc& d) {
   return DeviceError(DeviceError::Kind::unsupported,
                      d.name + " is a " + std::string(kind_name(d.kind)) + " of " + std::string(format_info(d.format).name) +
-                         "; reading back takes rgba32_float, rgba16_float, r32_float or d32_float textures");
+                         "; reading back takes rgba32_float, rgba16_float, rgba8_unorm, r32_float or d32_float textures");
 }
 
 uint32_t slices(const ResourceDesc& d) { return d.kind == ResourceKind::texture3d ? std::max(1u, d.extent.depth) : 1; }
@@ -68,6 +69,8 @@ Texels texels_of(const ResourceDesc& d, const std::vector<std::byte>& raw) {
       out.rgba[4 * t] = out.rgba[4 * t + 1] = out.rgba[4 * t + 2] = v;
     } else if (d.format == Format::rgba32_float) {
       std::memcpy(&out.rgba[4 * t], raw.data() + 16 * t, 16);
+    } else if (d.format == Format::rgba8_unorm) {
+      for (size_t c = 0; c < 4; ++c) out.rgba[4 * t + c] = float(uint8_t(raw[4 * t + c])) / 255.0f;
     } else {
       for (size_t c = 0; c < 4; ++c) {
         uint16_t h;

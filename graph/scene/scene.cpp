@@ -35,6 +35,7 @@ SceneFeatures Scene::features() const {
     if ((m && m->translucency.translucent()) || o.translucent_in_file) f |= feature_bit(SceneFeature::translucent_objects);
   }
   if (atmosphere) f |= feature_bit(SceneFeature::atmosphere);
+  if (clouds) f |= feature_bit(SceneFeature::clouds);
   return f;
 }
 
@@ -188,6 +189,14 @@ void hash_atmosphere(SceneHasher& h, const std::optional<Atmosphere>& atmosphere
   h.add(lights[size_t(a.sun_light)].irradiance);
 }
 
+void hash_clouds(SceneHasher& h, const std::optional<CloudLayer>& clouds) {
+  h.add(clouds.has_value());
+  if (!clouds) return;
+  const CloudLayer& c = *clouds;
+  for (const double v : {c.bottom_altitude, c.top_altitude, c.coverage, c.type, c.extinction, c.shape_scale, c.detail_scale}) h.add(v);
+  h.add(c.wind);
+}
+
 }  // namespace
 
 uint64_t Scene::hash(ScenePartMask parts) const {
@@ -199,6 +208,7 @@ uint64_t Scene::hash(ScenePartMask parts) const {
   if (parts & part_bit(ScenePart::geometry)) hash_geometry(h, *this);
   if (parts & part_bit(ScenePart::background)) h.add(background);
   if (parts & part_bit(ScenePart::atmosphere)) hash_atmosphere(h, atmosphere, lights);
+  if (parts & part_bit(ScenePart::clouds)) hash_clouds(h, clouds);
   return h.value();
 }
 

@@ -185,6 +185,22 @@ struct Atmosphere {
   Where where;
 };
 
+// A layer of clouds between two altitudes above the ground (Schneider & Vos 2015; RTR4
+// 14.4.2), on the atmosphere's spherical planet (Earth's 6360 km without one). Its density
+// is the base shape × the height signal of `type` × `coverage`, eroded by the detail noise;
+// its medium scatters without absorbing (albedo 1: σs = σt), σt = `extinction` × density.
+struct CloudLayer {
+  double bottom_altitude = 1500;  // m above the ground
+  double top_altitude = 4000;     // m above the ground
+  double coverage = 0.5;          // [0, 1]: the sky's fraction the layer covers
+  double type = 0.5;              // [0, 1]: 0 stratus, 0.5 cumulus, 1 cumulonimbus (the height signal)
+  double extinction = 0.08;       // 1/m at density 1 (measured: stratus 0.04–0.06, cumulus 0.05–0.12)
+  double shape_scale = 20000;     // m: the shape noise's tile, horizontally and vertically
+  double detail_scale = 2000;     // m: the detail noise's tile
+  Vec3 wind{10, 0, 0};            // m/s: the noise's drift with time
+  Where where;                    // where the config gives the layer
+};
+
 struct Scene {
   Camera camera;
   Vec3 background{0, 0, 0};  // radiance
@@ -193,6 +209,7 @@ struct Scene {
   std::vector<Light> lights;
   Media media;
   std::optional<Atmosphere> atmosphere;  // none: no sky, no aerial perspective
+  std::optional<CloudLayer> clouds;      // none: no cloud passes, no cloud noise
 
   SceneFeatures features() const;
   // A hash of the parts named (every value in them): equal scenes give equal hashes, and

@@ -1,0 +1,85 @@
+// cloud_noise: the three tileable noise textures of Schneider & Vos 2015's clouds, made
+// once by the graph and cached: `shape` (128³: r Perlin-Worley, g b a Worley sums at
+// increasing frequencies — the base shape), `detail` (32³: Worley sums that erode the
+// edges) and `curl` (128²: 2D curl noise that distorts the detail). Each texel is
+// shaders/include/cloud_noise.h, the text the CPU twin (physics/cloud_noise.h) compiles too.
+// The textures depend on the seed and sizes alone: cached, never recomputed while they hold.
+// Shaders: shaders/cloud_noise_shape.comp, cloud_noise_detail.comp, cloud_noise_curl.comp.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "graph/execute/pass_execution.h"
+#include "graph/scene/scene.h"
+#include "passes/clouds/cloud_passes.h"
+#include "passes/plumbing/programs.h"
+
+namespace volgraph {
+namespace {
+
+struct CloudNoiseTable : PassTable {
+  CloudNoiseTable()
+      : PassTable("cloud_noise", PassKind::compute,
+                  "Tileable cloud noise textures (Schneider & Vos 2015): base shape, erosion detail, curl distortion.") {
+    decl.needs = feature_bit(SceneFeature::clouds);
+    decl.cached = true;
+    decl.frame_invariant = true;
+  }
+  // Variants.
+  VariantHandle schneider_vos = variant("schneider_vos", "Perlin-Worley and Worley octaves (Schneider & Vos 2015)");
+  // Parameters.
+  ParamHandle<int64_t> shape_size = integer("shape_size", 128, 8, 512, "texels", "the shape texture's side (a cube)");
+  ParamHandle<int64_t> detail_size = integer("detail_size", 32, 8, 256, "texels", "the detail texture's side (a cube)");
+  ParamHandle<int64_t> curl_size = integer("curl_size", 128, 8, 1024, "texels", "the curl texture's side (a square)");
+  ParamHandle<int64_t> seed = integer("seed", 0, 0, 65535, "", "the hash's seed: another seed, other clouds");
+  // Slots.
+  SlotHandle shape = output("shape", ResourceKind::texture3d, Usage::storage_write, Format::rgba8_unorm,
+                            SizeSpec::square_layers_of("shape_size", "shape_size"),
+                            "r Perlin-Worley, g b a Worley sums at periods 4, 8, 16 (tileable)");
+  SlotHandle detail = output("detail", ResourceKind::texture3d, Usage::storage_write, Format::rgba8_unorm,
+                             SizeSpec::square_layers_of("detail_size", "detail_size"), "r g b Worley sums at periods 2, 4, 8 (tileable)");
+  SlotHandle curl = output("curl", ResourceKind::texture2d, Usage::storage_write, Format::rgba8_unorm, SizeSpec::square_of("curl_size"),
+                           "r g: the curl of a gradient-noise potential, 0.5 + 0.5 · curl / 8 (tileable)");
+};
+
+struct GpuCloudNoiseParams {  // cloud_noise_*.comp's CloudNoiseParams
+  uint32_t seed[4];           // x: the seed
+  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuCloudNoiseParams, seed)}; }
+};
+
+class CloudNoiseExecution final : public PassExecution {
+ public:
+  explicit CloudNoiseExecution(const CloudNoiseTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    shape_ = plumbing::create_compute_program(s.device, "cloud_noise_shape.comp");
+    detail_ = plumbing::create_compute_program(s.device, "cloud_noise_detail.comp");
+    curl_ = plumbing::create_compute_program(s.device, "cloud_noise_curl.comp");
+    const GpuCloudNoiseParams params{{uint32_t(s.param(t_.seed)), 0, 0, 0}};
+    params_ = plumbing::create_checked_uniform_block(s.device, shape_, 0, 0, s.name() + " params", params);
+  }
+
+  // Runs when the cache key changed: the first frame, or another seed or size.
+  void record(PassContext& c) override {
+    fill(c, shape_, t_.shape);
+    fill(c, detail_, t_.detail);
+    fill(c, curl_, t_.curl);
+  }
+
+ private:
+  void fill(PassContext& c, const plumbing::ComputeProgram& program, SlotHandle texture) {
+    using rhi::BindGroupEntry;
+    const rhi::BindGroupId group = c.bind_group(program.layouts[0], {BindGroupEntry::of(0, params_), BindGroupEntry::of(1, c.view(texture))});
+    plumbing::dispatch(c.encoder, c.name(), program, {group}, c.extent(texture));
+  }
+
+  const CloudNoiseTable& t_;
+  plumbing::ComputeProgram shape_, detail_, curl_;
+  rhi::BufferId params_;
+};
+
+}  // namespace
+
+PassDecl cloud_noise_pass() { return pass_type<CloudNoiseTable, CloudNoiseExecution>(); }
+
+}  // namespace volgraph

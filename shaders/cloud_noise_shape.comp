@@ -1,0 +1,16 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// cloud_noise (passes/clouds/cloud_noise.cpp): the shape texture, one texel an invocation, at
+// its texel centre (shaders/include/cloud_noise.h: the text the CPU twin compiles too).
+#include "include/cloud_noise.h"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+layout(set = 0, binding = 0) uniform CloudNoiseParams { uvec4 seed; } params;  // x: the seed
+layout(set = 0, binding = 1, rgba8) uniform writeonly image3D shape;
+
+void main() {
+  const ivec3 texel = ivec3(gl_GlobalInvocationID.xyz), size = imageSize(shape);
+  if (any(greaterThanEqual(texel, size))) return;
+  imageStore(shape, texel, cloud_shape_texel((vec3(texel) + 0.5) / vec3(size), params.seed.x));
+}
