@@ -68,7 +68,7 @@ struct ShadowMapTable : PassTable {
                                         "the scene's bounds)");
   // Slots.
   SlotHandle depth = output("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float,
-                            SizeSpec::square_of("resolution"), "light-space depth");
+                            SizeSpec::square_of(resolution), "light-space depth");
   SlotHandle light_view = output("light_view", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(256),
                                  "the light's view-projection matrix and bias, for passes that sample `depth`");
 };

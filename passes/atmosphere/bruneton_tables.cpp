@@ -32,13 +32,6 @@ namespace {
 
 constexpr int kMaxOrders = 8;
 
-// (nu · mu_s) × mu × r.
-SizeSpec scattering_size() {
-  SizeSpec s = SizeSpec::rect_of("nu_mu_s", "mu");
-  s.depth_param = "r";
-  return s;
-}
-
 std::vector<ParamProblem> check_table_shape(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& values) {
   const int64_t nu = std::get<int64_t>(values.at(size_t(decl.param_index("nu"))));
   const int64_t nu_mu_s = std::get<int64_t>(values.at(size_t(decl.param_index("nu_mu_s"))));
@@ -82,7 +75,7 @@ struct BrunetonTablesTable : PassTable {
   SlotHandle single_mie_scattering = output("single_mie_scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba32_float,
                                             scattering_size(), "per (r, mu, mu_s, nu) for a sun of unit E: single Mie without its phase (rgb)");
   SlotHandle irradiance = output("irradiance", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float,
-                                 SizeSpec::rect_of("irradiance_width", "irradiance_height"),
+                                 SizeSpec::rect_of(irradiance_width, irradiance_height),
                                  "the sky's irradiance on a horizontal surface per (r, mu_s), for a sun of unit E (rgb)");
   // Internal tables.
   SlotHandle delta_irradiance = irradiance_table("delta_irradiance", "the ground's irradiance of the last order (the sun's first)");
@@ -112,8 +105,10 @@ struct BrunetonTablesTable : PassTable {
   SlotHandle irradiance_next(int order) const { return order == kMaxOrders ? irradiance : irradiance_sum[size_t(order % 2)]; }
 
  private:
+  // (nu · mu_s) × mu × r.
+  SizeSpec scattering_size() const { return SizeSpec::volume_of(nu_mu_s, mu, r); }
   SlotHandle irradiance_table(std::string name, std::string doc) {
-    return internal(std::move(name), ResourceKind::texture2d, Format::rgba32_float, SizeSpec::rect_of("irradiance_width", "irradiance_height"),
+    return internal(std::move(name), ResourceKind::texture2d, Format::rgba32_float, SizeSpec::rect_of(irradiance_width, irradiance_height),
                     std::move(doc));
   }
   SlotHandle scattering_table(std::string name, std::string doc) {

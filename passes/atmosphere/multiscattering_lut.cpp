@@ -38,7 +38,7 @@ struct MultiscatteringLutTable : PassTable {
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
   SlotHandle multiscattering = output("multiscattering", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
-                                      SizeSpec::rect_of("width", "height"), "Ψ_ms rgb for a sun of unit illuminance",
+                                      SizeSpec::rect_of(width, height), "Ψ_ms rgb for a sun of unit illuminance",
                                       {.format_overridable = true});
 };
 

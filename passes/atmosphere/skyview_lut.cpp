@@ -53,7 +53,7 @@ struct SkyViewLutTable : PassTable {
   SlotHandle multiscattering = input("multiscattering", ResourceKind::texture2d, Usage::sampled,
                                      "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering)");
   SlotHandle sky_view = output("sky_view", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
-                               SizeSpec::rect_of("width", "height"), "sky radiance rgb for a sun of unit illuminance",
+                               SizeSpec::rect_of(width, height), "sky radiance rgb for a sun of unit illuminance",
                                {.format_overridable = true});
 };
 

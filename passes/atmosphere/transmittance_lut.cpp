@@ -36,7 +36,7 @@ struct TransmittanceLutTable : PassTable {
   ParamHandle<int64_t> panels = integer("panels", 32, 1, 256, "", "Gauss–Legendre panels (4 points each) along each ray");
   // Slots.
   SlotHandle transmittance = output("transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float,
-                                    SizeSpec::rect_of("width", "height"), "e^(−τ) rgb to the top of the atmosphere",
+                                    SizeSpec::rect_of(width, height), "e^(−τ) rgb to the top of the atmosphere",
                                     {.format_overridable = true});
 };
 

@@ -45,7 +45,7 @@ struct FroxelVoxelizeTable : PassTable {
  private:
   SlotHandle media_volume(std::string name, std::string doc) {
     return output(std::move(name), ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-                  SizeSpec::of_output_divided("tile", "slices"), std::move(doc));
+                  SizeSpec::of_output_divided(tile, slices), std::move(doc));
   }
 };
 

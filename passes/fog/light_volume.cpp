@@ -154,7 +154,7 @@ struct LightVolumeTable : PassTable {
   // Internal images.
   SlotHandle light_frame = internal("light_frame", ResourceKind::texture2d, Format::rgba32_float, SizeSpec::fixed(kLightFrameTexels, 1),
                                     "the shadow map's clip space back to the world (light_volume.glsl)");
-  SlotHandle cells = internal("cells", ResourceKind::texture2d, Format::r32_float, SizeSpec::square_of("grid"),
+  SlotHandle cells = internal("cells", ResourceKind::texture2d, Format::r32_float, SizeSpec::square_of(grid),
                               "per cell of the grid the light depth where shadow starts (the first min(grid, map side)² texels)");
   SlotHandle ends = internal("ends", ResourceKind::texture2d, Format::rgba32_float, SizeSpec::of_output(), "per pixel t_end and the unshadowed sums' ends");
   SlotHandle sums = internal("sums", ResourceKind::texture2d, Format::rgba32_float, SizeSpec::of_output(), "per pixel the signed sum of I(t)");

@@ -51,7 +51,7 @@ struct OpacityShadowMapTable : PassTable {
   SlotHandle light_view =
       input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view (shadow_map.light_view)");
   SlotHandle optical_depth = output("optical_depth", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-                                    SizeSpec::square_layers_of("resolution", "layers"), "τ rgb from the light to each layer's centre");
+                                    SizeSpec::square_layers_of(resolution, layers), "τ rgb from the light to each layer's centre");
 };
 
 class OpacityShadowMapExecution final : public PassExecution {
