@@ -15,7 +15,7 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
-#include "passes/passes.h"
+#include "passes/register_pass.h"
 #include "physics/camera.h"
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/scene_geometry.h"
@@ -180,6 +180,6 @@ class ShadowMapExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl shadow_map_pass() { return pass_type<ShadowMapTable, ShadowMapExecution>(); }
+VOLGRAPH_REGISTER_PASS(ShadowMapTable, ShadowMapExecution);
 
 }  // namespace volgraph

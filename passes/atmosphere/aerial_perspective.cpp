@@ -17,7 +17,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/atmosphere/bruneton_uniforms.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
@@ -152,6 +152,6 @@ class AerialPerspectiveExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_aerial_perspective_pass() { return pass_type<AerialPerspectiveTable, AerialPerspectiveExecution>(); }
+VOLGRAPH_REGISTER_PASS(AerialPerspectiveTable, AerialPerspectiveExecution);
 
 }  // namespace volgraph

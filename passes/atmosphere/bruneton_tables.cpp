@@ -22,7 +22,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/atmosphere/bruneton_uniforms.h"
 #include "passes/plumbing/programs.h"
 #include "physics/atmosphere_bruneton.h"
@@ -239,6 +239,6 @@ class BrunetonTablesExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_bruneton_tables_pass() { return pass_type<BrunetonTablesTable, BrunetonTablesExecution>(); }
+VOLGRAPH_REGISTER_PASS(BrunetonTablesTable, BrunetonTablesExecution);
 
 }  // namespace volgraph

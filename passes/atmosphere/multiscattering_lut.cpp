@@ -10,7 +10,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
@@ -73,6 +73,6 @@ class MultiscatteringLutExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_multiscattering_lut_pass() { return pass_type<MultiscatteringLutTable, MultiscatteringLutExecution>(); }
+VOLGRAPH_REGISTER_PASS(MultiscatteringLutTable, MultiscatteringLutExecution);
 
 }  // namespace volgraph

@@ -14,7 +14,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
@@ -94,6 +94,6 @@ class SkyViewLutExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_skyview_lut_pass() { return pass_type<SkyViewLutTable, SkyViewLutExecution>(); }
+VOLGRAPH_REGISTER_PASS(SkyViewLutTable, SkyViewLutExecution);
 
 }  // namespace volgraph

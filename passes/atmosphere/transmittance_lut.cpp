@@ -10,7 +10,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
@@ -69,6 +69,6 @@ class TransmittanceLutExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_transmittance_lut_pass() { return pass_type<TransmittanceLutTable, TransmittanceLutExecution>(); }
+VOLGRAPH_REGISTER_PASS(TransmittanceLutTable, TransmittanceLutExecution);
 
 }  // namespace volgraph

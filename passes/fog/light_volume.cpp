@@ -52,7 +52,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/pixel_fog.h"
 #include "physics/camera.h"
 #include "passes/plumbing/programs.h"
@@ -326,6 +326,6 @@ class LightVolumeExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl light_volume_pass() { return pass_type<LightVolumeTable, LightVolumeExecution>(); }
+VOLGRAPH_REGISTER_PASS(LightVolumeTable, LightVolumeExecution);
 
 }  // namespace volgraph

@@ -13,7 +13,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/shadow_view.h"
 #include "passes/uniform_mirrors.h"
@@ -95,6 +95,6 @@ class OpacityShadowMapExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl opacity_shadow_map_pass() { return pass_type<OpacityShadowMapTable, OpacityShadowMapExecution>(); }
+VOLGRAPH_REGISTER_PASS(OpacityShadowMapTable, OpacityShadowMapExecution);
 
 }  // namespace volgraph

@@ -18,7 +18,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "passes/fog/phase_variants.h"
@@ -150,6 +150,6 @@ class RaymarchFogExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl raymarch_fog_pass() { return pass_type<RaymarchFogTable, RaymarchFogExecution>(); }
+VOLGRAPH_REGISTER_PASS(RaymarchFogTable, RaymarchFogExecution);
 
 }  // namespace volgraph

@@ -4,6 +4,7 @@
 // conditions: a pass type whose conditional step makes a slot that a step running more
 // often uses is refused at registration, as is one whose first step is conditional; the
 // loader adds only the steps whose condition holds (translucency's variants and layers).
+#include <algorithm>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -180,6 +181,19 @@ TEST(PassDecl, TheLoaderAddsOnlyTheStepsWhoseConditionHolds) {
   EXPECT_EQ(translucency_steps("depth_peeling", R"({ "layers": 2 })"),
             (Names{"glass/back_faces", "glass/peel_depth_0", "glass/peel_shade_0", "glass/peel_depth_1", "glass/peel_shade_1"}));
   EXPECT_EQ(translucency_steps("depth_peeling", "{}").size(), 1u + 2 * 8);  // the default: 8 layers
+}
+
+// Each pass file registers its pass type (VOLGRAPH_REGISTER_PASS), none dropped by the
+// linker, in order of their names: listings and messages do not follow the link order.
+TEST(PassDecl, BuiltinPassTypesRegisterThemselvesInOrderOfTheirNames) {
+  PassRegistry registry;
+  register_builtin_passes(registry);
+  const std::vector<std::string> names = registry.names();
+  EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
+  EXPECT_EQ(names.size(), 27u);
+  for (const char* name : {"clear", "copy", "vignette", "raymarch_fog", "atmosphere_bruneton_tables", "translucency", "scene"}) {
+    EXPECT_NE(registry.find(name), nullptr) << name;
+  }
 }
 
 TEST(PassDecl, OutputLikeSlotsHaveTheirSourcesKind) {
