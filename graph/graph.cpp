@@ -174,15 +174,15 @@ Extent extent_of(const SizeSpec& size, ResourceKind kind, Extent output_size, in
       auto scaled = [](uint32_t n, float s) {
         return std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(double(n) * s)));
       };
-      const uint32_t slices = size.param.empty() ? size.absolute.depth : uint32_t(std::max<int64_t>(1, size_param));
-      const float by = size.divisor_param.empty() ? 1.0f : 1.0f / float(std::max<int64_t>(1, divisor));
+      const uint32_t slices = !size.param ? size.absolute.depth : uint32_t(std::max<int64_t>(1, size_param));
+      const float by = !size.divisor_param ? 1.0f : 1.0f / float(std::max<int64_t>(1, divisor));
       e = {scaled(output_size.width, size.scale_x * by), scaled(output_size.height, size.scale_y * by), std::max<uint32_t>(1, slices)};
       break;
     }
     case SizeSpec::Mode::square_param: {
       const uint32_t side = static_cast<uint32_t>(std::max<int64_t>(1, size_param));
-      const uint32_t high = size.height_param.empty() ? side : static_cast<uint32_t>(std::max<int64_t>(1, height));
-      const int64_t layers = size.depth_param.empty() ? int64_t{size.absolute.depth} : depth;
+      const uint32_t high = !size.height_param ? side : static_cast<uint32_t>(std::max<int64_t>(1, height));
+      const int64_t layers = !size.depth_param ? int64_t{size.absolute.depth} : depth;
       e = {side, high, uint32_t(std::max<int64_t>(1, layers))};
       break;
     }

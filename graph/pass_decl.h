@@ -16,6 +16,7 @@
 
 #include "graph/access.h"
 #include "graph/diagnostics.h"
+#include "graph/param_handle.h"
 #include "graph/resource.h"
 #include "graph/scene_features.h"
 
@@ -171,7 +172,8 @@ SlotDecl slot_history(std::string name, std::string output_slot, std::string doc
 
 // Typed handles into a pass type's tables, returned by PassTable below: a pass keeps
 // them, so its execution names a slot, parameter or variant by a member that must
-// exist (a misspelt name does not compile) and reads a parameter as its own type.
+// exist (a misspelt name does not compile) and reads a parameter as its own type
+// (ParamHandle and ChoiceHandle: graph/param_handle.h, which SizeSpec uses too).
 struct SlotHandle {
   uint16_t index = 0;
 };
@@ -179,28 +181,10 @@ struct StepHandle {
   uint16_t index = 0;
   friend bool operator==(StepHandle, StepHandle) = default;
 };
-template <typename T>  // bool, int64_t, double, std::array<double, 3>, std::string (a choice)
-struct ParamHandle {
-  uint16_t index = 0;
-};
 struct VariantHandle {
   uint16_t index = 0;
   friend bool operator==(VariantHandle, VariantHandle) = default;
 };
-// A choice parameter read as the pass's own enum: each choice's value and name, stated
-// once in the table, so an execution compares values, never names.
-template <typename Enum>
-struct ChoiceHandle {
-  ParamHandle<std::string> text;
-  std::vector<std::pair<Enum, std::string>> choices;
-  Enum value_of(const std::string& name) const {
-    for (const auto& [value, choice_name] : choices) {
-      if (choice_name == name) return value;
-    }
-    throw std::logic_error("no choice named " + name);  // the loader accepts only declared choices
-  }
-};
-
 // What a slot may add to its kind, usage and doc.
 struct SlotOptions {
   Format format = Format::undefined;  // inputs: the format required (undefined: any); outputs: the default

@@ -60,36 +60,35 @@ SizeSpec SizeSpec::of_output(float sx, float sy, uint32_t depth) {
   return s;
 }
 
-SizeSpec SizeSpec::of_output_divided(std::string divisor, std::string slices) {
+SizeSpec SizeSpec::of_output_divided(ParamHandle<int64_t> divisor, ParamHandle<int64_t> slices) {
   SizeSpec s = of_output(1.0f, 1.0f, 1);
-  s.divisor_param = std::move(divisor);
-  s.param = std::move(slices);
+  s.divisor_param = divisor.index;
+  s.param = slices.index;
   return s;
 }
 
-SizeSpec SizeSpec::of_output_divided_by_choice(std::string param, std::vector<std::pair<std::string, int64_t>> choices) {
-  SizeSpec s = of_output(1.0f, 1.0f, 1);
-  s.divisor_param = std::move(param);
-  s.divisor_choices = std::move(choices);
-  return s;
-}
-
-SizeSpec SizeSpec::square_of(std::string param_name) {
+SizeSpec SizeSpec::square_of(ParamHandle<int64_t> side) {
   SizeSpec s;
   s.mode = Mode::square_param;
-  s.param = std::move(param_name);
+  s.param = side.index;
   return s;
 }
 
-SizeSpec SizeSpec::square_layers_of(std::string side_param, std::string depth_param) {
-  SizeSpec s = square_of(std::move(side_param));
-  s.depth_param = std::move(depth_param);
+SizeSpec SizeSpec::square_layers_of(ParamHandle<int64_t> side, ParamHandle<int64_t> depth) {
+  SizeSpec s = square_of(side);
+  s.depth_param = depth.index;
   return s;
 }
 
-SizeSpec SizeSpec::rect_of(std::string width_param, std::string height_param) {
-  SizeSpec s = square_of(std::move(width_param));
-  s.height_param = std::move(height_param);
+SizeSpec SizeSpec::rect_of(ParamHandle<int64_t> width, ParamHandle<int64_t> height) {
+  SizeSpec s = square_of(width);
+  s.height_param = height.index;
+  return s;
+}
+
+SizeSpec SizeSpec::volume_of(ParamHandle<int64_t> width, ParamHandle<int64_t> height, ParamHandle<int64_t> depth) {
+  SizeSpec s = rect_of(width, height);
+  s.depth_param = depth.index;
   return s;
 }
 
@@ -98,6 +97,14 @@ SizeSpec SizeSpec::bytes(uint64_t n) {
   s.mode = Mode::absolute;
   s.buffer_bytes = n;
   return s;
+}
+
+std::vector<uint16_t> SizeSpec::params() const {
+  std::vector<uint16_t> out;
+  for (const ParamIndex& p : {param, divisor_param, depth_param, height_param}) {
+    if (p) out.push_back(*p);
+  }
+  return out;
 }
 
 uint64_t content_bytes(const ResourceDesc& desc) {

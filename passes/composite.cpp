@@ -2,7 +2,7 @@
 // Variants: none (linear, for .pfm/.exr and exact tests), ACES (Narkowicz 2015 fit),
 // Reinhard (Reinhard et al. 2002, eq. 3). Shader: shaders/composite.comp.
 #include "graph/execute/pass_execution.h"
-#include "passes/passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/tonemap.h"
@@ -58,6 +58,6 @@ class CompositeExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl composite_pass() { return pass_type<CompositeTable, CompositeExecution>(); }
+VOLGRAPH_REGISTER_PASS(CompositeTable, CompositeExecution);
 
 }  // namespace volgraph

@@ -5,14 +5,8 @@
 
 namespace volgraph {
 
+// Registers every pass type whose file registers itself (VOLGRAPH_REGISTER_PASS,
+// passes/register_pass.h), in order of their names.
 void register_builtin_passes(PassRegistry& registry);
-
-// One declaration per technique file (passes/<name>.cpp).
-PassDecl shadow_map_pass();
-PassDecl scene_pass();
-PassDecl composite_pass();
-PassDecl clear_pass();
-PassDecl copy_pass();
-PassDecl vignette_pass();  // passes/post/vignette.cpp
 
 }  // namespace volgraph

@@ -8,7 +8,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/rhi/device_error.h"
 #include "graph/scene/scene.h"
-#include "passes/passes.h"
+#include "passes/register_pass.h"
 #include "physics/camera.h"
 #include "passes/plumbing/gltf.h"
 #include "passes/plumbing/light_list.h"
@@ -178,6 +178,6 @@ class SceneExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl scene_pass() { return pass_type<SceneTable, SceneExecution>(); }
+VOLGRAPH_REGISTER_PASS(SceneTable, SceneExecution);
 
 }  // namespace volgraph

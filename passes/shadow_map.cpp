@@ -15,7 +15,7 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
-#include "passes/passes.h"
+#include "passes/register_pass.h"
 #include "physics/camera.h"
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/scene_geometry.h"
@@ -68,7 +68,7 @@ struct ShadowMapTable : PassTable {
                                         "the scene's bounds)");
   // Slots.
   SlotHandle depth = output("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float,
-                            SizeSpec::square_of("resolution"), "light-space depth");
+                            SizeSpec::square_of(resolution), "light-space depth");
   SlotHandle light_view = output("light_view", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(256),
                                  "the light's view-projection matrix and bias, for passes that sample `depth`");
 };
@@ -180,6 +180,6 @@ class ShadowMapExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl shadow_map_pass() { return pass_type<ShadowMapTable, ShadowMapExecution>(); }
+VOLGRAPH_REGISTER_PASS(ShadowMapTable, ShadowMapExecution);
 
 }  // namespace volgraph

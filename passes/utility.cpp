@@ -1,6 +1,6 @@
 // Utility passes: clear a texture to a value, copy one texture into a new one.
 #include "graph/execute/pass_execution.h"
-#include "passes/passes.h"
+#include "passes/register_pass.h"
 
 namespace volgraph {
 namespace {
@@ -60,8 +60,8 @@ class CopyExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl clear_pass() { return pass_type<ClearTable, ClearExecution>(); }
+VOLGRAPH_REGISTER_PASS(ClearTable, ClearExecution);
 
-PassDecl copy_pass() { return pass_type<CopyTable, CopyExecution>(); }
+VOLGRAPH_REGISTER_PASS(CopyTable, CopyExecution);
 
 }  // namespace volgraph

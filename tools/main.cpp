@@ -51,9 +51,11 @@ std::string range_text(const ParamDecl& p) {
   return "[" + param_value_text(p.min) + ", " + param_value_text(p.max) + "]";
 }
 
-std::string size_text(const SlotDecl& s) {
+// A slot's size as `volgraph passes` shows it, its parameters by name ("resolution²").
+std::string size_text(const PassDecl& decl, const SlotDecl& s) {
   if (!s.like.empty()) return "like " + s.like;
   if (s.kind == ResourceKind::buffer) return std::to_string(s.size.buffer_bytes) + " B";
+  auto name = [&](const SizeSpec::ParamIndex& p) { return decl.params.at(*p).name; };
   std::string out;
   switch (s.size.mode) {
     case SizeSpec::Mode::absolute:
@@ -61,16 +63,16 @@ std::string size_text(const SlotDecl& s) {
       break;
     case SizeSpec::Mode::relative:
       out = s.size.scale_x == 1.0f && s.size.scale_y == 1.0f ? "frame" : "frame × " + param_value_text(double(s.size.scale_x));
-      if (!s.size.divisor_param.empty()) out += " / " + s.size.divisor_param;
+      if (s.size.divisor_param) out += " / " + name(s.size.divisor_param);
       break;
     case SizeSpec::Mode::square_param:
-      out = s.size.height_param.empty() ? s.size.param + "²" : s.size.param + " × " + s.size.height_param;
+      out = !s.size.height_param ? name(s.size.param) + "²" : name(s.size.param) + " × " + name(s.size.height_param);
       break;
   }
   if (s.kind != ResourceKind::texture3d) return out;
   std::string depth = std::to_string(s.size.absolute.depth);
-  if (s.size.mode == SizeSpec::Mode::relative && !s.size.param.empty()) depth = s.size.param;
-  if (s.size.mode == SizeSpec::Mode::square_param && !s.size.depth_param.empty()) depth = s.size.depth_param;
+  if (s.size.mode == SizeSpec::Mode::relative && s.size.param) depth = name(s.size.param);
+  if (s.size.mode == SizeSpec::Mode::square_param && s.size.depth_param) depth = name(s.size.depth_param);
   return out + " × " + depth;
 }
 
@@ -94,7 +96,7 @@ int print_passes(const PassRegistry& registry) {
       else std::cout << kind_name(s.kind) << ", " << usage_name(s.usage);
       if (s.direction == SlotDirection::output) {
         if (s.kind != ResourceKind::buffer && s.like.empty()) std::cout << ", " << format_info(s.format).name;
-        std::cout << ", " << size_text(s);
+        std::cout << ", " << size_text(*d, s);
       } else if (s.format != Format::undefined) {
         std::cout << ", " << format_info(s.format).name;
       }

@@ -773,10 +773,11 @@ class Wiring {
   ResourceDesc output_desc(uint32_t p, const SlotDecl& slot, SizeRule* rule) {
     const PassDecl& decl = *decls_[p];
     int64_t side = 0, divisor = 1, depth = 1, height = 0;
-    if (!slot.size.param.empty()) side = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.param))]);
-    if (!slot.size.height_param.empty()) height = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.height_param))]);
-    if (!slot.size.depth_param.empty()) depth = std::get<int64_t>(params_[p][size_t(decl.param_index(slot.size.depth_param))]);
-    if (!slot.size.divisor_param.empty()) divisor = divisor_of(slot.size, params_[p][size_t(decl.param_index(slot.size.divisor_param))]);
+    const std::vector<ParamValue>& values = params_[p];
+    if (slot.size.param) side = std::get<int64_t>(values[*slot.size.param]);
+    if (slot.size.height_param) height = std::get<int64_t>(values[*slot.size.height_param]);
+    if (slot.size.depth_param) depth = std::get<int64_t>(values[*slot.size.depth_param]);
+    if (slot.size.divisor_param) divisor = divisor_of(slot.size, values[*slot.size.divisor_param]);
     SlotDecl effective = slot;
     if (const OutputOverride* o = overrides_[p][size_t(decl.slot_index(slot.name))]) {
       if (o->format) effective.format = *o->format;

@@ -17,7 +17,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/atmosphere/bruneton_uniforms.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
@@ -55,10 +55,10 @@ struct AerialPerspectiveTable : PassTable {
   SlotHandle single_mie_scattering = optional_input("single_mie_scattering", ResourceKind::texture3d, Usage::sampled,
                                                     "bruneton: the single Mie table (atmosphere_bruneton_tables.single_mie_scattering)", {.required_in = {bruneton}});
   SlotHandle aerial_scattering = output("aerial_scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-                                        SizeSpec::square_layers_of("resolution", "slices"),
+                                        SizeSpec::square_layers_of(resolution, slices),
                                         "rgb scattered toward the camera from it to each texel, for a sun of unit illuminance");
   SlotHandle aerial_transmittance = output("aerial_transmittance", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-                                           SizeSpec::square_layers_of("resolution", "slices"), "rgb transmittance from the camera to each texel");
+                                           SizeSpec::square_layers_of(resolution, slices), "rgb transmittance from the camera to each texel");
   SlotHandle lookup = output("lookup", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(kAerialLookupBytes),
                              "the volumes' frame for the passes that read them (include/atmosphere_aerial_lookup.glsl AerialLookup)");
 };
@@ -152,6 +152,6 @@ class AerialPerspectiveExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_aerial_perspective_pass() { return pass_type<AerialPerspectiveTable, AerialPerspectiveExecution>(); }
+VOLGRAPH_REGISTER_PASS(AerialPerspectiveTable, AerialPerspectiveExecution);
 
 }  // namespace volgraph

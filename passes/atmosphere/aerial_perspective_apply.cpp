@@ -9,7 +9,7 @@
 // fog's apply passes: the first multiplies by T_air, the second adds S_air·E.
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/apply_draws.h"
 #include "passes/uniform_mirrors.h"
 
@@ -63,6 +63,6 @@ class AerialPerspectiveApplyExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl aerial_perspective_apply_pass() { return pass_type<AerialPerspectiveApplyTable, AerialPerspectiveApplyExecution>(); }
+VOLGRAPH_REGISTER_PASS(AerialPerspectiveApplyTable, AerialPerspectiveApplyExecution);
 
 }  // namespace volgraph

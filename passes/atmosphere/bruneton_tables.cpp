@@ -22,7 +22,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/atmosphere/bruneton_uniforms.h"
 #include "passes/plumbing/programs.h"
 #include "physics/atmosphere_bruneton.h"
@@ -31,13 +31,6 @@ namespace volgraph {
 namespace {
 
 constexpr int kMaxOrders = 8;
-
-// (nu · mu_s) × mu × r.
-SizeSpec scattering_size() {
-  SizeSpec s = SizeSpec::rect_of("nu_mu_s", "mu");
-  s.depth_param = "r";
-  return s;
-}
 
 std::vector<ParamProblem> check_table_shape(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& values) {
   const int64_t nu = std::get<int64_t>(values.at(size_t(decl.param_index("nu"))));
@@ -82,7 +75,7 @@ struct BrunetonTablesTable : PassTable {
   SlotHandle single_mie_scattering = output("single_mie_scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba32_float,
                                             scattering_size(), "per (r, mu, mu_s, nu) for a sun of unit E: single Mie without its phase (rgb)");
   SlotHandle irradiance = output("irradiance", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float,
-                                 SizeSpec::rect_of("irradiance_width", "irradiance_height"),
+                                 SizeSpec::rect_of(irradiance_width, irradiance_height),
                                  "the sky's irradiance on a horizontal surface per (r, mu_s), for a sun of unit E (rgb)");
   // Internal tables.
   SlotHandle delta_irradiance = irradiance_table("delta_irradiance", "the ground's irradiance of the last order (the sun's first)");
@@ -112,8 +105,10 @@ struct BrunetonTablesTable : PassTable {
   SlotHandle irradiance_next(int order) const { return order == kMaxOrders ? irradiance : irradiance_sum[size_t(order % 2)]; }
 
  private:
+  // (nu · mu_s) × mu × r.
+  SizeSpec scattering_size() const { return SizeSpec::volume_of(nu_mu_s, mu, r); }
   SlotHandle irradiance_table(std::string name, std::string doc) {
-    return internal(std::move(name), ResourceKind::texture2d, Format::rgba32_float, SizeSpec::rect_of("irradiance_width", "irradiance_height"),
+    return internal(std::move(name), ResourceKind::texture2d, Format::rgba32_float, SizeSpec::rect_of(irradiance_width, irradiance_height),
                     std::move(doc));
   }
   SlotHandle scattering_table(std::string name, std::string doc) {
@@ -244,6 +239,6 @@ class BrunetonTablesExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_bruneton_tables_pass() { return pass_type<BrunetonTablesTable, BrunetonTablesExecution>(); }
+VOLGRAPH_REGISTER_PASS(BrunetonTablesTable, BrunetonTablesExecution);
 
 }  // namespace volgraph

@@ -10,7 +10,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
@@ -38,7 +38,7 @@ struct MultiscatteringLutTable : PassTable {
   SlotHandle transmittance = input("transmittance", ResourceKind::texture2d, Usage::sampled,
                                    "the transmittance LUT (atmosphere_transmittance_lut.transmittance)");
   SlotHandle multiscattering = output("multiscattering", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
-                                      SizeSpec::rect_of("width", "height"), "Ψ_ms rgb for a sun of unit illuminance",
+                                      SizeSpec::rect_of(width, height), "Ψ_ms rgb for a sun of unit illuminance",
                                       {.format_overridable = true});
 };
 
@@ -73,6 +73,6 @@ class MultiscatteringLutExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_multiscattering_lut_pass() { return pass_type<MultiscatteringLutTable, MultiscatteringLutExecution>(); }
+VOLGRAPH_REGISTER_PASS(MultiscatteringLutTable, MultiscatteringLutExecution);
 
 }  // namespace volgraph

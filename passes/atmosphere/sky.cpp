@@ -32,7 +32,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/atmosphere/bruneton_uniforms.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
@@ -180,6 +180,6 @@ class SkyExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl sky_pass() { return pass_type<SkyTable, SkyExecution>(); }
+VOLGRAPH_REGISTER_PASS(SkyTable, SkyExecution);
 
 }  // namespace volgraph

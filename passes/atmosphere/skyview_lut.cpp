@@ -14,7 +14,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
@@ -53,7 +53,7 @@ struct SkyViewLutTable : PassTable {
   SlotHandle multiscattering = input("multiscattering", ResourceKind::texture2d, Usage::sampled,
                                      "the multiple-scattering LUT (atmosphere_multiscattering_lut.multiscattering)");
   SlotHandle sky_view = output("sky_view", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
-                               SizeSpec::rect_of("width", "height"), "sky radiance rgb for a sun of unit illuminance",
+                               SizeSpec::rect_of(width, height), "sky radiance rgb for a sun of unit illuminance",
                                {.format_overridable = true});
 };
 
@@ -94,6 +94,6 @@ class SkyViewLutExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_skyview_lut_pass() { return pass_type<SkyViewLutTable, SkyViewLutExecution>(); }
+VOLGRAPH_REGISTER_PASS(SkyViewLutTable, SkyViewLutExecution);
 
 }  // namespace volgraph

@@ -10,7 +10,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/atmosphere/atmosphere_block.h"
-#include "passes/atmosphere/atmosphere_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
@@ -36,7 +36,7 @@ struct TransmittanceLutTable : PassTable {
   ParamHandle<int64_t> panels = integer("panels", 32, 1, 256, "", "Gauss–Legendre panels (4 points each) along each ray");
   // Slots.
   SlotHandle transmittance = output("transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float,
-                                    SizeSpec::rect_of("width", "height"), "e^(−τ) rgb to the top of the atmosphere",
+                                    SizeSpec::rect_of(width, height), "e^(−τ) rgb to the top of the atmosphere",
                                     {.format_overridable = true});
 };
 
@@ -69,6 +69,6 @@ class TransmittanceLutExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl atmosphere_transmittance_lut_pass() { return pass_type<TransmittanceLutTable, TransmittanceLutExecution>(); }
+VOLGRAPH_REGISTER_PASS(TransmittanceLutTable, TransmittanceLutExecution);
 
 }  // namespace volgraph

@@ -11,8 +11,8 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
-#include "passes/clouds/cloud_passes.h"
 #include "passes/plumbing/programs.h"
+#include "passes/register_pass.h"
 
 namespace volgraph {
 namespace {
@@ -34,11 +34,11 @@ struct CloudNoiseTable : PassTable {
   ParamHandle<int64_t> seed = integer("seed", 0, 0, 65535, "", "the hash's seed: another seed, other clouds");
   // Slots.
   SlotHandle shape = output("shape", ResourceKind::texture3d, Usage::storage_write, Format::rgba8_unorm,
-                            SizeSpec::square_layers_of("shape_size", "shape_size"),
+                            SizeSpec::square_layers_of(shape_size, shape_size),
                             "r Perlin-Worley, g b a Worley sums at periods 4, 8, 16 (tileable)");
   SlotHandle detail = output("detail", ResourceKind::texture3d, Usage::storage_write, Format::rgba8_unorm,
-                             SizeSpec::square_layers_of("detail_size", "detail_size"), "r g b Worley sums at periods 2, 4, 8 (tileable)");
-  SlotHandle curl = output("curl", ResourceKind::texture2d, Usage::storage_write, Format::rgba8_unorm, SizeSpec::square_of("curl_size"),
+                             SizeSpec::square_layers_of(detail_size, detail_size), "r g b Worley sums at periods 2, 4, 8 (tileable)");
+  SlotHandle curl = output("curl", ResourceKind::texture2d, Usage::storage_write, Format::rgba8_unorm, SizeSpec::square_of(curl_size),
                            "r g: the curl of a gradient-noise potential, 0.5 + 0.5 · curl / 8 (tileable)");
 };
 
@@ -80,6 +80,6 @@ class CloudNoiseExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl cloud_noise_pass() { return pass_type<CloudNoiseTable, CloudNoiseExecution>(); }
+VOLGRAPH_REGISTER_PASS(CloudNoiseTable, CloudNoiseExecution);
 
 }  // namespace volgraph

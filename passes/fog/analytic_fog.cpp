@@ -14,7 +14,7 @@
 // plane where nothing was drawn. Height fog and volumes are ignored (height_fog,
 // the froxel chain). Shader: shaders/analytic_fog.comp.
 #include "graph/scene/scene.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/pixel_fog.h"
 
 namespace volgraph {
@@ -44,6 +44,6 @@ class AnalyticFogExecution final : public fog::PixelFogExecution {
 
 }  // namespace
 
-PassDecl analytic_fog_pass() { return pass_type<AnalyticFogTable, AnalyticFogExecution>(); }
+VOLGRAPH_REGISTER_PASS(AnalyticFogTable, AnalyticFogExecution);
 
 }  // namespace volgraph

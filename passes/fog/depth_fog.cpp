@@ -5,7 +5,7 @@
 // depth), to the far plane where nothing was drawn. Not physically based: the fog has one
 // colour and ignores the scene's media and lights (it still needs a medium to run).
 // Shader: shaders/depth_fog.comp (f from shaders/include/media.glsl).
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/pixel_fog.h"
 #include "passes/uniform_mirrors.h"
 #include "shaders/include/depth_fog_codes.h"
@@ -47,6 +47,6 @@ class DepthFogExecution final : public fog::PixelFogExecution {
 
 }  // namespace
 
-PassDecl depth_fog_pass() { return pass_type<DepthFogTable, DepthFogExecution>(); }
+VOLGRAPH_REGISTER_PASS(DepthFogTable, DepthFogExecution);
 
 }  // namespace volgraph

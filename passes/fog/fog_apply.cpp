@@ -8,7 +8,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/apply_draws.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 
@@ -75,6 +75,6 @@ class FogApplyExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl fog_apply_pass() { return pass_type<FogApplyTable, FogApplyExecution>(); }
+VOLGRAPH_REGISTER_PASS(FogApplyTable, FogApplyExecution);
 
 }  // namespace volgraph

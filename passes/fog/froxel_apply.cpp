@@ -4,7 +4,7 @@
 // the first multiplies it by T (per channel), the second adds L_scat. When the scene has
 // no medium the pass is culled and the colour passes through unchanged.
 #include "graph/execute/pass_execution.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/apply_draws.h"
 #include "passes/fog/fog_frame.h"
 
@@ -57,6 +57,6 @@ class FroxelApplyExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl froxel_apply_pass() { return pass_type<FroxelApplyTable, FroxelApplyExecution>(); }
+VOLGRAPH_REGISTER_PASS(FroxelApplyTable, FroxelApplyExecution);
 
 }  // namespace volgraph

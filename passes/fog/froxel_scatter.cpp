@@ -13,7 +13,7 @@
 #include <cstddef>
 
 #include "graph/execute/pass_execution.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "passes/fog/phase_variants.h"
@@ -94,6 +94,6 @@ class FroxelScatterExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl froxel_scatter_pass() { return pass_type<FroxelScatterTable, FroxelScatterExecution>(); }
+VOLGRAPH_REGISTER_PASS(FroxelScatterTable, FroxelScatterExecution);
 
 }  // namespace volgraph

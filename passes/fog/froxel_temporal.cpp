@@ -9,7 +9,7 @@
 // this frame's value, unchanged. Shader: shaders/froxel_temporal.comp; reprojection:
 // shaders/include/froxel.glsl `froxel_uvw` ↔ physics/froxel.h.
 #include "graph/execute/pass_execution.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/temporal.h"
 
 namespace volgraph {
@@ -51,6 +51,6 @@ class FroxelTemporalExecution final : public fog::TemporalExecution {
 
 }  // namespace
 
-PassDecl froxel_temporal_pass() { return pass_type<FroxelTemporalTable, FroxelTemporalExecution>(); }
+VOLGRAPH_REGISTER_PASS(FroxelTemporalTable, FroxelTemporalExecution);
 
 }  // namespace volgraph

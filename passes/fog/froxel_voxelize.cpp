@@ -9,7 +9,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 
 namespace volgraph {
@@ -45,7 +45,7 @@ struct FroxelVoxelizeTable : PassTable {
  private:
   SlotHandle media_volume(std::string name, std::string doc) {
     return output(std::move(name), ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-                  SizeSpec::of_output_divided("tile", "slices"), std::move(doc));
+                  SizeSpec::of_output_divided(tile, slices), std::move(doc));
   }
 };
 
@@ -107,6 +107,6 @@ class FroxelVoxelizeExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl froxel_voxelize_pass() { return pass_type<FroxelVoxelizeTable, FroxelVoxelizeExecution>(); }
+VOLGRAPH_REGISTER_PASS(FroxelVoxelizeTable, FroxelVoxelizeExecution);
 
 }  // namespace volgraph

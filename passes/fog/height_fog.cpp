@@ -15,7 +15,7 @@
 // media of the scene are ignored; pixels hitting nothing integrate to the camera's far
 // plane. Shader: shaders/height_fog.comp.
 #include "graph/scene/scene.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/pixel_fog.h"
 
 namespace volgraph {
@@ -44,6 +44,6 @@ class HeightFogExecution final : public fog::PixelFogExecution {
 
 }  // namespace
 
-PassDecl height_fog_pass() { return pass_type<HeightFogTable, HeightFogExecution>(); }
+VOLGRAPH_REGISTER_PASS(HeightFogTable, HeightFogExecution);
 
 }  // namespace volgraph

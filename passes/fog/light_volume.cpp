@@ -52,7 +52,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/pixel_fog.h"
 #include "physics/camera.h"
 #include "passes/plumbing/programs.h"
@@ -154,7 +154,7 @@ struct LightVolumeTable : PassTable {
   // Internal images.
   SlotHandle light_frame = internal("light_frame", ResourceKind::texture2d, Format::rgba32_float, SizeSpec::fixed(kLightFrameTexels, 1),
                                     "the shadow map's clip space back to the world (light_volume.glsl)");
-  SlotHandle cells = internal("cells", ResourceKind::texture2d, Format::r32_float, SizeSpec::square_of("grid"),
+  SlotHandle cells = internal("cells", ResourceKind::texture2d, Format::r32_float, SizeSpec::square_of(grid),
                               "per cell of the grid the light depth where shadow starts (the first min(grid, map side)² texels)");
   SlotHandle ends = internal("ends", ResourceKind::texture2d, Format::rgba32_float, SizeSpec::of_output(), "per pixel t_end and the unshadowed sums' ends");
   SlotHandle sums = internal("sums", ResourceKind::texture2d, Format::rgba32_float, SizeSpec::of_output(), "per pixel the signed sum of I(t)");
@@ -326,6 +326,6 @@ class LightVolumeExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl light_volume_pass() { return pass_type<LightVolumeTable, LightVolumeExecution>(); }
+VOLGRAPH_REGISTER_PASS(LightVolumeTable, LightVolumeExecution);
 
 }  // namespace volgraph

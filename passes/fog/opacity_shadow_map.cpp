@@ -13,7 +13,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/shadow_view.h"
 #include "passes/uniform_mirrors.h"
@@ -51,7 +51,7 @@ struct OpacityShadowMapTable : PassTable {
   SlotHandle light_view =
       input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view (shadow_map.light_view)");
   SlotHandle optical_depth = output("optical_depth", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-                                    SizeSpec::square_layers_of("resolution", "layers"), "τ rgb from the light to each layer's centre");
+                                    SizeSpec::square_layers_of(resolution, layers), "τ rgb from the light to each layer's centre");
 };
 
 class OpacityShadowMapExecution final : public PassExecution {
@@ -95,6 +95,6 @@ class OpacityShadowMapExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl opacity_shadow_map_pass() { return pass_type<OpacityShadowMapTable, OpacityShadowMapExecution>(); }
+VOLGRAPH_REGISTER_PASS(OpacityShadowMapTable, OpacityShadowMapExecution);
 
 }  // namespace volgraph

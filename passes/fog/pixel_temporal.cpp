@@ -10,7 +10,7 @@
 // are this frame's images, unchanged. Shader: shaders/pixel_temporal.comp; reprojection:
 // shaders/include/view_rays.glsl `view_uvz` ↔ physics/camera.h.
 #include "graph/execute/pass_execution.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/temporal.h"
 
 namespace volgraph {
@@ -79,6 +79,6 @@ class PixelTemporalExecution final : public fog::TemporalExecution {
 
 }  // namespace
 
-PassDecl pixel_temporal_pass() { return pass_type<PixelTemporalTable, PixelTemporalExecution>(); }
+VOLGRAPH_REGISTER_PASS(PixelTemporalTable, PixelTemporalExecution);
 
 }  // namespace volgraph

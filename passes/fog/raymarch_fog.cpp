@@ -18,7 +18,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "passes/fog/phase_variants.h"
@@ -26,7 +26,9 @@
 namespace volgraph {
 namespace {
 
-SizeSpec fog_image_size() { return SizeSpec::of_output_divided_by_choice("resolution", {{"full", 1}, {"half", 2}}); }
+// The outputs' size (parameter "resolution").
+enum class Resolution : uint8_t { full, half };
+int64_t divisor_of(Resolution r) { return r == Resolution::half ? 2 : 1; }
 
 struct RaymarchFogTable : fog::PhaseTable {
   RaymarchFogTable()
@@ -49,8 +51,8 @@ struct RaymarchFogTable : fog::PhaseTable {
                                             "view depth the march reaches where no surface is (at most the camera's far plane)");
   ParamHandle<double> shadow_distance =
       number("shadow_distance", 50, 1e-3, 1e7, "m", "how far toward a directional light the volumes shadow");
-  ParamHandle<std::string> resolution =
-      choice("resolution", "full", {"full", "half"}, "the outputs' size: the frame's or half of it in x and y");
+  ChoiceHandle<Resolution> resolution = choice("resolution", Resolution::full, {{Resolution::full, "full"}, {Resolution::half, "half"}},
+                                               "the outputs' size: the frame's or half of it in x and y");
   ParamHandle<bool> jitter =
       flag("jitter", true, "sample each step at a per-pixel, per-frame point (interleaved gradient noise); off: its midpoint");
   ParamHandle<bool> shadows = flag("shadows", true, "sample the shadow map when one is wired");
@@ -64,6 +66,9 @@ struct RaymarchFogTable : fog::PhaseTable {
                                      fog_image_size(), "in-scattered radiance toward the camera, rgb");
   SlotHandle fog_transmittance = output("fog_transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
                                         fog_image_size(), "transmittance from the camera to the surface, rgb");
+
+ private:
+  SizeSpec fog_image_size() const { return SizeSpec::of_output_divided_by_choice(resolution, divisor_of); }
 };
 
 class RaymarchFogExecution final : public PassExecution {
@@ -145,6 +150,6 @@ class RaymarchFogExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl raymarch_fog_pass() { return pass_type<RaymarchFogTable, RaymarchFogExecution>(); }
+VOLGRAPH_REGISTER_PASS(RaymarchFogTable, RaymarchFogExecution);
 
 }  // namespace volgraph

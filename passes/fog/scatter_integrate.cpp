@@ -5,7 +5,7 @@
 // homogeneous slice and stable as σt → 0). Shader: shaders/scatter_integrate.comp;
 // the steps: shaders/include/media.glsl ↔ physics/media.h.
 #include "graph/execute/pass_execution.h"
-#include "passes/fog/fog_passes.h"
+#include "passes/register_pass.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
@@ -68,6 +68,6 @@ class ScatterIntegrateExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl scatter_integrate_pass() { return pass_type<ScatterIntegrateTable, ScatterIntegrateExecution>(); }
+VOLGRAPH_REGISTER_PASS(ScatterIntegrateTable, ScatterIntegrateExecution);
 
 }  // namespace volgraph

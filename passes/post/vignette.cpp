@@ -7,7 +7,7 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
-#include "passes/passes.h"
+#include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 
 namespace volgraph {
@@ -54,6 +54,6 @@ class VignetteExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl vignette_pass() { return pass_type<VignetteTable, VignetteExecution>(); }
+VOLGRAPH_REGISTER_PASS(VignetteTable, VignetteExecution);
 
 }  // namespace volgraph

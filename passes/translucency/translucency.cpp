@@ -30,7 +30,7 @@
 #include "passes/plumbing/scene_lighting.h"
 #include "passes/plumbing/shadow_view.h"
 #include "passes/plumbing/textures.h"
-#include "passes/translucency/translucency_passes.h"
+#include "passes/register_pass.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/camera.h"
 
@@ -470,6 +470,6 @@ class TranslucencyExecution final : public PassExecution {
 
 }  // namespace
 
-PassDecl translucency_pass() { return pass_type<TranslucencyTable, TranslucencyExecution>(); }
+VOLGRAPH_REGISTER_PASS(TranslucencyTable, TranslucencyExecution);
 
 }  // namespace volgraph

@@ -4,7 +4,10 @@
 // conditions: a pass type whose conditional step makes a slot that a step running more
 // often uses is refused at registration, as is one whose first step is conditional; the
 // loader adds only the steps whose condition holds (translucency's variants and layers).
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -30,6 +33,78 @@ TEST(PassDecl, TwoSlotsOfOneNameAreRefusedAtRegistration) {
   EXPECT_THROW(registry.add(decl), std::logic_error);
   decl.slots.back().name = "sky_color";
   EXPECT_NO_THROW(registry.add(decl));
+}
+
+// A size names its parameters by their handles (SizeSpec): a parameter's name, or a
+// handle to a parameter of another type, does not compile.
+template <typename Side>
+concept SquareOfAccepts = requires(Side side) { SizeSpec::square_of(side); };
+static_assert(SquareOfAccepts<ParamHandle<int64_t>>);
+static_assert(!SquareOfAccepts<const char*>);
+static_assert(!SquareOfAccepts<std::string>);
+static_assert(!SquareOfAccepts<ParamHandle<double>>);
+
+// A pass type whose outputs' sizes are its parameters: a volume of three, an image the
+// frame divided by a choice's divisor. A number comes first, so no size parameter is index 0.
+enum class Scale : uint8_t { one, quarter };
+int64_t divisor_of(Scale s) { return s == Scale::quarter ? 4 : 1; }
+struct SizedTable : PassTable {
+  SizedTable() : PassTable("sized", PassKind::compute, "sizes from parameters") {}
+  VariantHandle only = variant("only", "the one variant");
+  ParamHandle<double> gain = number("gain", 1, 0, 2, "", "not a size");
+  ParamHandle<int64_t> width = integer("width", 16, 1, 64, "texels", "x");
+  ParamHandle<int64_t> height = integer("height", 8, 1, 64, "texels", "y");
+  ParamHandle<int64_t> depth = integer("depth", 4, 1, 64, "texels", "z");
+  ChoiceHandle<Scale> scale = choice("scale", Scale::one, {{Scale::one, "one"}, {Scale::quarter, "quarter"}}, "of the frame");
+  SlotHandle volume = output("volume", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
+                             SizeSpec::volume_of(width, height, depth), "width × height × depth");
+  SlotHandle image = output("image", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
+                            SizeSpec::of_output_divided_by_choice(scale, divisor_of), "the frame / scale");
+};
+
+// The extent of resource `name` in a graph of one sized pass with `params`, in a 64 × 32 frame.
+Extent sized_extent(const std::string& name, const std::string& params) {
+  PassRegistry registry;
+  registry.add(SizedTable().decl);
+  const std::string text = R"({ "output": { "size": [64, 32] },
+  "graph": { "passes": [ { "name": "s", "type": "sized", "params": )" + params + R"( } ],
+    "outputs": ["s.volume", "s.image"] } })";
+  for (const GraphResource& r : load_config_text("sized.json", text, registry).graph.resources) {
+    if (r.desc.name == name) return r.desc.extent;
+  }
+  ADD_FAILURE() << "no resource " << name;
+  return {};
+}
+
+bool same(Extent a, Extent b) { return a.width == b.width && a.height == b.height && a.depth == b.depth; }
+
+TEST(PassDecl, ASizeReadsTheParametersItsHandlesName) {
+  EXPECT_TRUE(same(sized_extent("s.volume", "{}"), {16, 8, 4}));
+  EXPECT_TRUE(same(sized_extent("s.volume", R"({ "width": 5, "height": 6, "depth": 7, "gain": 2 })"), {5, 6, 7}));
+  EXPECT_TRUE(same(sized_extent("s.image", "{}"), {64, 32, 1}));
+  EXPECT_TRUE(same(sized_extent("s.image", R"({ "scale": "quarter" })"), {16, 8, 1}));
+}
+
+// Registers `decl` in a registry of its own: whether it is refused.
+bool refused_at_registration(const PassDecl& decl) {
+  PassRegistry registry;
+  try {
+    registry.add(decl);
+  } catch (const std::logic_error&) {
+    return true;
+  }
+  return false;
+}
+
+TEST(PassDecl, ASizeOfAnotherTablesParametersIsRefusedAtRegistration) {
+  const SizedTable table;
+  PassDecl foreign = table.decl;
+  foreign.params.resize(2);  // only "gain" and "width" left: the sizes read past the params
+  EXPECT_TRUE(refused_at_registration(foreign));
+  PassDecl retyped = table.decl;
+  retyped.params[size_t(table.width.index)].type = ParamType::number;  // the size reads "width" as an integer
+  EXPECT_TRUE(refused_at_registration(retyped));
+  EXPECT_FALSE(refused_at_registration(table.decl));
 }
 
 // A pass type of steps: `made_by` makes an internal slot under its condition, `used_by` reads it under its own.
@@ -108,6 +183,31 @@ TEST(PassDecl, TheLoaderAddsOnlyTheStepsWhoseConditionHolds) {
   EXPECT_EQ(translucency_steps("depth_peeling", R"({ "layers": 2 })"),
             (Names{"glass/back_faces", "glass/peel_depth_0", "glass/peel_shade_0", "glass/peel_depth_1", "glass/peel_shade_1"}));
   EXPECT_EQ(translucency_steps("depth_peeling", "{}").size(), 1u + 2 * 8);  // the default: 8 layers
+}
+
+// The registrations the tree's pass files make: "VOLGRAPH_REGISTER_PASS(" at a line's start.
+size_t registrations_in_tree() {
+  size_t count = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(::volgraph::testing::source_dir()) + "/passes")) {
+    if (entry.path().extension() != ".cpp") continue;
+    std::ifstream file(entry.path());
+    for (std::string line; std::getline(file, line);) count += line.rfind("VOLGRAPH_REGISTER_PASS(", 0) == 0 ? 1 : 0;
+  }
+  return count;
+}
+
+// Each pass file registers its pass type (VOLGRAPH_REGISTER_PASS), none dropped by the
+// linker, in order of their names: listings and messages do not follow the link order.
+TEST(PassDecl, BuiltinPassTypesRegisterThemselvesInOrderOfTheirNames) {
+  PassRegistry registry;
+  register_builtin_passes(registry);
+  const std::vector<std::string> names = registry.names();
+  EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
+  EXPECT_EQ(names.size(), registrations_in_tree()) << "every file's registration, none dropped by the linker";
+  EXPECT_GE(names.size(), 28u);
+  for (const char* name : {"clear", "copy", "vignette", "raymarch_fog", "atmosphere_bruneton_tables", "translucency", "scene"}) {
+    EXPECT_NE(registry.find(name), nullptr) << name;
+  }
 }
 
 TEST(PassDecl, OutputLikeSlotsHaveTheirSourcesKind) {
