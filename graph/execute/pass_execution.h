@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "graph/graph.h"
+#include "graph/rhi/bind_by_name.h"
 #include "graph/rhi/graph_resource_set.h"
 #include "graph/rhi/rhi.h"
 
@@ -87,6 +88,16 @@ class PassContext : public PassSetup {
 
   // The bind group of `layout` holding `entries`, from the device's cache.
   rhi::BindGroupId bind_group(rhi::BindGroupLayoutId layout, std::vector<rhi::BindGroupEntry> entries) const;
+
+  // The bind group of the program's set that `resources` name (rhi::bind, by the shader's
+  // variables): checked first, so an entry of another set, one the layout lacks or a binding
+  // left out throws std::logic_error naming the pass, the shader and the variable.
+  template <typename Program>
+    requires requires(const Program& p) { p.layout_descs; p.shader; }
+  rhi::BindGroupId bind_group(const Program& program, const std::vector<rhi::BoundResource>& resources) const {
+    const uint32_t set = rhi::check_bound_set(resources, program.layout_descs, name(), program.shader);
+    return bind_group(program.layouts[set], rhi::entries_of(resources));
+  }
 };
 
 class PassExecution {

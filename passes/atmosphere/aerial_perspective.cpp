@@ -24,9 +24,14 @@
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
 #include "physics/atmosphere_sky.h"
+#include "shaders/bindings/atmosphere_aerial_perspective.comp.h"
+#include "shaders/bindings/atmosphere_aerial_perspective_bruneton.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace atmosphere_aerial_perspective_shader = shaders::atmosphere_aerial_perspective_comp;
+namespace atmosphere_aerial_perspective_bruneton_shader = shaders::atmosphere_aerial_perspective_bruneton_comp;
 
 struct AerialPerspectiveTable : PassTable {
   AerialPerspectiveTable()
@@ -77,7 +82,6 @@ class AerialPerspectiveExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const GpuAerialPerspectiveFrame frame = aerial_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     // The volumes' frame for their readers, whichever variant fills them.
@@ -88,11 +92,11 @@ class AerialPerspectiveExecution final : public PassExecution {
       return;
     }
     const rhi::BindGroupId group = c.bind_group(
-        program_.layouts[0],
-        {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.transmittance)),
-         BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(4, c.view(t_.multiscattering)),
-         BindGroupEntry::of(5, c.sampler(rhi::StockSampler::linear_clamp)), BindGroupEntry::of(6, c.view(t_.aerial_scattering)),
-         BindGroupEntry::of(7, c.view(t_.aerial_transmittance))});
+        program_,
+        {bind(atmosphere_aerial_perspective_shader::atmosphere, atmosphere_.write(c)), bind(atmosphere_aerial_perspective_shader::frame, frame_), bind(atmosphere_aerial_perspective_shader::transmittance, c.view(t_.transmittance)),
+         bind(atmosphere_aerial_perspective_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(atmosphere_aerial_perspective_shader::multiscattering, c.view(t_.multiscattering)),
+         bind(atmosphere_aerial_perspective_shader::linear, c.sampler(rhi::StockSampler::linear_clamp)), bind(atmosphere_aerial_perspective_shader::aerial_scattering, c.view(t_.aerial_scattering)),
+         bind(atmosphere_aerial_perspective_shader::aerial_transmittance, c.view(t_.aerial_transmittance))});
     const Extent size = c.extent(t_.aerial_scattering);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, size.depth});
   }
@@ -106,13 +110,12 @@ class AerialPerspectiveExecution final : public PassExecution {
   }
 
   void record_bruneton(PassContext& c) const {
-    using rhi::BindGroupEntry;
     const rhi::BindGroupId group = c.bind_group(
-        program_.layouts[0],
-        {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(2, c.view(t_.transmittance)),
-         BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(4, c.view(t_.scattering)),
-         BindGroupEntry::of(5, table_), BindGroupEntry::of(6, c.view(t_.aerial_scattering)), BindGroupEntry::of(7, c.view(t_.aerial_transmittance)),
-         BindGroupEntry::of(8, c.view(t_.single_mie_scattering))});
+        program_,
+        {bind(atmosphere_aerial_perspective_bruneton_shader::atmosphere, atmosphere_.write(c)), bind(atmosphere_aerial_perspective_bruneton_shader::frame, frame_), bind(atmosphere_aerial_perspective_bruneton_shader::transmittance, c.view(t_.transmittance)),
+         bind(atmosphere_aerial_perspective_bruneton_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(atmosphere_aerial_perspective_bruneton_shader::scattering, c.view(t_.scattering)),
+         bind(atmosphere_aerial_perspective_bruneton_shader::table, table_), bind(atmosphere_aerial_perspective_bruneton_shader::aerial_scattering, c.view(t_.aerial_scattering)),
+         bind(atmosphere_aerial_perspective_bruneton_shader::aerial_transmittance, c.view(t_.aerial_transmittance)), bind(atmosphere_aerial_perspective_bruneton_shader::single_mie_scattering, c.view(t_.single_mie_scattering))});
     const Extent size = c.extent(t_.aerial_scattering);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, size.depth});
   }

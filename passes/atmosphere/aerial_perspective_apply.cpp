@@ -12,9 +12,13 @@
 #include "passes/register_pass.h"
 #include "passes/fog/apply_draws.h"
 #include "passes/uniform_mirrors.h"
+#include "shaders/bindings/aerial_perspective_apply_transmittance.frag.h"
 
 namespace volgraph {
 namespace {
+
+// Both draws' shaders declare include/aerial_apply.glsl's bindings.
+namespace aerial_perspective_apply_transmittance_shader = shaders::aerial_perspective_apply_transmittance_frag;
 
 struct AerialPerspectiveApplyTable : PassTable {
   AerialPerspectiveApplyTable()
@@ -46,13 +50,11 @@ class AerialPerspectiveApplyExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const rhi::BindGroupId group = c.bind_group(
-        draws_.layout(),
-        {BindGroupEntry::of(0, c.buffer(t_.lookup)), BindGroupEntry::of(1, c.view(t_.depth)),
-         BindGroupEntry::of(2, c.view(t_.aerial_scattering)), BindGroupEntry::of(3, c.view(t_.aerial_transmittance)),
-         BindGroupEntry::of(4, c.sampler(rhi::StockSampler::trilinear_clamp)),
-         BindGroupEntry::of(5, c.sampler(rhi::StockSampler::nearest_clamp))});
+        draws_.program(),
+        {bind(aerial_perspective_apply_transmittance_shader::lookup, c.buffer(t_.lookup)), bind(aerial_perspective_apply_transmittance_shader::scene_depth, c.view(t_.depth)),
+         bind(aerial_perspective_apply_transmittance_shader::aerial_scattering, c.view(t_.aerial_scattering)), bind(aerial_perspective_apply_transmittance_shader::aerial_transmittance, c.view(t_.aerial_transmittance)),
+         bind(aerial_perspective_apply_transmittance_shader::trilinear, c.sampler(rhi::StockSampler::trilinear_clamp)), bind(aerial_perspective_apply_transmittance_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp))});
     draws_.record(c, group);
   }
 

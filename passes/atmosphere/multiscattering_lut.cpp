@@ -14,9 +14,12 @@
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
+#include "shaders/bindings/atmosphere_multiscattering_lut.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace atmosphere_multiscattering_lut_shader = shaders::atmosphere_multiscattering_lut_comp;
 
 struct MultiscatteringLutTable : PassTable {
   MultiscatteringLutTable()
@@ -54,12 +57,11 @@ class MultiscatteringLutExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
     const rhi::BindGroupId group =
-        c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, params_),
-                                           BindGroupEntry::of(2, c.view(t_.transmittance)), BindGroupEntry::of(3, nearest),
-                                           BindGroupEntry::of(4, c.view(t_.multiscattering))});
+        c.bind_group(program_, {bind(atmosphere_multiscattering_lut_shader::atmosphere, atmosphere_.write(c)), bind(atmosphere_multiscattering_lut_shader::params, params_),
+                                bind(atmosphere_multiscattering_lut_shader::transmittance, c.view(t_.transmittance)), bind(atmosphere_multiscattering_lut_shader::nearest, nearest),
+                                bind(atmosphere_multiscattering_lut_shader::multiscattering_lut, c.view(t_.multiscattering))});
     const Extent size = c.extent(t_.multiscattering);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, 1});
   }

@@ -39,9 +39,16 @@
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
 #include "physics/atmosphere_sky.h"
+#include "shaders/bindings/atmosphere_sky.frag.h"
+#include "shaders/bindings/atmosphere_sky_bruneton.frag.h"
+#include "shaders/bindings/atmosphere_sky_raymarch.frag.h"
 
 namespace volgraph {
 namespace {
+
+namespace atmosphere_sky_shader = shaders::atmosphere_sky_frag;
+namespace atmosphere_sky_raymarch_shader = shaders::atmosphere_sky_raymarch_frag;
+namespace atmosphere_sky_bruneton_shader = shaders::atmosphere_sky_bruneton_frag;
 
 struct SkyTable : PassTable {
   SkyTable() : PassTable("sky", PassKind::graphics, "The atmosphere's sky and sun disk behind the scene's surfaces.") {
@@ -81,12 +88,9 @@ struct SkyTable : PassTable {
                                "the scene's linear radiance (scene.color); the sky drawn behind its surfaces");
 };
 
-// The bindings every variant's shader shares (set 0): 0 the atmosphere, 1 the frame
-// (GpuSkyFrame), 3 the depth, 4 a nearest sampler, 5 the transmittance LUT, 6 a linear
-// sampler (not bruneton's); each variant's own inputs from binding 8 on (2 and 7 held the compute
-// version's colour in and out).
-constexpr uint32_t kFirstVariantBinding = 8;
-constexpr uint32_t kBrunetonTableBinding = 11;  // bruneton: its table's shape after its three inputs
+// Every variant's shader declares the atmosphere, the frame (GpuSkyFrame), the depth, a
+// nearest sampler and the transmittance LUT at the same bindings (bound by
+// atmosphere_sky.frag's names), and a linear sampler but bruneton; then its own inputs.
 
 class SkyExecution final : public PassExecution {
  public:
@@ -100,27 +104,23 @@ class SkyExecution final : public PassExecution {
     atmosphere_.setup(s, program_);
     plumbing::check_wrapped_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuSkyFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
-    if (s.variant_is(t_.bruneton)) table_ = plumbing::create_checked_uniform_block(s.device, program_, 0, kBrunetonTableBinding, s.name() + " table", table_shape(s));
+    if (s.variant_is(t_.bruneton)) table_ = plumbing::create_checked_uniform_block(s.device, program_, 0, atmosphere_sky_bruneton_shader::table.binding, s.name() + " table", table_shape(s));
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
+    namespace shared = atmosphere_sky_shader;
     const GpuSkyFrame frame = sky_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
-    std::vector<BindGroupEntry> entries = {
-        BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, frame_), BindGroupEntry::of(3, c.view(t_.depth)),
-        BindGroupEntry::of(4, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(5, c.view(t_.transmittance))};
-    // bruneton reads its rgba32f tables by texelFetch (unfilterable on WebGPU): no linear sampler.
-    if (!c.variant_is(t_.bruneton)) entries.push_back(BindGroupEntry::of(6, c.sampler(rhi::StockSampler::linear_clamp)));
-    uint32_t binding = kFirstVariantBinding;
-    for (const rhi::TextureViewId view : variant_inputs(c)) entries.push_back(BindGroupEntry::of(binding++, view));
+    std::vector<rhi::BoundResource> entries = {
+        bind(shared::atmosphere, atmosphere_.write(c)), bind(shared::frame, frame_), bind(shared::depth, c.view(t_.depth)),
+        bind(shared::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(shared::transmittance, c.view(t_.transmittance))};
+    for (const rhi::BoundResource& input : variant_inputs(c)) entries.push_back(input);
     rhi::RenderPassDesc pass;
     pass.label = c.name();
     pass.colors = {{c.view(t_.sky_color), rhi::LoadOp::load}};
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(program_.pipeline);
-    if (c.variant_is(t_.bruneton)) entries.push_back(BindGroupEntry::of(kBrunetonTableBinding, table_));
-    c.encoder.set_bind_group(0, c.bind_group(program_.layouts[0], std::move(entries)));
+    c.encoder.set_bind_group(0, c.bind_group(program_, entries));
     c.encoder.draw(3);  // fullscreen.vert's one triangle
     c.encoder.end_render_pass();
   }
@@ -133,13 +133,19 @@ class SkyExecution final : public PassExecution {
     return "atmosphere_sky.frag";
   }
 
-  // The variant's own inputs, in its shader's binding order from kFirstVariantBinding.
-  std::vector<rhi::TextureViewId> variant_inputs(PassContext& c) const {
-    if (c.variant_is(t_.raymarch)) return {c.view(t_.multiscattering)};
-    if (c.variant_is(t_.bruneton)) return {c.view(t_.scattering), c.view(t_.single_mie_scattering), c.view(t_.irradiance)};
+  // The variant's own bindings: its inputs, and the linear sampler but bruneton's (it reads its
+  // rgba32f tables by texelFetch, unfilterable on WebGPU), or its table's shape.
+  std::vector<rhi::BoundResource> variant_inputs(PassContext& c) const {
+    const rhi::SamplerId linear = c.sampler(rhi::StockSampler::linear_clamp);
+    if (c.variant_is(t_.raymarch)) return {bind(atmosphere_sky_raymarch_shader::linear, linear), bind(atmosphere_sky_raymarch_shader::multiscattering, c.view(t_.multiscattering))};
+    if (c.variant_is(t_.bruneton)) {
+      return {bind(atmosphere_sky_bruneton_shader::scattering, c.view(t_.scattering)), bind(atmosphere_sky_bruneton_shader::single_mie_scattering, c.view(t_.single_mie_scattering)),
+              bind(atmosphere_sky_bruneton_shader::irradiance, c.view(t_.irradiance)), bind(atmosphere_sky_bruneton_shader::table, table_)};
+    }
     // sky_view_lut: the multiple-scattering LUT when wired, else the sky-view LUT (a filterable
     // texture as the binding wants) in its place, never read: the frame turns the term off.
-    return {c.view(t_.sky_view), c.view(has_multiscattering(c) ? t_.multiscattering : t_.sky_view)};
+    return {bind(atmosphere_sky_shader::linear, linear), bind(atmosphere_sky_shader::sky_view, c.view(t_.sky_view)),
+            bind(atmosphere_sky_shader::multiscattering, c.view(has_multiscattering(c) ? t_.multiscattering : t_.sky_view))};
   }
 
   // bruneton: the scattering table's shape, its nu slices those of the tables pass that

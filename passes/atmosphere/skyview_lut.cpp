@@ -19,9 +19,12 @@
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
 #include "physics/atmosphere_sky.h"
+#include "shaders/bindings/atmosphere_skyview_lut.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace atmosphere_skyview_lut_shader = shaders::atmosphere_skyview_lut_comp;
 
 struct SkyViewLutTable : PassTable {
   SkyViewLutTable()
@@ -69,7 +72,6 @@ class SkyViewLutExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
     const GpuSkyViewLutParams params{{planet.planet_up[3], planet.toward_sun[3], planet.has_sun ? 1.0f : 0.0f, 0},
                                      {float(c.param(t_.min_samples)), float(c.param(t_.max_samples)), 100e3f,
@@ -77,10 +79,10 @@ class SkyViewLutExecution final : public PassExecution {
                                      {float(c.param(t_.sample_offset)), 0, 0, 0}};
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const rhi::BindGroupId group = c.bind_group(
-        program_.layouts[0],
-        {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, params_), BindGroupEntry::of(2, c.view(t_.transmittance)),
-         BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(4, c.view(t_.multiscattering)),
-         BindGroupEntry::of(5, c.sampler(rhi::StockSampler::linear_clamp)), BindGroupEntry::of(6, c.view(t_.sky_view))});
+        program_,
+        {bind(atmosphere_skyview_lut_shader::atmosphere, atmosphere_.write(c)), bind(atmosphere_skyview_lut_shader::params, params_), bind(atmosphere_skyview_lut_shader::transmittance, c.view(t_.transmittance)),
+         bind(atmosphere_skyview_lut_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(atmosphere_skyview_lut_shader::multiscattering, c.view(t_.multiscattering)),
+         bind(atmosphere_skyview_lut_shader::linear, c.sampler(rhi::StockSampler::linear_clamp)), bind(atmosphere_skyview_lut_shader::sky_view, c.view(t_.sky_view))});
     const Extent size = c.extent(t_.sky_view);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, 1});
   }

@@ -14,9 +14,12 @@
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/atmosphere.h"
+#include "shaders/bindings/atmosphere_transmittance_lut.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace atmosphere_transmittance_lut_shader = shaders::atmosphere_transmittance_lut_comp;
 
 struct TransmittanceLutTable : PassTable {
   TransmittanceLutTable()
@@ -53,9 +56,8 @@ class TransmittanceLutExecution final : public PassExecution {
 
   // Runs when the cache key changed: the first frame, or a new atmosphere.
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
-    const rhi::BindGroupId group = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, atmosphere_.write(c)), BindGroupEntry::of(1, params_),
-                                                                      BindGroupEntry::of(2, c.view(t_.transmittance))});
+    const rhi::BindGroupId group = c.bind_group(program_, {bind(atmosphere_transmittance_lut_shader::atmosphere, atmosphere_.write(c)), bind(atmosphere_transmittance_lut_shader::params, params_),
+                                                           bind(atmosphere_transmittance_lut_shader::transmittance, c.view(t_.transmittance))});
     const Extent size = c.extent(t_.transmittance);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, 1});
   }

@@ -16,8 +16,8 @@ plumbing::RenderProgram program(const PassSetup& s, SlotHandle color, rhi::Blend
 
 void ApplyDraws::prepare(const PassSetup& s, SlotHandle color, const char* transmittance_fragment, const char* scattering_fragment) {
   color_ = color;
-  attenuate_ = program(s, color, rhi::BlendMode::multiply, transmittance_fragment);
-  add_ = program(s, color, rhi::BlendMode::additive, scattering_fragment);
+  attenuate_ = fog::program(s, color, rhi::BlendMode::multiply, transmittance_fragment);
+  add_ = fog::program(s, color, rhi::BlendMode::additive, scattering_fragment);
 }
 
 void ApplyDraws::record(PassContext& c, rhi::BindGroupId group) const {

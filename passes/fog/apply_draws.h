@@ -18,6 +18,8 @@ class ApplyDraws {
   void prepare(const PassSetup& s, SlotHandle color, const char* transmittance_fragment, const char* scattering_fragment);
   bool prepared() const { return bool(attenuate_.pipeline); }
   rhi::BindGroupLayoutId layout() const { return attenuate_.layouts[0]; }
+  // The program whose layouts both draws use: bind groups by the first shader's variables.
+  const plumbing::RenderProgram& program() const { return attenuate_; }
   // Both draws' programs (to check the uniform blocks the group holds against each).
   std::array<const plumbing::RenderProgram*, 2> programs() const { return {&attenuate_, &add_}; }
   // One render pass onto `color` (loaded), both draws with `group` at set 0.

@@ -11,9 +11,14 @@
 #include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
+#include "shaders/bindings/fog_apply_transmittance.frag.h"
+#include "shaders/bindings/fog_apply_transmittance_depth_aware.frag.h"
 
 namespace volgraph {
 namespace {
+
+namespace fog_apply_transmittance_shader = shaders::fog_apply_transmittance_frag;
+namespace fog_apply_transmittance_depth_aware_shader = shaders::fog_apply_transmittance_depth_aware_frag;
 
 struct FogApplyTable : PassTable {
   FogApplyTable()
@@ -57,13 +62,19 @@ class FogApplyExecution final : public PassExecution {
 
   // The images may be history pairs' (pixel_temporal): the cache gives each object its group.
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
-    const rhi::SamplerId sampler = c.sampler(depth_aware_ ? rhi::StockSampler::nearest_clamp : rhi::StockSampler::linear_clamp);
-    std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, c.view(t_.fog_scattering)),
-                                           BindGroupEntry::of(1, c.view(t_.fog_transmittance)), BindGroupEntry::of(2, sampler),
-                                           BindGroupEntry::of(3, frame_)};
-    if (depth_aware_) entries.push_back(BindGroupEntry::of(4, c.view(t_.depth)));
-    draws_.record(c, c.bind_group(draws_.layout(), std::move(entries)));
+    if (depth_aware_) {
+      namespace shader = fog_apply_transmittance_depth_aware_shader;
+      draws_.record(c, c.bind_group(draws_.program(), {bind(shader::fog_scattering, c.view(t_.fog_scattering)),
+                                                       bind(shader::fog_transmittance, c.view(t_.fog_transmittance)),
+                                                       bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)),
+                                                       bind(shader::frame, frame_), bind(shader::scene_depth, c.view(t_.depth))}));
+    } else {
+      namespace shader = fog_apply_transmittance_shader;
+      draws_.record(c, c.bind_group(draws_.program(), {bind(shader::fog_scattering, c.view(t_.fog_scattering)),
+                                                       bind(shader::fog_transmittance, c.view(t_.fog_transmittance)),
+                                                       bind(shader::bilinear, c.sampler(rhi::StockSampler::linear_clamp)),
+                                                       bind(shader::frame, frame_)}));
+    }
   }
 
  private:

@@ -7,9 +7,12 @@
 #include "passes/register_pass.h"
 #include "passes/fog/apply_draws.h"
 #include "passes/fog/fog_frame.h"
+#include "shaders/bindings/froxel_apply_transmittance.frag.h"
 
 namespace volgraph {
 namespace {
+
+namespace froxel_apply_transmittance_shader = shaders::froxel_apply_transmittance_frag;
 
 struct FroxelApplyTable : PassTable {
   FroxelApplyTable()
@@ -40,13 +43,11 @@ class FroxelApplyExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const rhi::BindGroupId group = c.bind_group(
-        draws_.layout(),
-        {BindGroupEntry::of(0, c.buffer(t_.frame)), BindGroupEntry::of(1, c.view(t_.depth)),
-         BindGroupEntry::of(2, c.view(t_.integrated_scattering)), BindGroupEntry::of(3, c.view(t_.integrated_transmittance)),
-         BindGroupEntry::of(4, c.sampler(rhi::StockSampler::trilinear_clamp)),
-         BindGroupEntry::of(5, c.sampler(rhi::StockSampler::nearest_clamp))});
+        draws_.program(),
+        {bind(froxel_apply_transmittance_shader::frame, c.buffer(t_.frame)), bind(froxel_apply_transmittance_shader::scene_depth, c.view(t_.depth)),
+         bind(froxel_apply_transmittance_shader::integrated_scattering, c.view(t_.integrated_scattering)), bind(froxel_apply_transmittance_shader::integrated_transmittance, c.view(t_.integrated_transmittance)),
+         bind(froxel_apply_transmittance_shader::trilinear, c.sampler(rhi::StockSampler::trilinear_clamp)), bind(froxel_apply_transmittance_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp))});
     draws_.record(c, group);
   }
 

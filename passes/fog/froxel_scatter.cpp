@@ -17,9 +17,14 @@
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "passes/fog/phase_variants.h"
+#include "shaders/bindings/froxel_scatter.comp.h"
+#include "shaders/bindings/froxel_scatter_media_shadowed.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace froxel_scatter_shader = shaders::froxel_scatter_comp;
+namespace froxel_scatter_media_shadowed_shader = shaders::froxel_scatter_media_shadowed_comp;
 
 struct FroxelScatterTable : fog::PhaseTable {
   FroxelScatterTable()
@@ -64,23 +69,23 @@ class FroxelScatterExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
-    const rhi::BindGroupId media = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, c.buffer(t_.frame)),
-                                                                      BindGroupEntry::of(1, c.view(t_.media_scattering)),
-                                                                      BindGroupEntry::of(2, c.view(t_.media_emission)),
-                                                                      BindGroupEntry::of(3, nearest),
-                                                                      BindGroupEntry::of(4, c.view(t_.in_scatter)),
-                                                                      BindGroupEntry::of(5, params_)});
+    // Every variant's shader declares froxel_scatter_body.glsl's set 0; the shadowed ones set 1,
+    // the media-shadowed one's with its media shadow after the shadowed one's.
+    const rhi::BindGroupId media = c.bind_group(program_, {bind(froxel_scatter_shader::frame, c.buffer(t_.frame)),
+                                                           bind(froxel_scatter_shader::media_scattering, c.view(t_.media_scattering)),
+                                                           bind(froxel_scatter_shader::media_emission, c.view(t_.media_emission)), bind(froxel_scatter_shader::nearest, nearest),
+                                                           bind(froxel_scatter_shader::in_scatter, c.view(t_.in_scatter)), bind(froxel_scatter_shader::params, params_)});
     rhi::BindGroupId shadow;
     if (shadowed_) {
-      std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, c.view(t_.shadow_map)), BindGroupEntry::of(1, nearest),
-                                             BindGroupEntry::of(2, c.buffer(t_.light_view))};
+      namespace shadowed = froxel_scatter_media_shadowed_shader;
+      std::vector<rhi::BoundResource> entries = {bind(shadowed::shadow_depth, c.view(t_.shadow_map)), bind(shadowed::shadow_sampler, nearest),
+                                                 bind(shadowed::shadow, c.buffer(t_.light_view))};
       if (media_shadowed_) {
-        entries.push_back(BindGroupEntry::of(3, c.view(t_.media_shadow)));
-        entries.push_back(BindGroupEntry::of(4, c.sampler(rhi::StockSampler::linear_clamp)));
+        entries.push_back(bind(shadowed::media_shadow, c.view(t_.media_shadow)));
+        entries.push_back(bind(shadowed::media_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)));
       }
-      shadow = c.bind_group(program_.layouts[1], std::move(entries));
+      shadow = c.bind_group(program_, entries);
     }
     plumbing::dispatch(c.encoder, c.name(), program_, {media, shadow}, c.extent(t_.in_scatter));
   }

@@ -11,9 +11,12 @@
 #include "graph/execute/pass_execution.h"
 #include "passes/register_pass.h"
 #include "passes/fog/temporal.h"
+#include "shaders/bindings/froxel_temporal.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace froxel_temporal_shader = shaders::froxel_temporal_comp;
 
 struct FroxelTemporalTable : fog::TemporalTable {
   FroxelTemporalTable()
@@ -32,18 +35,17 @@ struct FroxelTemporalTable : fog::TemporalTable {
 class FroxelTemporalExecution final : public fog::TemporalExecution {
  public:
   explicit FroxelTemporalExecution(const FroxelTemporalTable& table)
-      : TemporalExecution(table, "froxel_temporal.comp", table.accumulated, 6), t_(table) {}
+      : TemporalExecution(table, "froxel_temporal.comp", table.accumulated, froxel_temporal_shader::params.binding), t_(table) {}
 
  private:
-  std::vector<rhi::BindGroupEntry> entries(PassContext& c) override {
-    using rhi::BindGroupEntry;
-    return {BindGroupEntry::of(0, c.buffer(t_.frame)),
-            BindGroupEntry::of(1, c.view(t_.in_scatter)),
-            BindGroupEntry::of(2, c.view(t_.history)),
-            BindGroupEntry::of(3, c.sampler(rhi::StockSampler::nearest_clamp)),
-            BindGroupEntry::of(4, c.sampler(rhi::StockSampler::linear_clamp)),
-            BindGroupEntry::of(5, c.view(t_.accumulated)),
-            BindGroupEntry::of(6, params())};
+  std::vector<rhi::BoundResource> entries(PassContext& c) override {
+    return {bind(froxel_temporal_shader::frame, c.buffer(t_.frame)),
+            bind(froxel_temporal_shader::in_scatter, c.view(t_.in_scatter)),
+            bind(froxel_temporal_shader::history, c.view(t_.history)),
+            bind(froxel_temporal_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)),
+            bind(froxel_temporal_shader::trilinear, c.sampler(rhi::StockSampler::linear_clamp)),
+            bind(froxel_temporal_shader::accumulated, c.view(t_.accumulated)),
+            bind(froxel_temporal_shader::params, params())};
   }
 
   const FroxelTemporalTable& t_;

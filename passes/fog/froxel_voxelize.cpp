@@ -11,9 +11,12 @@
 #include "passes/fog/fog_frame.h"
 #include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
+#include "shaders/bindings/froxel_voxelize.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace froxel_voxelize_shader = shaders::froxel_voxelize_comp;
 
 struct FroxelVoxelizeTable : PassTable {
   FroxelVoxelizeTable();
@@ -85,15 +88,13 @@ class FroxelVoxelizeExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, inputs_, lighting_);
     const auto bytes = std::as_bytes(std::span(&frame, 1));
     c.device.write_buffer(own_frame_, 0, bytes);               // for this pass's shader
     c.encoder.update_buffer(c.buffer(t_.frame), 0, bytes);  // for the fog passes after it
-    const rhi::BindGroupId group = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, own_frame_),
-                                                                      BindGroupEntry::of(1, c.view(t_.media_scattering)),
-                                                                      BindGroupEntry::of(2, c.view(t_.media_absorption)),
-                                                                      BindGroupEntry::of(3, c.view(t_.media_emission))});
+    const rhi::BindGroupId group = c.bind_group(program_, {bind(froxel_voxelize_shader::frame, own_frame_), bind(froxel_voxelize_shader::media_scattering, c.view(t_.media_scattering)),
+                                                           bind(froxel_voxelize_shader::media_absorption, c.view(t_.media_absorption)),
+                                                           bind(froxel_voxelize_shader::media_emission, c.view(t_.media_emission))});
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.media_scattering));
   }
 

@@ -17,9 +17,12 @@
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/shadow_view.h"
 #include "passes/uniform_mirrors.h"
+#include "shaders/bindings/opacity_shadow_map.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace opacity_shadow_map_shader = shaders::opacity_shadow_map_comp;
 
 std::vector<ParamProblem> check_shadowed_media(const PassDecl&, const Scene& scene, const std::vector<ParamValue>&) {
   return fog::media_fit_problems(scene, "shadowed");
@@ -72,16 +75,13 @@ class OpacityShadowMapExecution final : public PassExecution {
   // Runs when the cache key changed (the first frame, or new lights, media or light
   // view): the frame block is packed from the scene as it is now.
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     fog::FogFrameInputs frame_inputs;  // the lights and media; no froxel grid
     frame_inputs.range = {c.scene->camera.near, c.scene->camera.far, physics::FroxelDistribution::linear};
     frame_inputs.jitter = false;
     const fog::GpuFogFrame frame = fog::make_fog_frame(c, 0, frame_inputs, lighting_);  // frame 0: the map is frame invariant
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
-    const rhi::BindGroupId group = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, frame_),
-                                                                      BindGroupEntry::of(1, c.buffer(t_.light_view)),
-                                                                      BindGroupEntry::of(2, c.view(t_.optical_depth)),
-                                                                      BindGroupEntry::of(3, params_)});
+    const rhi::BindGroupId group = c.bind_group(program_, {bind(opacity_shadow_map_shader::frame, frame_), bind(opacity_shadow_map_shader::shadow, c.buffer(t_.light_view)),
+                                                           bind(opacity_shadow_map_shader::optical_depth, c.view(t_.optical_depth)), bind(opacity_shadow_map_shader::params, params_)});
     const Extent size = c.extent(t_.optical_depth);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, 1});  // a column each
   }

@@ -2,8 +2,14 @@
 
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
+#include "shaders/bindings/depth_fog.comp.h"
 
 namespace volgraph::fog {
+namespace {
+// Every per-pixel technique's shader declares include/pixel_fog.glsl's bindings; depth_fog's
+// its Params block too (the others theirs at the same binding).
+namespace depth_fog_shader = shaders::depth_fog_comp;
+}  // namespace
 
 void PixelFogExecution::setup(PassSetup& s) {
   const PixelFogInputs in = inputs_of_(s);
@@ -24,13 +30,12 @@ void PixelFogExecution::setup(PassSetup& s) {
 }
 
 void PixelFogExecution::record(PassContext& c) {
-  using rhi::BindGroupEntry;
-  std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, frame_), BindGroupEntry::of(1, c.view(t_.depth)),
-                                         BindGroupEntry::of(2, c.sampler(rhi::StockSampler::nearest_clamp)),
-                                         BindGroupEntry::of(3, c.view(t_.fog_scattering)),
-                                         BindGroupEntry::of(4, c.view(t_.fog_transmittance))};
-  if (params_) entries.push_back(BindGroupEntry::of(5, params_));
-  const rhi::BindGroupId group = c.bind_group(program_.layouts[0], std::move(entries));
+  std::vector<rhi::BoundResource> entries = {bind(depth_fog_shader::frame, frame_), bind(depth_fog_shader::scene_depth, c.view(t_.depth)),
+                                             bind(depth_fog_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)),
+                                             bind(depth_fog_shader::fog_scattering, c.view(t_.fog_scattering)),
+                                             bind(depth_fog_shader::fog_transmittance, c.view(t_.fog_transmittance))};
+  if (params_) entries.push_back(bind(depth_fog_shader::params, params_));
+  const rhi::BindGroupId group = c.bind_group(program_, entries);
   plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.fog_scattering));
 }
 

@@ -12,9 +12,12 @@
 #include "graph/execute/pass_execution.h"
 #include "passes/register_pass.h"
 #include "passes/fog/temporal.h"
+#include "shaders/bindings/pixel_temporal.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace pixel_temporal_shader = shaders::pixel_temporal_comp;
 
 struct PixelTemporalTable : fog::TemporalTable {
   PixelTemporalTable()
@@ -39,7 +42,7 @@ struct PixelTemporalTable : fog::TemporalTable {
 class PixelTemporalExecution final : public fog::TemporalExecution {
  public:
   explicit PixelTemporalExecution(const PixelTemporalTable& table)
-      : TemporalExecution(table, "pixel_temporal.comp", table.scattering, 10), t_(table) {}
+      : TemporalExecution(table, "pixel_temporal.comp", table.scattering, pixel_temporal_shader::params.binding), t_(table) {}
 
  private:
   void setup_blocks(PassSetup& s) override {
@@ -57,19 +60,18 @@ class PixelTemporalExecution final : public fog::TemporalExecution {
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
   }
 
-  std::vector<rhi::BindGroupEntry> entries(PassContext& c) override {
-    using rhi::BindGroupEntry;
-    return {BindGroupEntry::of(0, frame_),
-            BindGroupEntry::of(1, c.view(t_.depth)),
-            BindGroupEntry::of(2, c.view(t_.fog_scattering)),
-            BindGroupEntry::of(3, c.view(t_.fog_transmittance)),
-            BindGroupEntry::of(4, c.view(t_.scattering_history)),
-            BindGroupEntry::of(5, c.view(t_.transmittance_history)),
-            BindGroupEntry::of(6, c.sampler(rhi::StockSampler::nearest_clamp)),
-            BindGroupEntry::of(7, c.sampler(rhi::StockSampler::linear_clamp)),
-            BindGroupEntry::of(8, c.view(t_.scattering)),
-            BindGroupEntry::of(9, c.view(t_.transmittance)),
-            BindGroupEntry::of(10, params())};
+  std::vector<rhi::BoundResource> entries(PassContext& c) override {
+    return {bind(pixel_temporal_shader::frame, frame_),
+            bind(pixel_temporal_shader::scene_depth, c.view(t_.depth)),
+            bind(pixel_temporal_shader::fog_scattering, c.view(t_.fog_scattering)),
+            bind(pixel_temporal_shader::fog_transmittance, c.view(t_.fog_transmittance)),
+            bind(pixel_temporal_shader::scattering_history, c.view(t_.scattering_history)),
+            bind(pixel_temporal_shader::transmittance_history, c.view(t_.transmittance_history)),
+            bind(pixel_temporal_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)),
+            bind(pixel_temporal_shader::bilinear, c.sampler(rhi::StockSampler::linear_clamp)),
+            bind(pixel_temporal_shader::accumulated_scattering, c.view(t_.scattering)),
+            bind(pixel_temporal_shader::accumulated_transmittance, c.view(t_.transmittance)),
+            bind(pixel_temporal_shader::params, params())};
   }
 
   const PixelTemporalTable& t_;

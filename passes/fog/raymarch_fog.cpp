@@ -22,9 +22,12 @@
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "passes/fog/phase_variants.h"
+#include "shaders/bindings/raymarch_fog_shadowed.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace raymarch_fog_shadowed_shader = shaders::raymarch_fog_shadowed_comp;
 
 // The outputs' size (parameter "resolution").
 enum class Resolution : uint8_t { full, half };
@@ -87,21 +90,20 @@ class RaymarchFogExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, frame_inputs(c), lighting_);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     const GpuRaymarchParams params = march_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
-    const rhi::BindGroupId group = c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, frame_), BindGroupEntry::of(1, c.view(t_.depth)),
-                                                                      BindGroupEntry::of(2, nearest),
-                                                                      BindGroupEntry::of(3, c.view(t_.fog_scattering)),
-                                                                      BindGroupEntry::of(4, c.view(t_.fog_transmittance)),
-                                                                      BindGroupEntry::of(5, params_)});
+    // Both variants' shaders declare raymarch_fog_body.glsl's set 0; the shadowed one set 1.
+    const rhi::BindGroupId group = c.bind_group(program_, {bind(raymarch_fog_shadowed_shader::frame, frame_), bind(raymarch_fog_shadowed_shader::scene_depth, c.view(t_.depth)),
+                                                           bind(raymarch_fog_shadowed_shader::nearest, nearest), bind(raymarch_fog_shadowed_shader::fog_scattering, c.view(t_.fog_scattering)),
+                                                           bind(raymarch_fog_shadowed_shader::fog_transmittance, c.view(t_.fog_transmittance)),
+                                                           bind(raymarch_fog_shadowed_shader::params, params_)});
     rhi::BindGroupId shadow;
     if (shadowed_) {
-      shadow = c.bind_group(program_.layouts[1], {BindGroupEntry::of(0, c.view(t_.shadow_map)), BindGroupEntry::of(1, nearest),
-                                                  BindGroupEntry::of(2, c.buffer(t_.light_view))});
+      shadow = c.bind_group(program_, {bind(raymarch_fog_shadowed_shader::shadow_depth, c.view(t_.shadow_map)), bind(raymarch_fog_shadowed_shader::shadow_sampler, nearest),
+                                       bind(raymarch_fog_shadowed_shader::shadow, c.buffer(t_.light_view))});
     }
     plumbing::dispatch(c.encoder, c.name(), program_, {group, shadow}, c.extent(t_.fog_scattering));
   }

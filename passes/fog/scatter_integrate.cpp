@@ -10,9 +10,12 @@
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "shaders/include/integration_codes.h"
+#include "shaders/bindings/scatter_integrate.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace scatter_integrate_shader = shaders::scatter_integrate_comp;
 
 struct ScatterIntegrateTable : PassTable {
   ScatterIntegrateTable()
@@ -47,14 +50,13 @@ class ScatterIntegrateExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     // in_scatter may be a history pair's (froxel_temporal): the cache keeps a group for each object.
     const rhi::BindGroupId group = c.bind_group(
-        program_.layouts[0],
-        {BindGroupEntry::of(0, c.buffer(t_.frame)), BindGroupEntry::of(1, c.view(t_.in_scatter)),
-         BindGroupEntry::of(2, c.view(t_.media_scattering)), BindGroupEntry::of(3, c.view(t_.media_absorption)),
-         BindGroupEntry::of(4, c.sampler(rhi::StockSampler::nearest_clamp)), BindGroupEntry::of(5, c.view(t_.integrated_scattering)),
-         BindGroupEntry::of(6, c.view(t_.integrated_transmittance)), BindGroupEntry::of(7, params_)});
+        program_,
+        {bind(scatter_integrate_shader::frame, c.buffer(t_.frame)), bind(scatter_integrate_shader::in_scatter, c.view(t_.in_scatter)),
+         bind(scatter_integrate_shader::media_scattering, c.view(t_.media_scattering)), bind(scatter_integrate_shader::media_absorption, c.view(t_.media_absorption)),
+         bind(scatter_integrate_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(scatter_integrate_shader::integrated_scattering, c.view(t_.integrated_scattering)),
+         bind(scatter_integrate_shader::integrated_transmittance, c.view(t_.integrated_transmittance)), bind(scatter_integrate_shader::params, params_)});
     Extent columns = c.extent(t_.in_scatter);
     columns.depth = 1;  // an invocation walks its column front to back
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, columns);

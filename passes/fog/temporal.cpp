@@ -18,7 +18,7 @@ void TemporalExecution::record(PassContext& c) {
   write_blocks(c);
   const GpuTemporalParams params = frame_params(c);
   c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
-  const rhi::BindGroupId group = c.bind_group(program_.layouts[0], entries(c));
+  const rhi::BindGroupId group = c.bind_group(program_, entries(c));
   plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(output_));
 }
 

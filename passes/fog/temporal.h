@@ -53,7 +53,7 @@ class TemporalExecution : public PassExecution {
 
  protected:
   // The bind group's entries for this frame's objects (params() the Params block).
-  virtual std::vector<rhi::BindGroupEntry> entries(PassContext& c) = 0;
+  virtual std::vector<rhi::BoundResource> entries(PassContext& c) = 0;
   // Blocks besides the Params: made at setup, written every frame (before entries).
   virtual void setup_blocks(PassSetup&) {}
   virtual void write_blocks(PassContext&) {}

@@ -36,7 +36,9 @@ ComputeProgram create_compute_program(rhi::Device& device, const std::string& sh
   const std::span<const uint32_t> spirv = spirv_of(shader);
   const rhi::ShaderStageCode stage{spirv, rhi::shader_stage::compute};
   ComputeProgram program;
-  program.layouts = create_layouts(device, rhi::reflect_bind_group_layouts({&stage, 1}, shader));
+  program.layout_descs = rhi::reflect_bind_group_layouts({&stage, 1}, shader);
+  program.layouts = create_layouts(device, program.layout_descs);
+  program.shader = shader;
   program.workgroup_size = rhi::reflect_workgroup_size(spirv);
   program.uniform_blocks = rhi::reflect_uniform_blocks({&stage, 1}, shader);
   program.pipeline = device.cached_compute_pipeline({shader, device.cached_shader_module(shader, spirv), "main", program.layouts});
@@ -65,6 +67,7 @@ RenderProgram render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, 
   std::vector<rhi::ShaderStageCode> stages = {{spirv_of(vertex), rhi::shader_stage::vertex}};
   if (!fragment.empty()) stages.push_back({spirv_of(fragment), rhi::shader_stage::fragment});
   RenderProgram program;
+  program.shader = fragment.empty() ? vertex : vertex + " + " + fragment;
   program.layout_descs = rhi::reflect_bind_group_layouts(stages, desc.label);
   if (layouts_of) {
     if (program.layout_descs.size() > layouts_of->layout_descs.size()) {

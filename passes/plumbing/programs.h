@@ -1,6 +1,7 @@
 // A pass's pipeline built from its shaders in shaders/, with the bind group layouts
 // those shaders declare (SPIR-V reflection, graph/rhi/spirv_reflect.h): the C++ never
-// restates a binding the GLSL already says. Bind groups are made with `layouts[set]`.
+// restates a binding the GLSL already says. Bind groups are made by the shader's variable
+// names: PassContext::bind_group(program, {rhi::bind(shaders::<shader>::<variable>, …), …}).
 #pragma once
 
 #include <array>
@@ -19,6 +20,8 @@ namespace volgraph::plumbing {
 struct ComputeProgram {
   rhi::ComputePipelineId pipeline;
   std::vector<rhi::BindGroupLayoutId> layouts;  // set i at index i
+  std::vector<rhi::BindGroupLayoutDesc> layout_descs;  // what each layout holds
+  std::string shader;                                   // its file name, for messages
   std::vector<rhi::UniformBlockLayout> uniform_blocks;  // as the shader declares them (reflection)
   std::array<uint32_t, 3> workgroup_size{};
   // Workgroups covering `size` invocations per axis (one per texel).
@@ -30,6 +33,7 @@ struct RenderProgram {
   std::vector<rhi::BindGroupLayoutId> layouts;
   std::vector<rhi::UniformBlockLayout> uniform_blocks;
   std::vector<rhi::BindGroupLayoutDesc> layout_descs;  // what each layout holds
+  std::string shader;                                   // "<vertex> + <fragment>", for messages
 };
 
 ComputeProgram create_compute_program(rhi::Device& device, const std::string& shader);

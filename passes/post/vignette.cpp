@@ -9,9 +9,12 @@
 #include "graph/scene/scene.h"
 #include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
+#include "shaders/bindings/vignette.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace vignette_shader = shaders::vignette_comp;
 
 struct VignetteTable : PassTable {
   VignetteTable() : PassTable("vignette", PassKind::compute, "Natural vignetting: the colour × cos⁴θ off the axis.") {}
@@ -39,10 +42,9 @@ class VignetteExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
-    const rhi::BindGroupId group =
-        c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, c.view(t_.color)), BindGroupEntry::of(1, c.sampler(rhi::StockSampler::nearest_clamp)),
-                                           BindGroupEntry::of(2, c.view(t_.vignetted)), BindGroupEntry::of(3, params_)});
+    namespace shader = vignette_shader;
+    const rhi::BindGroupId group = c.bind_group(program_, {bind(shader::color, c.view(t_.color)), bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)),
+                                                           bind(shader::vignetted, c.view(t_.vignetted)), bind(shader::params, params_)});
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.vignetted));
   }
 
