@@ -12,17 +12,23 @@ float phase_isotropic() { return INV_FOUR_PI; }
 
 float phase_rayleigh(float cos_theta) { return 0.75 * INV_FOUR_PI * (1.0 + cos_theta * cos_theta); }
 
-// Henyey–Greenstein 1941, denominator as (1 − g)² + 2g(1 − cosθ).
+// 1 + g² − 2g cosθ as a sum of non-negative terms: (1 − g)² + 2g(1 − cosθ) for g ≥ 0,
+// (1 + g)² − 2g(1 + cosθ) for g < 0 (physics/phase.h).
+float phase_hg_base(float g, float cos_theta) {
+  return g >= 0.0 ? (1.0 - g) * (1.0 - g) + 2.0 * g * (1.0 - cos_theta) : (1.0 + g) * (1.0 + g) - 2.0 * g * (1.0 + cos_theta);
+}
+
+// Henyey–Greenstein 1941, its denominator's base by phase_hg_base.
 float phase_hg(float g, float cos_theta) {
   const float one_minus_g = 1.0 - g;
-  const float base = one_minus_g * one_minus_g + 2.0 * g * (1.0 - cos_theta);
+  const float base = phase_hg_base(g, cos_theta);
   return INV_FOUR_PI * one_minus_g * (1.0 + g) / max(base * sqrt(base), 1e-30);
 }
 
 // Cornette & Shanks 1992 (Applied Optics 31, eq. 4), as Bruneton 2017's MiePhaseFunction.
 float phase_cornette_shanks(float g, float cos_theta) {
   const float one_minus_g = 1.0 - g;
-  const float base = one_minus_g * one_minus_g + 2.0 * g * (1.0 - cos_theta);
+  const float base = phase_hg_base(g, cos_theta);
   const float denominator = max((2.0 + g * g) * base * sqrt(base), 1e-30);
   return 1.5 * INV_FOUR_PI * one_minus_g * (1.0 + g) * (1.0 + cos_theta * cos_theta) / denominator;
 }

@@ -1,6 +1,7 @@
 // The executor runs a compiled plan through the backend interface, on each backend:
 // exact values for a graph whose answer is known, the same image under every debug
 // switch, tone maps equal to the CPU twin, GPU times per pass, validation silent.
+#include <string>
 #include <algorithm>
 #include <cmath>
 
@@ -78,13 +79,21 @@ TEST_P(ExecutorTest, ToneMapsMatchTheCpuTwinOverSeveralFrames) {
   }
 }
 
+// The value a rgba16_float target holds for a float that rounds to 0.5 (which half holds
+// exactly): 0.5 itself, or one half step below it where the driver rounds toward zero, as
+// Vulkan allows for conversions to 16-bit floats (NVIDIA's 580 driver writes 0.499756 for
+// ρE/π computed a float rounding below 0.5; lavapipe rounds to nearest).
+void expect_half_of(float value, const std::string& where) {
+  EXPECT_TRUE(value == 0.5f || value == 0.5f - 0x1p-12f) << where << ": " << value;
+}
+
 // DESIGN.md: a Lambertian plane of albedo ρ facing a directional light of irradiance E
 // renders ρE/π: 0.5 · π / π = 0.5, which the rgba16_float target holds exactly.
 TEST_P(ExecutorTest, LambertPlaneRendersRhoEOverPi) {
   const LoadedConfig c = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/tests/lambert_plane_lit.json", registry_);
   const Texels t = render(c, {});
   for (size_t i = 0; i < t.rgba.size(); i += 4) {
-    for (size_t ch = 0; ch < 3; ++ch) ASSERT_EQ(t.rgba[i + ch], 0.5f) << "texel " << i / 4;
+    for (size_t ch = 0; ch < 3; ++ch) expect_half_of(t.rgba[i + ch], "texel " + std::to_string(i / 4));
   }
 }
 
@@ -197,7 +206,7 @@ TEST_P(ExecutorTest, ShadowMappedPlaneDoesNotShadowItself) {
   const LoadedConfig c = load_config(std::string(::volgraph::testing::source_dir()) + "/configs/tests/lambert_plane.json", registry_);
   const Texels t = render(c, {});
   for (size_t i = 0; i < t.rgba.size(); i += 4) {
-    for (size_t ch = 0; ch < 3; ++ch) ASSERT_EQ(t.rgba[i + ch], 0.5f) << "texel " << i / 4 << " ch " << ch;
+    for (size_t ch = 0; ch < 3; ++ch) expect_half_of(t.rgba[i + ch], "texel " + std::to_string(i / 4) + " ch " + std::to_string(ch));
   }
 }
 

@@ -286,7 +286,9 @@ TEST_P(LightVolume, DirectionalMatchesTheShadowMapExactly) {
   Agreement march;
   const Agreement a = compare(c, "directional", &march);
   ASSERT_GT(a.pixels, 1000u);
-  EXPECT_LT(a.max_relative, 2e-5);  // measured 1.6e-6
+  // Measured 1.6e-6 on lavapipe, 4.3e-5 on an NVIDIA H200 (580 driver: Vulkan lets exp and
+  // log err by 3 + 2|x| ULP, the closed form's exponentials here); both far below the march's.
+  EXPECT_LT(a.max_relative, 1e-4);
   EXPECT_LT(a.mean_relative, 2e-6);  // measured 3.0e-7
   EXPECT_LT(march.mean_relative, 5e-3);  // measured 3.7e-4 (max 1.6e-3)
 }

@@ -79,6 +79,17 @@ TEST(Phase, HgKeepsFloatPrecisionNearGOne) {
   EXPECT_FALSE(std::abs(naive / exact - 1) < 0.01) << "naive " << naive << " exact " << exact;  // the trap is real
 }
 
+// The backward peak as g → −1 (cosθ = −1): (1 − g)² + 2g(1 − cosθ) alone cancels there
+// (3.996001 − 3.996 at g = −0.999); the base for g < 0 is a sum of non-negative terms.
+TEST(Phase, HgKeepsFloatPrecisionNearGMinusOne) {
+  for (float g : {-0.99f, -0.999f, -0.9999f}) {
+    for (float mu : {-1.0f, -0.99999f, -0.999f, -0.9f, 0.5f}) {
+      EXPECT_NEAR(phase_hg(g, mu) / phase_hg(double(g), double(mu)), 1.0, 1e-4) << "g " << g << " cos " << mu;
+      EXPECT_NEAR(phase_cornette_shanks(g, mu) / phase_cornette_shanks(double(g), double(mu)), 1.0, 1e-4) << "g " << g << " cos " << mu;
+    }
+  }
+}
+
 TEST(Phase, HgForwardPeakOverflowsFp16AboveTheStatedG) {
   const float fp16_max = 65504.0f;
   EXPECT_LE(phase_hg(kHgMaxAbsGForFp16<float>, 1.0f), fp16_max);
