@@ -162,6 +162,9 @@ pass_tests(atmosphere_skyview_lut "(^|/)(Sky|SkyView)\\.")
 pass_tests(atmosphere_bruneton_tables "(^|/)AtmosphereBruneton\\." "^AtmosphereBrunetonTables\\.")
 # tests/gpu/cloud_noise_test.cpp and tests/unit/cloud_noise_test.cpp (its text, compiled as C++).
 pass_tests(cloud_noise "(^|/)CloudNoise\\.")
+# tests/unit/cloud_density_test.cpp: the density of the layer cloud_noise's texels make
+# (shaders/include/cloud_density.h, compiled as C++).
+pass_tests(cloud_noise "(^|/)CloudDensity\\.")
 pass_tests(atmosphere_transmittance_lut "(^|/)AtmosphereBruneton\\.")
 pass_tests(atmosphere_aerial_perspective "(^|/)AtmosphereBruneton\\.AerialPerspective")
 pass_tests(sky "(^|/)AtmosphereBruneton\\.SkyPass")
