@@ -6,10 +6,13 @@
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/tonemap.h"
+#include "shaders/bindings/composite.comp.h"
 #include "shaders/include/tonemap_codes.h"
 
 namespace volgraph {
 namespace {
+
+namespace composite_shader = shaders::composite_comp;
 
 // The shader's codes are the CPU twin's (physics/tonemap.h).
 static_assert(int(physics::ToneMap::none) == TONE_MAP_NONE && int(physics::ToneMap::aces) == TONE_MAP_ACES &&
@@ -38,15 +41,14 @@ class CompositeExecution final : public PassExecution {
     program_ = plumbing::create_compute_program(s.device, "composite.comp");
     const Extent size = s.extent(t_.output_slot);
     const GpuCompositeParams params{{size.width, size.height}, float(s.param(t_.exposure)), s.variant().shader_code};
-    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 3, s.name() + " params", params);
+    params_ = plumbing::create_checked_uniform_block(s.device, program_, composite_shader::params, s.name() + " params", params);
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
+    namespace shader = composite_shader;
     const rhi::BindGroupId group =
-        c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, c.view(t_.color)),
-                                           BindGroupEntry::of(1, c.sampler(rhi::StockSampler::nearest_clamp)),
-                                           BindGroupEntry::of(2, c.view(t_.output_slot)), BindGroupEntry::of(3, params_)});
+        c.bind_group(program_, {bind(shader::color, c.view(t_.color)), bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)),
+                                bind(shader::frame, c.view(t_.output_slot)), bind(shader::params, params_)});
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.output_slot));
   }
 

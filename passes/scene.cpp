@@ -18,9 +18,15 @@
 #include "passes/plumbing/shadow_view.h"
 #include "passes/plumbing/textures.h"
 #include "passes/uniform_mirrors.h"
+#include "shaders/bindings/scene.vert.h"
+#include "shaders/bindings/scene_media_shadowed.frag.h"
 
 namespace volgraph {
 namespace {
+
+namespace scene_vert_shader = shaders::scene_vert;
+// The shadowed fragment shaders share set 2; the media-shadowed one declares all of it.
+namespace scene_shadow_shader = shaders::scene_media_shadowed_frag;
 
 // The media the surfaces' lighting sees in closed form: the global and height fog (the
 // local volumes only through an opacity shadow map, media_shadow).
@@ -119,14 +125,13 @@ class SceneExecution final : public PassExecution {
                                                               : "scene.frag");
     // The blocks it fills (the frame every frame; the objects' in SceneGeometry) and the
     // shadow map's view it reads match the shaders'.
-    plumbing::check_uniform_mirror<GpuSceneFrame>(program_, 0, 0, "scene frame");
-    if (shadowed_) plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, 2, 2, s.name() + " light_view");
+    plumbing::check_uniform_mirror<GpuSceneFrame>(program_, scene_vert_shader::frame, "scene frame");
+    if (shadowed_) plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, scene_shadow_shader::shadow, s.name() + " light_view");
     frame_ = s.device.create_buffer({"scene frame", sizeof(GpuSceneFrame), buffer_usage::uniform | buffer_usage::copy_dst});
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, program_);
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const GpuSceneFrame f = frame_of(c);
     const auto bytes = std::as_bytes(std::span(&f, 1));
     c.device.write_buffer(frame_, 0, bytes);                // for this pass's shaders
@@ -138,16 +143,17 @@ class SceneExecution final : public PassExecution {
     pass.depth = {c.view(t_.depth), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(program_.pipeline);
-    c.encoder.set_bind_group(0, c.bind_group(program_.layouts[0], {BindGroupEntry::of(0, frame_)}));
+    c.encoder.set_bind_group(0, c.bind_group(program_, {bind(scene_vert_shader::frame, frame_)}));
     if (shadowed_) {
-      std::vector<BindGroupEntry> shadow = {BindGroupEntry::of(0, c.view(t_.shadow_map)),
-                                            BindGroupEntry::of(1, c.sampler(rhi::StockSampler::nearest_clamp)),
-                                            BindGroupEntry::of(2, c.buffer(t_.light_view))};
+      namespace shader = scene_shadow_shader;
+      std::vector<rhi::BoundResource> shadow = {bind(shader::shadow_depth, c.view(t_.shadow_map)),
+                                                bind(shader::shadow_sampler, c.sampler(rhi::StockSampler::nearest_clamp)),
+                                                bind(shader::shadow, c.buffer(t_.light_view))};
       if (media_shadowed_) {
-        shadow.push_back(BindGroupEntry::of(3, c.view(t_.media_shadow)));
-        shadow.push_back(BindGroupEntry::of(4, c.sampler(rhi::StockSampler::linear_clamp)));
+        shadow.push_back(bind(shader::media_shadow, c.view(t_.media_shadow)));
+        shadow.push_back(bind(shader::media_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)));
       }
-      c.encoder.set_bind_group(2, c.bind_group(program_.layouts[2], std::move(shadow)));
+      c.encoder.set_bind_group(2, c.bind_group(program_, shadow));
     }
     geometry_->draw(c.encoder, 1);
     c.encoder.end_render_pass();

@@ -21,10 +21,13 @@
 #include "passes/plumbing/scene_geometry.h"
 #include "physics/shadow_fit.h"
 #include "passes/plumbing/shadow_view.h"
+#include "shaders/bindings/shadow.vert.h"
 #include "shaders/include/shadow_filter_codes.h"
 
 namespace volgraph {
 namespace {
+
+namespace shadow_vert_shader = shaders::shadow_vert;
 
 // Why light `index` cannot cast this map's shadows ("" when it can): it must exist, be
 // directional or spot, and cast shadows.
@@ -98,7 +101,7 @@ class ShadowMapExecution final : public PassExecution {
     program_ = plumbing::create_render_program(s.device, pd, "shadow.vert", "", masked_program_);
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, masked_program_);
     // The view block is written every frame (here and to light_view): its layout is checked once.
-    plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, 0, 0, s.name() + " light_view");
+    plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, shadow_vert_shader::shadow, s.name() + " light_view");
     view_ = s.device.create_buffer({"shadow view", sizeof(plumbing::ShadowViewBlock), buffer_usage::uniform});
   }
 
@@ -126,7 +129,7 @@ class ShadowMapExecution final : public PassExecution {
     pass.depth = {c.view(t_.depth), rhi::LoadOp::clear, 1.0f, false};
     c.encoder.begin_render_pass(pass);
     if (casts && !geometry_->objects().empty()) {
-      const rhi::BindGroupId view = c.bind_group(program_.layouts[0], {rhi::BindGroupEntry::of(0, view_)});
+      const rhi::BindGroupId view = c.bind_group(program_, {bind(shadow_vert_shader::shadow, view_)});
       draw_casters(c, program_, view, plumbing::Surfaces::solid_shadow_casters);
       draw_casters(c, masked_program_, view, plumbing::Surfaces::masked_shadow_casters);
     }

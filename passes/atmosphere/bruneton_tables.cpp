@@ -26,9 +26,20 @@
 #include "passes/atmosphere/bruneton_uniforms.h"
 #include "passes/plumbing/programs.h"
 #include "physics/atmosphere_bruneton.h"
+#include "shaders/bindings/atmosphere_bruneton_direct_irradiance.comp.h"
+#include "shaders/bindings/atmosphere_bruneton_single_scattering.comp.h"
+#include "shaders/bindings/atmosphere_bruneton_scattering_density.comp.h"
+#include "shaders/bindings/atmosphere_bruneton_indirect_irradiance.comp.h"
+#include "shaders/bindings/atmosphere_bruneton_multiple_scattering.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace bruneton_direct_irradiance_shader = shaders::atmosphere_bruneton_direct_irradiance_comp;
+namespace bruneton_single_scattering_shader = shaders::atmosphere_bruneton_single_scattering_comp;
+namespace bruneton_scattering_density_shader = shaders::atmosphere_bruneton_scattering_density_comp;
+namespace bruneton_indirect_irradiance_shader = shaders::atmosphere_bruneton_indirect_irradiance_comp;
+namespace bruneton_multiple_scattering_shader = shaders::atmosphere_bruneton_multiple_scattering_comp;
 
 constexpr int kMaxOrders = 8;
 
@@ -151,10 +162,11 @@ class BrunetonTablesExecution final : public PassExecution {
     indirect_ = plumbing::create_compute_program(s.device, "atmosphere_bruneton_indirect_irradiance.comp");
     multiple_ = plumbing::create_compute_program(s.device, "atmosphere_bruneton_multiple_scattering.comp");
     atmosphere_.setup(s, direct_);
-    for (const plumbing::ComputeProgram* p : {&single_, &density_, &multiple_}) {
-      plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(*p, 0, 0, s.pass_name() + " atmosphere");
-    }
-    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(indirect_, 0, 0, s.pass_name() + " atmosphere");
+    const std::string atmosphere_label = s.pass_name() + " atmosphere";
+    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(single_, bruneton_single_scattering_shader::atmosphere, atmosphere_label);
+    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(density_, bruneton_scattering_density_shader::atmosphere, atmosphere_label);
+    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(indirect_, bruneton_indirect_irradiance_shader::atmosphere, atmosphere_label);
+    plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(multiple_, bruneton_multiple_scattering_shader::atmosphere, atmosphere_label);
     const int orders = int(s.param(t_.orders));
     for (int n = 1; n <= kMaxOrders; ++n) {
       GpuBrunetonTableParams params{};
@@ -166,26 +178,29 @@ class BrunetonTablesExecution final : public PassExecution {
       params.order[1] = n <= orders ? 1 : 0;
       params.order[2] = int32_t(n == 1 ? s.param(t_.single_samples) : s.param(t_.samples));
       const std::string label = s.pass_name() + " params (order " + std::to_string(n) + ")";
-      params_[size_t(n - 1)] = plumbing::create_checked_uniform_block(s.device, n == 1 ? single_ : multiple_, 0, 1, label, params);
+      params_[size_t(n - 1)] = plumbing::create_checked_uniform_block(
+          s.device, n == 1 ? single_ : multiple_,
+          n == 1 ? bruneton_single_scattering_shader::params : bruneton_multiple_scattering_shader::params, label, params);
     }
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
     if (c.step_is(t_.direct)) {
       atmosphere_buffer_ = atmosphere_.write(c);
+      namespace shader = bruneton_direct_irradiance_shader;
       dispatch(c, direct_, irradiance_extent(c),
-               {BindGroupEntry::of(0, atmosphere_buffer_), BindGroupEntry::of(1, params_[0]), BindGroupEntry::of(2, c.view(t_.transmittance)),
-                BindGroupEntry::of(3, nearest), BindGroupEntry::of(4, c.view(t_.delta_irradiance)),
-                BindGroupEntry::of(5, c.view(t_.irradiance_sum[1]))});
+               {bind(shader::atmosphere, atmosphere_buffer_), bind(shader::params, params_[0]), bind(shader::transmittance, c.view(t_.transmittance)),
+                bind(shader::nearest, nearest), bind(shader::delta_irradiance, c.view(t_.delta_irradiance)),
+                bind(shader::irradiance_sum, c.view(t_.irradiance_sum[1]))});
       return;
     }
     if (c.step_is(t_.single)) {
+      namespace shader = bruneton_single_scattering_shader;
       dispatch(c, single_, c.extent(t_.delta_rayleigh),
-               {BindGroupEntry::of(0, atmosphere_buffer_), BindGroupEntry::of(1, params_[0]), BindGroupEntry::of(2, c.view(t_.transmittance)),
-                BindGroupEntry::of(3, nearest), BindGroupEntry::of(4, c.view(t_.delta_rayleigh)), BindGroupEntry::of(5, c.view(t_.delta_mie)),
-                BindGroupEntry::of(6, c.view(t_.scattering_sum[1])), BindGroupEntry::of(7, c.view(t_.single_mie_scattering))});
+               {bind(shader::atmosphere, atmosphere_buffer_), bind(shader::params, params_[0]), bind(shader::transmittance, c.view(t_.transmittance)),
+                bind(shader::nearest, nearest), bind(shader::delta_rayleigh, c.view(t_.delta_rayleigh)), bind(shader::delta_mie, c.view(t_.delta_mie)),
+                bind(shader::scattering_sum, c.view(t_.scattering_sum[1])), bind(shader::single_mie_scattering, c.view(t_.single_mie_scattering))});
       return;
     }
     const int orders = int(c.param(t_.orders));
@@ -197,26 +212,29 @@ class BrunetonTablesExecution final : public PassExecution {
       const rhi::TextureViewId mie = c.view(n == 2 ? t_.delta_mie : t_.delta_multiple);
       if (c.step_is(s.density)) {
         if (n > orders) return;  // nothing reads this order's density
+        namespace shader = bruneton_scattering_density_shader;
         dispatch(c, density_, c.extent(t_.density),
-                 {BindGroupEntry::of(0, atmosphere_buffer_), BindGroupEntry::of(1, params), BindGroupEntry::of(2, c.view(t_.transmittance)),
-                  BindGroupEntry::of(3, nearest), BindGroupEntry::of(4, rayleigh), BindGroupEntry::of(5, mie), BindGroupEntry::of(6, mie),
-                  BindGroupEntry::of(7, c.view(t_.delta_irradiance)), BindGroupEntry::of(8, c.view(t_.density))});
+                 {bind(shader::atmosphere, atmosphere_buffer_), bind(shader::params, params), bind(shader::transmittance, c.view(t_.transmittance)),
+                  bind(shader::nearest, nearest), bind(shader::delta_rayleigh, rayleigh), bind(shader::delta_mie, mie), bind(shader::delta_multiple, mie),
+                  bind(shader::delta_irradiance, c.view(t_.delta_irradiance)), bind(shader::density, c.view(t_.density))});
         return;
       }
       if (c.step_is(s.indirect)) {
+        namespace shader = bruneton_indirect_irradiance_shader;
         dispatch(c, indirect_, irradiance_extent(c),
-                 {BindGroupEntry::of(0, atmosphere_buffer_), BindGroupEntry::of(1, params), BindGroupEntry::of(2, rayleigh),
-                  BindGroupEntry::of(3, mie), BindGroupEntry::of(4, mie), BindGroupEntry::of(5, nearest),
-                  BindGroupEntry::of(6, c.view(t_.irradiance_previous(n))), BindGroupEntry::of(7, c.view(t_.delta_irradiance)),
-                  BindGroupEntry::of(8, c.view(t_.irradiance_next(n)))});
+                 {bind(shader::atmosphere, atmosphere_buffer_), bind(shader::params, params), bind(shader::delta_rayleigh, rayleigh),
+                  bind(shader::delta_mie, mie), bind(shader::delta_multiple, mie), bind(shader::nearest, nearest),
+                  bind(shader::irradiance_previous, c.view(t_.irradiance_previous(n))), bind(shader::delta_irradiance, c.view(t_.delta_irradiance)),
+                  bind(shader::irradiance_next, c.view(t_.irradiance_next(n)))});
         return;
       }
       if (c.step_is(s.multiple)) {
+        namespace shader = bruneton_multiple_scattering_shader;
         dispatch(c, multiple_, c.extent(t_.delta_multiple),
-                 {BindGroupEntry::of(0, atmosphere_buffer_), BindGroupEntry::of(1, params), BindGroupEntry::of(2, c.view(t_.transmittance)),
-                  BindGroupEntry::of(3, nearest), BindGroupEntry::of(4, c.view(t_.density)),
-                  BindGroupEntry::of(5, c.view(t_.scattering_previous(n))), BindGroupEntry::of(6, c.view(t_.delta_multiple)),
-                  BindGroupEntry::of(7, c.view(t_.scattering_next(n)))});
+                 {bind(shader::atmosphere, atmosphere_buffer_), bind(shader::params, params), bind(shader::transmittance, c.view(t_.transmittance)),
+                  bind(shader::nearest, nearest), bind(shader::density, c.view(t_.density)),
+                  bind(shader::scattering_previous, c.view(t_.scattering_previous(n))), bind(shader::delta_multiple, c.view(t_.delta_multiple)),
+                  bind(shader::scattering_next, c.view(t_.scattering_next(n)))});
         return;
       }
     }
@@ -225,8 +243,9 @@ class BrunetonTablesExecution final : public PassExecution {
  private:
   Extent irradiance_extent(const PassContext& c) const { return c.extent(t_.delta_irradiance); }
 
-  static void dispatch(PassContext& c, const plumbing::ComputeProgram& program, Extent size, std::vector<rhi::BindGroupEntry> entries) {
-    const rhi::BindGroupId group = c.bind_group(program.layouts[0], std::move(entries));
+  // One step's dispatch; `resources` name the program's shader variables (checked against its layout).
+  static void dispatch(PassContext& c, const plumbing::ComputeProgram& program, Extent size, const std::vector<rhi::BoundResource>& resources) {
+    const rhi::BindGroupId group = c.bind_group(program, resources);
     plumbing::dispatch(c.encoder, c.name(), program, {group}, {size.width, size.height, size.depth});
   }
 

@@ -13,9 +13,16 @@
 #include "graph/scene/scene.h"
 #include "passes/plumbing/programs.h"
 #include "passes/register_pass.h"
+#include "shaders/bindings/cloud_noise_curl.comp.h"
+#include "shaders/bindings/cloud_noise_detail.comp.h"
+#include "shaders/bindings/cloud_noise_shape.comp.h"
 
 namespace volgraph {
 namespace {
+
+namespace cloud_noise_shape_shader = shaders::cloud_noise_shape_comp;
+namespace cloud_noise_detail_shader = shaders::cloud_noise_detail_comp;
+namespace cloud_noise_curl_shader = shaders::cloud_noise_curl_comp;
 
 struct CloudNoiseTable : PassTable {
   CloudNoiseTable()
@@ -56,20 +63,20 @@ class CloudNoiseExecution final : public PassExecution {
     detail_ = plumbing::create_compute_program(s.device, "cloud_noise_detail.comp");
     curl_ = plumbing::create_compute_program(s.device, "cloud_noise_curl.comp");
     const GpuCloudNoiseParams params{{uint32_t(s.param(t_.seed)), 0, 0, 0}};
-    params_ = plumbing::create_checked_uniform_block(s.device, shape_, 0, 0, s.name() + " params", params);
+    params_ = plumbing::create_checked_uniform_block(s.device, shape_, cloud_noise_shape_shader::params, s.name() + " params", params);
   }
 
   // Runs when the cache key changed: the first frame, or another seed or size.
   void record(PassContext& c) override {
-    fill(c, shape_, t_.shape);
-    fill(c, detail_, t_.detail);
-    fill(c, curl_, t_.curl);
+    fill(c, shape_, cloud_noise_shape_shader::params, cloud_noise_shape_shader::shape, t_.shape);
+    fill(c, detail_, cloud_noise_detail_shader::params, cloud_noise_detail_shader::detail, t_.detail);
+    fill(c, curl_, cloud_noise_curl_shader::params, cloud_noise_curl_shader::curl, t_.curl);
   }
 
  private:
-  void fill(PassContext& c, const plumbing::ComputeProgram& program, SlotHandle texture) {
-    using rhi::BindGroupEntry;
-    const rhi::BindGroupId group = c.bind_group(program.layouts[0], {BindGroupEntry::of(0, params_), BindGroupEntry::of(1, c.view(texture))});
+  // One texture by its program: `params` and `image` are that shader's variables.
+  void fill(PassContext& c, const plumbing::ComputeProgram& program, rhi::ShaderBinding params, rhi::ShaderBinding image, SlotHandle texture) {
+    const rhi::BindGroupId group = c.bind_group(program, {bind(params, params_), bind(image, c.view(texture))});
     plumbing::dispatch(c.encoder, c.name(), program, {group}, c.extent(texture));
   }
 

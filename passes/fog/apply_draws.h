@@ -17,7 +17,6 @@ class ApplyDraws {
   // render onto); shaders by name in shaders/.
   void prepare(const PassSetup& s, SlotHandle color, const char* transmittance_fragment, const char* scattering_fragment);
   bool prepared() const { return bool(attenuate_.pipeline); }
-  rhi::BindGroupLayoutId layout() const { return attenuate_.layouts[0]; }
   // The program whose layouts both draws use: bind groups by the first shader's variables.
   const plumbing::RenderProgram& program() const { return attenuate_; }
   // Both draws' programs (to check the uniform blocks the group holds against each).

@@ -58,9 +58,23 @@
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/shadow_view.h"
 #include "passes/uniform_mirrors.h"
+#include "shaders/bindings/light_volume_cells.frag.h"
+#include "shaders/bindings/light_volume_ends.frag.h"
+#include "shaders/bindings/light_volume_faces.frag.h"
+#include "shaders/bindings/light_volume_faces.vert.h"
+#include "shaders/bindings/light_volume_resolve.frag.h"
+#include "shaders/bindings/light_volume_unproject.frag.h"
 
 namespace volgraph {
 namespace {
+
+namespace light_volume_unproject_shader = shaders::light_volume_unproject_frag;
+namespace light_volume_cells_shader = shaders::light_volume_cells_frag;
+namespace light_volume_ends_shader = shaders::light_volume_ends_frag;
+// The faces' program: light_volume_faces.vert's names stand for light_volume_surface.vert's too (the same bindings).
+namespace light_volume_faces_vert_shader = shaders::light_volume_faces_vert;
+namespace light_volume_faces_frag_shader = shaders::light_volume_faces_frag;
+namespace light_volume_resolve_shader = shaders::light_volume_resolve_frag;
 
 constexpr uint32_t kVerticesPerCell = 48;  // light_volume_faces.vert: 2 caps and 2 walls of 3 quads
 constexpr uint32_t kLightFrameTexels = 5;  // light_volume.glsl LIGHT_FRAME_TEXELS
@@ -224,27 +238,31 @@ class LightVolumeExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    using rhi::BindGroupEntry;
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
     if (c.step_is(t_.unproject) && shadowed_) {
-      fullscreen(c, {c.view(t_.light_frame)}, unproject_, c.bind_group(unproject_.layouts[0], {BindGroupEntry::of(0, shadow_view(c))}));
+      namespace shader = light_volume_unproject_shader;
+      fullscreen(c, {c.view(t_.light_frame)}, unproject_, c.bind_group(unproject_, {bind(shader::shadow, shadow_view(c))}));
     } else if (c.step_is(t_.cell_depths) && shadowed_) {
+      namespace shader = light_volume_cells_shader;
       fullscreen(c, {c.view(t_.cells)}, cells_program_,
-                 c.bind_group(cells_program_.layouts[0], {BindGroupEntry::of(0, c.view(t_.shadow_map)), BindGroupEntry::of(1, nearest),
-                                                          BindGroupEntry::of(2, shadow_view(c)), BindGroupEntry::of(3, params_)}));
+                 c.bind_group(cells_program_, {bind(shader::shadow_depth, c.view(t_.shadow_map)), bind(shader::nearest, nearest),
+                                               bind(shader::shadow, shadow_view(c)), bind(shader::params, params_)}));
     } else if (c.step_is(t_.ray_ends)) {
+      namespace shader = light_volume_ends_shader;
       fullscreen(c, {c.view(t_.ends), c.view(t_.sums)}, ends_program_,
-                 c.bind_group(ends_program_.layouts[0], {BindGroupEntry::of(0, frame_), BindGroupEntry::of(1, c.view(t_.depth)),
-                                                         BindGroupEntry::of(2, nearest), BindGroupEntry::of(3, shadow_view(c)),
-                                                         BindGroupEntry::of(4, params_)}));
+                 c.bind_group(ends_program_, {bind(shader::frame, frame_), bind(shader::scene_depth, c.view(t_.depth)),
+                                              bind(shader::nearest, nearest), bind(shader::shadow, shadow_view(c)), bind(shader::params, params_)}));
     } else if (c.step_is(t_.faces) && shadowed_) {
-      draw_faces(c, c.bind_group(faces_.layouts[0], {BindGroupEntry::of(0, params_), BindGroupEntry::of(1, c.view(t_.cells)),
-                                                     BindGroupEntry::of(2, c.view(t_.light_frame)), BindGroupEntry::of(3, nearest),
-                                                     BindGroupEntry::of(4, frame_), BindGroupEntry::of(5, c.view(t_.ends))}));
+      namespace vert = light_volume_faces_vert_shader;
+      namespace frag = light_volume_faces_frag_shader;
+      draw_faces(c, c.bind_group(faces_, {bind(frag::params, params_), bind(vert::cells, c.view(t_.cells)),
+                                          bind(frag::light_frame, c.view(t_.light_frame)), bind(frag::nearest, nearest),
+                                          bind(frag::frame, frame_), bind(frag::ends, c.view(t_.ends))}));
     } else if (c.step_is(t_.resolve)) {
+      namespace shader = light_volume_resolve_shader;
       fullscreen(c, {c.view(t_.fog_scattering), c.view(t_.fog_transmittance)}, resolve_,
-                 c.bind_group(resolve_.layouts[0], {BindGroupEntry::of(0, c.view(t_.sums)), BindGroupEntry::of(1, c.view(t_.ends)),
-                                                    BindGroupEntry::of(2, nearest), BindGroupEntry::of(3, frame_)}));
+                 c.bind_group(resolve_, {bind(shader::sums, c.view(t_.sums)), bind(shader::ends, c.view(t_.ends)),
+                                         bind(shader::nearest, nearest), bind(shader::frame, frame_)}));
     }
   }
 
@@ -255,16 +273,16 @@ class LightVolumeExecution final : public PassExecution {
     using plumbing::check_wrapped_uniform_mirror;
     const std::string params = s.pass_name() + " params", frame = s.pass_name() + " frame",
                       view = s.pass_name() + " shadow view";
-    check_wrapped_uniform_mirror<fog::GpuFogFrame>(ends_program_, 0, 0, frame);
-    check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(ends_program_, 0, 3, view);
-    check_wrapped_uniform_mirror<GpuLightVolumeParams>(ends_program_, 0, 4, params);
-    check_wrapped_uniform_mirror<fog::GpuFogFrame>(resolve_, 0, 3, frame);
+    check_wrapped_uniform_mirror<fog::GpuFogFrame>(ends_program_, light_volume_ends_shader::frame, frame);
+    check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(ends_program_, light_volume_ends_shader::shadow, view);
+    check_wrapped_uniform_mirror<GpuLightVolumeParams>(ends_program_, light_volume_ends_shader::params, params);
+    check_wrapped_uniform_mirror<fog::GpuFogFrame>(resolve_, light_volume_resolve_shader::frame, frame);
     if (!shadowed_) return;
-    check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(unproject_, 0, 0, view);
-    check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(cells_program_, 0, 2, view);
-    check_wrapped_uniform_mirror<GpuLightVolumeParams>(cells_program_, 0, 3, params);
-    check_wrapped_uniform_mirror<GpuLightVolumeParams>(faces_, 0, 0, params);
-    check_wrapped_uniform_mirror<fog::GpuFogFrame>(faces_, 0, 4, frame);
+    check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(unproject_, light_volume_unproject_shader::shadow, view);
+    check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(cells_program_, light_volume_cells_shader::shadow, view);
+    check_wrapped_uniform_mirror<GpuLightVolumeParams>(cells_program_, light_volume_cells_shader::params, params);
+    check_wrapped_uniform_mirror<GpuLightVolumeParams>(faces_, light_volume_faces_frag_shader::params, params);
+    check_wrapped_uniform_mirror<fog::GpuFogFrame>(faces_, light_volume_faces_frag_shader::frame, frame);
   }
 
   static void fullscreen(PassContext& c, std::vector<rhi::TextureViewId> targets, const plumbing::RenderProgram& program,

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "graph/rhi/rhi.h"
+#include "graph/rhi/shader_binding.h"
 #include "graph/rhi/spirv_reflect.h"
 
 namespace volgraph::plumbing {
@@ -104,12 +105,30 @@ void check_wrapped_uniform_mirror(const Program& program, uint32_t set, uint32_t
   rhi::check_uniform_block(uniform_block_at(program.uniform_blocks, set, binding), sizeof(Block), offsets, what);
 }
 
+// The two checks at the uniform block the shader's variable names (its set and binding).
+template <typename Block, typename Program>
+void check_uniform_mirror(const Program& program, rhi::ShaderBinding block_variable, std::string_view what) {
+  check_uniform_mirror<Block>(program, block_variable.set, block_variable.binding, what);
+}
+template <typename Block, typename Program>
+void check_wrapped_uniform_mirror(const Program& program, rhi::ShaderBinding block_variable, std::string_view what) {
+  check_wrapped_uniform_mirror<Block>(program, block_variable.set, block_variable.binding, what);
+}
+
 // create_checked_uniform_block with Block's own offsets list (Block::offsets()).
 template <typename Program, typename Block>
 rhi::BufferId create_checked_uniform_block(rhi::Device& device, const Program& program, uint32_t set, uint32_t binding,
                                            const std::string& label, const Block& block) {
   check_uniform_mirror<Block>(program, set, binding, label);
   return create_uniform_block(device, label, block);
+}
+
+// create_checked_uniform_block at the uniform block the shader's variable names
+// (shaders/bindings/<shader>.h), so its set and binding are said once, in the GLSL.
+template <typename Program, typename Block>
+rhi::BufferId create_checked_uniform_block(rhi::Device& device, const Program& program, rhi::ShaderBinding block_variable,
+                                           const std::string& label, const Block& block) {
+  return create_checked_uniform_block(device, program, block_variable.set, block_variable.binding, label, block);
 }
 
 }  // namespace volgraph::plumbing

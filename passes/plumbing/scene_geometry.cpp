@@ -6,8 +6,13 @@
 #include "passes/plumbing/gltf.h"
 #include "passes/plumbing/meshes.h"
 #include "physics/translucency.h"
+#include "shaders/bindings/scene.frag.h"
 
 namespace volgraph::plumbing {
+
+// Set 1, the object's, by scene.frag's names: every program drawing SceneGeometry declares
+// it alike (create_render_program's layouts_of checks the programs that share it).
+namespace scene_geometry_object_set = shaders::scene_frag;
 
 using namespace physics;  // the CPU maths these helpers are written in
 namespace {
@@ -74,11 +79,11 @@ rhi::VertexBufferLayout SceneGeometry::position_layout() {
   return {kMeshVertexFloats * 4, {{0, rhi::VertexFormat::float32x3, 0}}};
 }
 
-std::vector<rhi::BindGroupEntry> SceneGeometry::texture_entries(const MaterialTextures& t) {
-  using rhi::BindGroupEntry;
-  return {BindGroupEntry::of(1, t.base_color ? textures_->srgb(t.base_color_key, t.base_color) : textures_->white()),
-          BindGroupEntry::of(2, t.emissive ? textures_->srgb(t.emissive_key, t.emissive) : textures_->white()),
-          BindGroupEntry::of(3, textures_->sampler(t.wrap))};
+std::vector<rhi::BoundResource> SceneGeometry::texture_entries(const MaterialTextures& t) {
+  namespace set = scene_geometry_object_set;
+  return {bind(set::base_color_texture, t.base_color ? textures_->srgb(t.base_color_key, t.base_color) : textures_->white()),
+          bind(set::emissive_texture, t.emissive ? textures_->srgb(t.emissive_key, t.emissive) : textures_->white()),
+          bind(set::material_sampler, textures_->sampler(t.wrap))};
 }
 
 void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
@@ -116,11 +121,11 @@ void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
   pack_translucency(object.translucency, length_scale(object.model), block);
   g.uniforms = device.create_buffer({"object", sizeof(GpuObjectBlock), buffer_usage::uniform});
   device.write_buffer(g.uniforms, 0, std::as_bytes(std::span(&block, 1)));
-  std::vector<BindGroupEntry> entries = {BindGroupEntry::of(0, g.uniforms)};
+  std::vector<BoundResource> resources = {bind(scene_geometry_object_set::object, g.uniforms)};
   if (textured_) {
-    for (const BindGroupEntry& t : texture_entries(object.textures)) entries.push_back(t);
+    for (const BoundResource& t : texture_entries(object.textures)) resources.push_back(t);
   }
-  g.group = device.create_bind_group({"object", layout_, entries});
+  g.group = device.create_bind_group({"object", layout_, entries_of(resources)});
   objects_.push_back(g);
 }
 
@@ -128,7 +133,7 @@ SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, const Rend
     : textured_(declares_textures(program.layout_descs.at(1))),
       textures_(std::make_unique<TextureCache>(device)),
       layout_(program.layouts.at(1)) {
-  check_uniform_mirror<GpuObjectBlock>(program, 1, 0, "GpuObjectBlock");
+  check_uniform_mirror<GpuObjectBlock>(program, scene_geometry_object_set::object, "GpuObjectBlock");
   for (const Object& object : scene.objects) {
     const Mat4 model = model_matrix(object.transform);
     if (object.shape == Shape::gltf) {

@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "graph/rhi/bind_by_name.h"
 #include "graph/rhi/rhi.h"
 #include "graph/scene/scene.h"
 #include "physics/camera.h"
@@ -78,7 +79,7 @@ struct MaterialTextures {
 
 class SceneGeometry {
  public:
-  // Set 1 as the program's shaders declare it (layout_descs[1], layouts[1]): the object
+  // Set 1 as the program's shaders declare it (scene.frag's `object` and material): the object
   // block alone (depth passes) or with the material's textures. The object block is
   // checked against GpuObjectBlock (plumbing::check_uniform_mirror). glTF objects are
   // loaded here (throws std::runtime_error for a broken file).
@@ -111,7 +112,7 @@ class SceneGeometry {
     bool casts_shadows;
   };
   void add(rhi::Device& device, const ObjectData& object);
-  std::vector<rhi::BindGroupEntry> texture_entries(const MaterialTextures& textures);
+  std::vector<rhi::BoundResource> texture_entries(const MaterialTextures& textures);
 
   bool textured_ = false;
   std::unique_ptr<TextureCache> textures_;

@@ -33,9 +33,16 @@
 #include "passes/register_pass.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/camera.h"
+#include "shaders/bindings/translucency_oit_revealage.frag.h"
+#include "shaders/bindings/translucency_refract.frag.h"
 
 namespace volgraph {
 namespace {
+
+// The surface programs share translucency_refract.frag's layouts (it reads every binding
+// of their sets); the two resolve shaders declare the same bindings.
+namespace translucency_surface_shader = shaders::translucency_refract_frag;
+namespace translucency_resolve_shader = shaders::translucency_oit_revealage_frag;
 
 constexpr int64_t kMaxPeeledLayers = 16;
 
@@ -233,11 +240,12 @@ class TranslucencyExecution final : public PassExecution {
                                    CullMode::back, like, at_layer);
     resolve_ = {resolve_program(s, color, BlendMode::multiply, "translucency_oit_revealage.frag"),
                 resolve_program(s, color, BlendMode::additive, "translucency_oit_radiance.frag")};
-    plumbing::check_uniform_mirror<GpuSceneFrame>(*like, 0, 0, s.name() + " frame (the scene pass's)");
-    plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(*like, 2, 2, s.name() + " light_view");
-    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(*like, 3, 0, s.name() + " fog_frame");
-    plumbing::check_wrapped_uniform_mirror<GpuAerialLookup>(*like, 3, 4, s.name() + " aerial_lookup");
-    block_ = plumbing::create_checked_uniform_block(s.device, *like, 0, 1, s.name() + " translucency", GpuTranslucencyBlock{});
+    namespace shader = translucency_surface_shader;
+    plumbing::check_uniform_mirror<GpuSceneFrame>(*like, shader::frame, s.name() + " frame (the scene pass's)");
+    plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(*like, shader::shadow, s.name() + " light_view");
+    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(*like, shader::fog, s.name() + " fog_frame");
+    plumbing::check_wrapped_uniform_mirror<GpuAerialLookup>(*like, shader::air, s.name() + " aerial_lookup");
+    block_ = plumbing::create_checked_uniform_block(s.device, *like, shader::translucency, s.name() + " translucency", GpuTranslucencyBlock{});
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, *like);
     textures_ = std::make_unique<plumbing::TextureCache>(s.device);
     make_stand_ins(s);
@@ -312,25 +320,25 @@ class TranslucencyExecution final : public PassExecution {
   // `back_distance` its distance (stand-ins while they are being drawn), `refracted` the
   // colour refracting solids show (a stand-in in the steps that do not declare reading it).
   void bind_surface_sets(PassContext& c, rhi::TextureViewId back, rhi::TextureViewId back_distance, rhi::TextureViewId refracted) {
-    using rhi::BindGroupEntry;
+    namespace shader = translucency_surface_shader;
     const plumbing::RenderProgram& p = programs_.transmittance_back;
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
-    c.encoder.set_bind_group(0, c.bind_group(p.layouts[0], {BindGroupEntry::of(0, c.buffer(t_.frame)), BindGroupEntry::of(1, block_),
-                                                            BindGroupEntry::of(2, c.view(t_.depth)), BindGroupEntry::of(3, back),
-                                                            BindGroupEntry::of(4, nearest),
-                                                            BindGroupEntry::of(5, refracted), BindGroupEntry::of(6, back_distance)}));
+    c.encoder.set_bind_group(0, c.bind_group(p, {bind(shader::frame, c.buffer(t_.frame)), bind(shader::translucency, block_),
+                                                 bind(shader::scene_depth, c.view(t_.depth)), bind(shader::back_depth, back),
+                                                 bind(shader::nearest, nearest), bind(shader::refracted_color, refracted),
+                                                 bind(shader::back_distance, back_distance)}));
     const bool shadow = shadowed(c);
-    c.encoder.set_bind_group(2, c.bind_group(p.layouts[2], {BindGroupEntry::of(0, shadow ? c.view(t_.shadow_map) : textures_->white()),
-                                                            BindGroupEntry::of(1, nearest),
-                                                            BindGroupEntry::of(2, shadow ? c.buffer(t_.light_view) : no_shadow_view_)}));
+    c.encoder.set_bind_group(2, c.bind_group(p, {bind(shader::shadow_depth, shadow ? c.view(t_.shadow_map) : textures_->white()),
+                                                 bind(shader::shadow_sampler, nearest),
+                                                 bind(shader::shadow, shadow ? c.buffer(t_.light_view) : no_shadow_view_)}));
     const bool fog = fogged(c), air = aired(c);
-    c.encoder.set_bind_group(3, c.bind_group(p.layouts[3], {BindGroupEntry::of(0, fog ? c.buffer(t_.fog_frame) : no_fog_frame_),
-                                                            BindGroupEntry::of(1, fog ? c.view(t_.integrated_scattering) : no_volume_),
-                                                            BindGroupEntry::of(2, fog ? c.view(t_.integrated_transmittance) : no_volume_),
-                                                            BindGroupEntry::of(3, c.sampler(rhi::StockSampler::trilinear_clamp)),
-                                                            BindGroupEntry::of(4, air ? c.buffer(t_.aerial_lookup) : no_aerial_lookup_),
-                                                            BindGroupEntry::of(5, air ? c.view(t_.aerial_scattering) : no_volume_),
-                                                            BindGroupEntry::of(6, air ? c.view(t_.aerial_transmittance) : no_volume_)}));
+    c.encoder.set_bind_group(3, c.bind_group(p, {bind(shader::fog, fog ? c.buffer(t_.fog_frame) : no_fog_frame_),
+                                                 bind(shader::integrated_scattering, fog ? c.view(t_.integrated_scattering) : no_volume_),
+                                                 bind(shader::integrated_transmittance, fog ? c.view(t_.integrated_transmittance) : no_volume_),
+                                                 bind(shader::trilinear, c.sampler(rhi::StockSampler::trilinear_clamp)),
+                                                 bind(shader::air, air ? c.buffer(t_.aerial_lookup) : no_aerial_lookup_),
+                                                 bind(shader::aerial_scattering, air ? c.view(t_.aerial_scattering) : no_volume_),
+                                                 bind(shader::aerial_transmittance, air ? c.view(t_.aerial_transmittance) : no_volume_)}));
   }
 
   // The translucent objects from the farthest to the nearest (their bounds' centres).
@@ -442,16 +450,16 @@ class TranslucencyExecution final : public PassExecution {
   }
 
   void record_resolve(PassContext& c) {
-    using rhi::BindGroupEntry;
+    namespace shader = translucency_resolve_shader;
     rhi::RenderPassDesc pass;
     pass.label = c.name();
     pass.colors = {{c.view(t_.color), rhi::LoadOp::load}};
     c.encoder.begin_render_pass(pass);
     for (const plumbing::RenderProgram* p : {&resolve_[0], &resolve_[1]}) {
       c.encoder.set_pipeline(p->pipeline);
-      c.encoder.set_bind_group(0, c.bind_group(p->layouts[0], {BindGroupEntry::of(0, c.view(t_.oit_accumulation)),
-                                                               BindGroupEntry::of(1, c.view(t_.oit_optical_depth)),
-                                                               BindGroupEntry::of(2, c.sampler(rhi::StockSampler::nearest_clamp))}));
+      c.encoder.set_bind_group(0, c.bind_group(*p, {bind(shader::oit_accumulation, c.view(t_.oit_accumulation)),
+                                                    bind(shader::oit_optical_depth, c.view(t_.oit_optical_depth)),
+                                                    bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp))}));
       c.encoder.draw(3);  // fullscreen.vert's one triangle
     }
     c.encoder.end_render_pass();
