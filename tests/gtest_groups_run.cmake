@@ -1,5 +1,5 @@
 # ctest time (included from BUILD/tests/*/TARGET_groups.cmake, which volgraph_gtest_groups()
-# in tests/pass_labels_impl.cmake writes): lists the binary's GoogleTest cases and adds
+# in tests/pass_labels.cmake writes): lists the binary's GoogleTest cases and adds
 # one ctest test per group of cases that share a suite and a set of labels, at most
 # GROUP_SIZE cases each. A group is one process: the binary's start (Vulkan's layers, Dawn)
 # is paid once per group, not once per case, and GoogleTest's output still names every
@@ -7,7 +7,7 @@
 # tests/support/gtest_main.cpp); the group's TIMEOUT is the backstop.
 #
 # Inputs: _vg_binary _vg_target _vg_label _vg_case_seconds _vg_group_size, and the pass
-# labels' rules: _vg_regexes and _vg_types (parallel lists; types joined by ",").
+# types: _vg_file_types_<source file> and _vg_config_types_<config>; _vg_quick_configs.
 #
 # Names: TARGET:SUITE, or TARGET:SUITE:K where a suite's cases fall into several groups;
 # run one case alone with the binary: BINARY --gtest_filter=Suite.Case.
@@ -17,44 +17,60 @@ if(NOT EXISTS "${_vg_binary}")
   set_tests_properties("${_vg_target}:NOT_BUILT" PROPERTIES LABELS "${_vg_label}")
   return()
 endif()
-execute_process(COMMAND "${_vg_binary}" --gtest_list_tests OUTPUT_VARIABLE _vg_listing RESULT_VARIABLE _vg_result
-                ERROR_VARIABLE _vg_error TIMEOUT 60)
-if(NOT _vg_result EQUAL 0)
+# The cases with their source files: GoogleTest's JSON listing, one key a line.
+set(_vg_listing_file "${_vg_binary}.cases.json")
+file(REMOVE "${_vg_listing_file}")
+execute_process(COMMAND "${_vg_binary}" --gtest_list_tests "--gtest_output=json:${_vg_listing_file}" OUTPUT_QUIET
+                RESULT_VARIABLE _vg_result ERROR_VARIABLE _vg_error TIMEOUT 60)
+if(NOT _vg_result EQUAL 0 OR NOT EXISTS "${_vg_listing_file}")
   add_test("${_vg_target}:LISTING_FAILED" "${_vg_binary}" --gtest_list_tests)
   set_tests_properties("${_vg_target}:LISTING_FAILED" PROPERTIES LABELS "${_vg_label}")
   return()
 endif()
-
-# The cases, "Suite.Case" (parameterized: "Prefix/Suite.Case/param"), without GoogleTest's
-# "# GetParam() = …" comments and without DISABLED_ ones.
-string(REPLACE ";" "" _vg_listing "${_vg_listing}")
+file(READ "${_vg_listing_file}" _vg_listing)
+file(REMOVE "${_vg_listing_file}")
+# As a CMake list: brackets would hold list elements together, semicolons split them.
+string(REPLACE "[" "(" _vg_listing "${_vg_listing}")
+string(REPLACE "]" ")" _vg_listing "${_vg_listing}")
+string(REPLACE ";" "," _vg_listing "${_vg_listing}")
 string(REPLACE "\n" ";" _vg_lines "${_vg_listing}")
+
+# Each case, "Suite.Case" (parameterized: "Prefix/Suite.Case/param"), without DISABLED_
+# ones, gets the pass types of its source file (tests/pass_labels.cmake); a case whose
+# parameter names a shipped config ("…/demo_fog", "…/demo_fog_vulkan") those of the config
+# instead, and quick if the config is one of the quick ones and the case renders its golden image.
 set(_vg_suite "")
+set(_vg_name "")
 set(_vg_keys "")
 set(_vg_key_count 0)
 foreach(_vg_line IN LISTS _vg_lines)
-  if(_vg_line MATCHES "^([^ #]+)\\.")
-    set(_vg_suite "${CMAKE_MATCH_1}")
+  if(_vg_line MATCHES "^ *\"name\": \"(.*)\",?$")
+    string(REPLACE "\\/" "/" _vg_name "${CMAKE_MATCH_1}")
+    continue()
+  elseif(_vg_line MATCHES "^ *\"testsuite\": \\(")
+    set(_vg_suite "${_vg_name}")
+    continue()
+  elseif(NOT _vg_line MATCHES "^ *\"file\": \"(.*)\",?$")
     continue()
   endif()
-  if(NOT _vg_line MATCHES "^  ([^ #]+)")
-    continue()
-  endif()
-  set(_vg_case "${_vg_suite}.${CMAKE_MATCH_1}")
+  string(REPLACE "\\/" "/" _vg_file "${CMAKE_MATCH_1}")
+  set(_vg_case "${_vg_suite}.${_vg_name}")
   if(_vg_case MATCHES "(^|[./])DISABLED_")
     continue()
   endif()
-  # The pass types the table (tests/pass_labels.cmake) gives this case.
-  set(_vg_labels "${_vg_label}")
-  set(_vg_index 0)
-  foreach(_vg_regex IN LISTS _vg_regexes)
-    if(_vg_case MATCHES "${_vg_regex}")
-      list(GET _vg_types ${_vg_index} _vg_joined)
-      string(REPLACE "," ";" _vg_more "${_vg_joined}")
-      list(APPEND _vg_labels ${_vg_more})
+  string(MAKE_C_IDENTIFIER "${_vg_file}" _vg_file_key)
+  set(_vg_labels ${_vg_label} ${_vg_file_types_${_vg_file_key}})
+  if(_vg_name MATCHES "/([A-Za-z0-9_]+)$")
+    set(_vg_param "${CMAKE_MATCH_1}")
+    string(REGEX REPLACE "_(vulkan|webgpu)$" "" _vg_config "${_vg_param}")
+    if(DEFINED _vg_config_types_${_vg_config})
+      set(_vg_labels ${_vg_label} ${_vg_config_types_${_vg_config}})
+      list(FIND _vg_quick_configs "${_vg_config}" _vg_quick_at)  # no IN_LIST: ctest reads this without the project's policies
+      if(_vg_quick_at GREATER -1 AND _vg_case MATCHES "(^|/)ConfigRender\\.MatchesItsGoldenImage/")
+        list(APPEND _vg_labels quick)
+      endif()
     endif()
-    math(EXPR _vg_index "${_vg_index} + 1")
-  endforeach()
+  endif()
   list(REMOVE_DUPLICATES _vg_labels)
   list(SORT _vg_labels)
   string(REPLACE ";" "," _vg_label_key "${_vg_labels}")

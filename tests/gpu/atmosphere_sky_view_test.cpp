@@ -155,7 +155,7 @@ Errors against_twin(const Texels& image, const Scene& scene, const SkyCase& k, c
 
 physics::SkyViewOptions single_scattering() { return {}; }
 
-bool all_finite(const Texels& t) {
+bool sky_view_texels_finite(const Texels& t) {
   return std::all_of(t.rgba.begin(), t.rgba.end(), [](float v) { return std::isfinite(v) && v >= 0; });
 }
 
@@ -210,7 +210,7 @@ TEST_P(SkyView, RaymarchMatchesTheDoubleTwin) {
   k.sky_params = R"({ "multiscattering": false })";
   const LoadedConfig config = load(k);
   const std::vector<Texels> out = render(config);
-  ASSERT_TRUE(all_finite(out[0]));
+  ASSERT_TRUE(sky_view_texels_finite(out[0]));
   const Errors e = against_twin(out[0], config.config.scene, k, single_scattering(), 1e-6);
   std::printf("raymarch from 2 m, single scattering, against the double twin: relative mean %.3g, largest %.3g\n", e.mean, e.largest);
   EXPECT_LT(e.mean, 2e-3);
@@ -228,7 +228,7 @@ TEST_P(SkyView, SkyViewLutGroundMatchesTheDoubleTwin) {
   k.sky_params = R"({ "multiscattering": false })";
   const LoadedConfig config = load(k);
   const std::vector<Texels> out = render(config);
-  ASSERT_TRUE(all_finite(out[0]));
+  ASSERT_TRUE(sky_view_texels_finite(out[0]));
   const Errors e = against_twin(out[0], config.config.scene, k, single_scattering(), 1e-6, 0.02);
   std::printf("sky_view_lut from 3 km with the ground, single scattering, against the double twin: relative mean %.3g, largest %.3g\n",
               e.mean, e.largest);
@@ -257,7 +257,7 @@ TEST_P(SkyView, FromSpaceBothVariantsMatchTheDoubleTwin) {
     const SkyCase k = from_space(variant);
     const LoadedConfig config = load(k);
     const std::vector<Texels> out = render(config);
-    for (const Texels& t : out) ASSERT_TRUE(all_finite(t)) << variant;
+    for (const Texels& t : out) ASSERT_TRUE(sky_view_texels_finite(t)) << variant;
     const Errors e = against_twin(out[0], config.config.scene, k, single_scattering(), 1e-6);
     std::printf("%s from 400 km, single scattering, against the double twin: relative mean %.3g, largest %.3g\n", variant.c_str(), e.mean,
                 e.largest);
@@ -434,7 +434,7 @@ TEST_P(SkyView, StressCasesAreFiniteAndSeamless) {
             ASSERT_LT(std::abs(mu), 1e-6) << what;
           }
           const std::vector<Texels> out = render(config);
-          for (const Texels& t : out) ASSERT_TRUE(all_finite(t)) << what;
+          for (const Texels& t : out) ASSERT_TRUE(sky_view_texels_finite(t)) << what;
           for (const std::string variant : {"sky_view_lut", "raymarch"}) {
             SkyCase seen = k;
             seen.variant = variant;

@@ -96,7 +96,7 @@ double ray_scale(const Camera& camera, uint32_t i, uint32_t j) {
   return std::sqrt(physics::dot(r, r));
 }
 
-Vec3 pixel_direction(const Camera& camera, uint32_t i, uint32_t j) {
+Vec3 closed_fog_pixel_direction(const Camera& camera, uint32_t i, uint32_t j) {
   const physics::ViewRays rays = physics::view_rays(camera, double(kClosedFogWidth) / kClosedFogHeight);
   return physics::normalize(physics::view_ray(rays, (i + 0.5) / kClosedFogWidth * 2 - 1, 1 - (j + 0.5) / kClosedFogHeight * 2));
 }
@@ -154,7 +154,7 @@ TEST_P(ClosedFog, HeightFogTransmittanceAndDirectionalInScatteringAreExact) {
   const Vec3 travel = physics::normalize({0.3, -0.4, -0.866});
   for (uint32_t j = 0; j < kClosedFogHeight; ++j) {
     for (uint32_t i = 0; i < kClosedFogWidth; ++i) {
-      const Vec3 d = pixel_direction(camera, i, j);
+      const Vec3 d = closed_fog_pixel_direction(camera, i, j);
       const double length = camera.far * ray_scale(camera, i, j);
       const double unit_depth = physics::height_fog_optical_depth(1.0, 0.4, 0.0, camera.position[1], d[1], length);
       const double phase = physics::phase_hg(0.5, -physics::dot(travel, d));
@@ -234,7 +234,7 @@ TEST_P(ClosedFog, StressLimitsLeaveNoNanOrInf) {
   };
   // Light 0 exactly on pixel (10, 7)'s ray 5 m out, light 1 at the camera.
   const Camera probe{.position = {0, 1, 0}, .target = {0, 1, -1}, .fov_y_deg = 50};
-  const Vec3 on_ray = physics::add(probe.position, physics::scaled(pixel_direction(probe, 10, 7), 5));
+  const Vec3 on_ray = physics::add(probe.position, physics::scaled(closed_fog_pixel_direction(probe, 10, 7), 5));
   std::ostringstream lights;
   lights << R"([ { "type": "point", "position": [)" << on_ray[0] << ", " << on_ray[1] << ", " << on_ray[2]
          << R"(], "intensity": [1e4, 1e4, 1e4], "cast_shadows": false },

@@ -20,7 +20,7 @@
 namespace volgraph::reference {
 namespace {
 
-constexpr uint32_t kWidth = 24, kHeight = 16;
+constexpr uint32_t kTranslucentWidth = 24, kTranslucentHeight = 16;
 
 // An emissive wall of radiance `wall` (black albedo) in y = 0, seen from (0, 3, 0) straight
 // down; nothing lit.
@@ -50,7 +50,7 @@ Object slab(const std::string& material, double y, double thickness) {
   return o;
 }
 
-Vec3 ray_of(const Scene& s, uint32_t i, uint32_t j) { return physics::pixel_ray(s.camera, kWidth, kHeight, i, j); }
+Vec3 ray_of(const Scene& s, uint32_t i, uint32_t j) { return physics::pixel_ray(s.camera, kTranslucentWidth, kTranslucentHeight, i, j); }
 
 // A horizontal sheet 100 m wide at height `y`, of material "sheet".
 Object sheet_at(double y) {
@@ -61,7 +61,7 @@ Object sheet_at(double y) {
 
 ReferenceImage render(const Scene& s, const IntegrationSettings& settings = {}) {
   const Renderer renderer(s, settings);
-  return render_image(renderer, {.width = kWidth, .height = kHeight, .threads = 2});
+  return render_image(renderer, {.width = kTranslucentWidth, .height = kTranslucentHeight, .threads = 2});
 }
 
 TEST(TranslucencyReference, SolidSlabIsBeerLambertAlongTheChord) {
@@ -75,8 +75,8 @@ TEST(TranslucencyReference, SolidSlabIsBeerLambertAlongTheChord) {
   s.objects.push_back(slab("slab", 1, d));
   const Renderer renderer(s);
   double worst = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kTranslucentHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucentWidth; ++i) {
       const Vec3 ray = ray_of(s, i, j);
       const Vec3 got = renderer.camera_ray_radiance(ray);
       for (size_t k = 0; k < 3; ++k) {
@@ -103,8 +103,8 @@ TEST(TranslucencyReference, GlassReflectsFresnelAndPassesTheRestOnce) {
   const double f = physics::interface_reflectance(1.5, 1.0);
   for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(centre[k], f * s.background[k] + (1 - f) * wall[k], 1e-15);  // one interface (KHR_materials_volume)
   double worst = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kTranslucentHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucentWidth; ++i) {
       const Vec3 ray = ray_of(s, i, j);
       const Vec3 got = renderer.camera_ray_radiance(ray);
       const double fi = physics::interface_reflectance(1.5, std::abs(ray[1]));
@@ -167,8 +167,8 @@ TEST(TranslucencyReference, CoverageBlendsTheSheetOverTheWall) {
   sun.irradiance = {M_PI, M_PI, M_PI};
   s.lights.push_back(sun);
   const ReferenceImage image = render(s);
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kTranslucentHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucentWidth; ++i) {
       for (size_t k = 0; k < 3; ++k) ASSERT_NEAR(image.at(i, j)[k], 0.75 * wall[k] + 0.25, 1e-15);
     }
   }
@@ -189,8 +189,8 @@ TEST(TranslucencyReference, LayersAreSeenThroughTheMediaInFrontOfThem) {
   s.objects.push_back(sheet_at(1));
   const Renderer renderer(s);
   double worst = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kTranslucentHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucentWidth; ++i) {
       const Vec3 ray = ray_of(s, i, j);
       const double t1 = 2 / -ray[1], t2 = 3 / -ray[1];
       const Vec3 got = renderer.camera_ray_radiance(ray);
@@ -232,8 +232,8 @@ TEST(TranslucencyReference, FoggedLayersEqualTheSegmentsIntegratedApart) {
                                        [&](const Vec3& x) { return renderer.in_scattering(x, d); }, settings);
   };
   double worst = 0;
-  for (uint32_t j = 0; j < kHeight; j += 3) {
-    for (uint32_t i = 0; i < kWidth; i += 3) {
+  for (uint32_t j = 0; j < kTranslucentHeight; j += 3) {
+    for (uint32_t i = 0; i < kTranslucentWidth; i += 3) {
       const Vec3 d = ray_of(s, i, j);
       const double t1 = 2 / -d[1], t2 = 3 / -d[1];
       const Vec3 at_sheet = physics::add(s.camera.position, physics::scaled(d, t1));
@@ -368,15 +368,15 @@ TEST(TranslucencyReference, RefractionDisplacesTheEdgeBehindASlab) {
   // along the middle column, straight and refracted (rows above it see the wall).
   const Renderer straight_renderer(s);
   const auto edge_row = [&](const Renderer& r) {
-    return bisect(0, kHeight, [&](double y) {
-      return r.camera_ray_radiance(physics::pixel_ray(s.camera, kWidth, kHeight, kWidth / 2.0 - 0.5, y - 0.5))[0] < 0.5;
+    return bisect(0, kTranslucentHeight, [&](double y) {
+      return r.camera_ray_radiance(physics::pixel_ray(s.camera, kTranslucentWidth, kTranslucentHeight, kTranslucentWidth / 2.0 - 0.5, y - 0.5))[0] < 0.5;
     });
   };
   const double shift = edge_row(renderer) - edge_row(straight_renderer);
   std::printf("refraction: edge at θ = %.12f (straight %.12f), lateral displacement %.9f m, %.4f pixels at %u×%u\n", seen, straight,
-              lateral, shift, kWidth, kHeight);
+              lateral, shift, kTranslucentWidth, kTranslucentHeight);
   // The shift the angles give: the rows from the centre are tan(angle off the axis) over tan 30°, times 8.
-  const double rows_per_tangent = kHeight / (2 * std::tan(M_PI / 6));  // at the view's centre (fov 60°)
+  const double rows_per_tangent = kTranslucentHeight / (2 * std::tan(M_PI / 6));  // at the view's centre (fov 60°)
   EXPECT_NEAR(shift, -std::tan(seen - straight) * rows_per_tangent, 1e-9);
   EXPECT_GT(std::abs(shift), 0.4);
 }
@@ -442,8 +442,8 @@ TEST(TranslucencyReference, TotalInternalReflectionHidesTheOutside) {
   const Renderer renderer(s, refracted);
   const double critical = std::sqrt(1 - 1 / (1.5 * 1.5));  // cos of the critical angle (41.8°)
   size_t beyond = 0, within = 0;
-  for (uint32_t j = 0; j < kHeight; ++j) {
-    for (uint32_t i = 0; i < kWidth; ++i) {
+  for (uint32_t j = 0; j < kTranslucentHeight; ++j) {
+    for (uint32_t i = 0; i < kTranslucentWidth; ++i) {
       const Vec3 d = ray_of(s, i, j);
       const double to_floor = 2 / -d[1];
       if (std::abs(d[0] * to_floor) >= 10 || std::abs(d[2] * to_floor) >= 10) continue;  // meets a side first

@@ -39,19 +39,6 @@
 namespace volgraph {
 namespace {
 
-// Every shader of shaders/CMakeLists.txt.
-const std::vector<std::string_view> kShaders = {
-    "composite.comp", "flat_color.vert", "flat_color.frag", "scene.vert", "scene.frag", "scene_shadowed.frag",
-    "scene_media_shadowed.frag", "shadow.vert", "fullscreen.vert", "froxel_voxelize.comp", "froxel_scatter.comp",
-    "froxel_scatter_shadowed.comp", "froxel_scatter_media_shadowed.comp", "scatter_integrate.comp",
-    "opacity_shadow_map.comp", "froxel_apply_transmittance.frag", "froxel_apply_scattering.frag",
-    "fog_apply_transmittance.frag", "fog_apply_scattering.frag", "fog_apply_transmittance_depth_aware.frag",
-    "fog_apply_scattering_depth_aware.frag", "raymarch_fog.comp", "raymarch_fog_shadowed.comp", "froxel_temporal.comp",
-    "pixel_temporal.comp", "depth_fog.comp", "height_fog.comp", "analytic_fog.comp", "vignette.comp",
-    "light_volume_unproject.frag", "light_volume_cells.frag", "light_volume_ends.frag", "light_volume_faces.vert",
-    "light_volume_surface.vert", "light_volume_faces.frag", "light_volume_resolve.frag", "atmosphere_sky.frag",
-    "atmosphere_sky_raymarch.frag", "aerial_perspective_apply_transmittance.frag", "aerial_perspective_apply_scattering.frag"};
-
 std::span<const uint32_t> spirv(std::string_view shader) {
   const std::span<const uint32_t> words = shader_spirv(shader);
   if (words.empty()) throw std::logic_error("no shader " + std::string(shader));
@@ -193,7 +180,7 @@ template <typename Mirror>
 std::vector<std::string> nested_errors(std::string_view glsl, std::string_view name, int& matched) {
   std::vector<std::string> errors;
   matched = 0;
-  for (const std::string_view shader : kShaders) {
+  for (const std::string_view shader : shader_spirv_names()) {  // every shader in shaders/
     const std::optional<rhi::UniformBlockLayout> layout = SpirvStructs(spirv(shader)).laid_out(glsl);
     if (!layout) continue;
     static constexpr auto offsets = Mirror::offsets();
