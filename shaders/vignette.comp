@@ -1,12 +1,14 @@
 #version 450
 // vignette (passes/post/vignette.cpp): the colour × mix(1, cos⁴θ, strength), θ the angle
 // between the pixel's ray (DESIGN.md's pixel convention) and the optical axis.
+#extension GL_GOOGLE_include_directive : require
+#include "include/vignette_params.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform texture2D color;
 layout(set = 0, binding = 1) uniform sampler nearest;
 layout(set = 0, binding = 2, rgba16f) uniform writeonly image2D vignetted;
-layout(set = 0, binding = 3) uniform VignetteParams { vec4 lens; } params;  // x tan(fov_y/2), y aspect, z strength
+layout(set = 0, binding = 3) uniform VignetteBlock { VignetteParams params; };
 
 void main() {
   const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy), size = imageSize(vignetted);

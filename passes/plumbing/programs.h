@@ -131,4 +131,16 @@ rhi::BufferId create_checked_uniform_block(rhi::Device& device, const Program& p
   return create_checked_uniform_block(device, program, block_variable.set, block_variable.binding, label, block);
 }
 
+// A uniform block that holds one struct written once for GLSL and C++ (gpu_struct.h:
+// `uniform VignetteBlock { VignetteParams params; };`): its layout was asserted at compile
+// time by the shader's bindings header; here the program's block at the variable's set and
+// binding is checked to be that one struct (one member, at 0, of its size), then made.
+template <typename Program, typename Shared>
+rhi::BufferId create_shared_uniform_block(rhi::Device& device, const Program& program, rhi::ShaderBinding block_variable,
+                                          const std::string& label, const Shared& block) {
+  static_assert(alignof(Shared) == 16, "a shared struct is declared with GPU_STRUCT (shaders/include/gpu_struct.h)");
+  check_wrapped_uniform_mirror<Shared>(program, block_variable, label);
+  return create_uniform_block(device, label, block);
+}
+
 }  // namespace volgraph::plumbing

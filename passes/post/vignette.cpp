@@ -9,7 +9,7 @@
 #include "graph/scene/scene.h"
 #include "passes/register_pass.h"
 #include "passes/plumbing/programs.h"
-#include "shaders/bindings/vignette.comp.h"
+#include "shaders/bindings/vignette.comp.h"  // with vignette_params.h and its layout checks
 
 namespace volgraph {
 namespace {
@@ -24,11 +24,6 @@ struct VignetteTable : PassTable {
   SlotHandle vignetted = output_like("vignetted", color, Usage::storage_write, "the radiance × mix(1, cos⁴θ, strength)");
 };
 
-struct GpuVignetteParams {  // vignette.comp's VignetteParams
-  float lens[4];            // tan(fov_y / 2), aspect, strength
-  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuVignetteParams, lens)}; }
-};
-
 class VignetteExecution final : public PassExecution {
  public:
   explicit VignetteExecution(const VignetteTable& table) : t_(table) {}
@@ -36,9 +31,9 @@ class VignetteExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "vignette.comp");
     const Extent frame = s.frame_size();
-    const GpuVignetteParams params{{float(std::tan(s.scene->camera.fov_y_deg * M_PI / 360.0)),
-                                    float(double(frame.width) / double(frame.height)), float(s.param(t_.strength)), 0}};
-    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 3, s.name() + " params", params);
+    const gpu::VignetteParams params{{float(std::tan(s.scene->camera.fov_y_deg * M_PI / 360.0)),
+                                      float(double(frame.width) / double(frame.height)), float(s.param(t_.strength)), 0}};
+    params_ = plumbing::create_shared_uniform_block(s.device, program_, vignette_shader::params, s.name() + " params", params);
   }
 
   void record(PassContext& c) override {
