@@ -188,11 +188,10 @@ void march(vec3 o, vec3 d, float t_in, float t_out, inout vec3 radiance, inout f
 }
 
 // No NaN or infinity leaves the pass: radiance in [0, half's largest], transmittance in [0, 1].
-vec3 finite_radiance(vec3 l) {
-  return vec3(isnan(l.r) ? 0.0 : clamp(l.r, 0.0, HALF_MAX), isnan(l.g) ? 0.0 : clamp(l.g, 0.0, HALF_MAX),
-              isnan(l.b) ? 0.0 : clamp(l.b, 0.0, HALF_MAX));
-}
-float finite_transmittance(float t) { return isnan(t) ? 1.0 : clamp(t, 0.0, 1.0); }
+// Ordered comparisons are false for NaN, so a NaN takes the fallback (WGSL has no isnan).
+float finite_in(float v, float hi, float fallback) { return (v >= 0.0 && v <= hi) ? v : (v > hi ? hi : fallback); }
+vec3 finite_radiance(vec3 l) { return vec3(finite_in(l.r, HALF_MAX, 0.0), finite_in(l.g, HALF_MAX, 0.0), finite_in(l.b, HALF_MAX, 0.0)); }
+float finite_transmittance(float t) { return finite_in(t, 1.0, t < 0.0 ? 0.0 : 1.0); }
 
 void main() {
   const ivec2 texel = ivec2(gl_GlobalInvocationID.xy), size = imageSize(clouds);
