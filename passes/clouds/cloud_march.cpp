@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
@@ -36,8 +37,10 @@ std::vector<ParamProblem> octave_problems(const PassDecl& decl, const Scene&, co
   const double a = std::get<double>(params[size_t(decl.param_index("a"))]);
   const double b = std::get<double>(params[size_t(decl.param_index("b"))]);
   if (a <= b) return {};
-  return {{"a", "a (" + std::to_string(a) + ") must not exceed b (" + std::to_string(b) +
-                    "): the octaves' extinction scale above their energy scale breaks energy conservation (Wrenninge et al. 2013)"}};
+  std::ostringstream message;
+  message << "a (" << a << ") must not exceed b (" << b
+          << "): the octaves' extinction scale above their energy scale breaks energy conservation (Wrenninge et al. 2013)";
+  return {{"a", message.str()}};
 }
 
 struct CloudMarchTable : PassTable {

@@ -157,7 +157,7 @@ TEST_P(CloudMarch, AAboveBIsRefused) {
     run(k);
     FAIL() << "a > b was accepted";
   } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("must not exceed b"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a (0.8) must not exceed b (0.5)"), std::string::npos) << e.what();
   }
 }
 
