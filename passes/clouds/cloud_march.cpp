@@ -1,0 +1,178 @@
+// cloud_march: the cloud layer drawn by a per-pixel ray march (Schneider & Vos 2015; RTR4
+// 14.4.2). Per pixel: the view ray against the layer's two spheres on the planet (the
+// atmosphere's radius, else Earth's 6,360 km), the segment inside the layer (clipped by
+// the scene's surface and `max_distance`) marched in `steps` equal steps with empty-space
+// skipping, the density of shaders/include/cloud_density.h on cloud_noise's textures
+// drifted by the wind, the sun's visibility by a secondary march of `light_steps`, the
+// lighting of shaders/include/cloud_lighting.h (dual-lobe HG, Wrenninge's octaves, the
+// optional powder term) plus the ambient radiance, integrated by Hillaire's step.
+// Outputs: `clouds` (rgb in-scattered radiance, a transmittance) and `transmittance` (the
+// transmittance in rgb), the pair fog_apply composites (fog_scattering ← clouds,
+// fog_transmittance ← transmittance). Shader: shaders/cloud_march.comp.
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <sstream>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "graph/execute/pass_execution.h"
+#include "graph/scene/scene.h"
+#include "passes/fog/fog_frame.h"
+#include "passes/plumbing/programs.h"
+#include "passes/register_pass.h"
+#include "shaders/bindings/cloud_march.comp.h"
+
+namespace volgraph {
+namespace {
+
+namespace cloud_march_shader = shaders::cloud_march_comp;
+
+constexpr double kEarthRadius = 6360e3;  // m: the planet without an atmosphere (DESIGN.md's units)
+constexpr double kFramesPerSecond = 60;  // the wind's clock: the graph has frames, not seconds
+
+// Wrenninge et al. 2013's energy condition a ≤ b (RTR4 14.4.2): refused with one message.
+std::vector<ParamProblem> octave_problems(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& params) {
+  const double a = std::get<double>(params[size_t(decl.param_index("a"))]);
+  const double b = std::get<double>(params[size_t(decl.param_index("b"))]);
+  if (a <= b) return {};
+  std::ostringstream message;
+  message << "a (" << a << ") must not exceed b (" << b
+          << "): the octaves' extinction scale above their energy scale breaks energy conservation (Wrenninge et al. 2013)";
+  return {{"a", message.str()}};
+}
+
+struct CloudMarchTable : PassTable {
+  CloudMarchTable()
+      : PassTable("cloud_march", PassKind::compute,
+                  "The cloud layer by a per-pixel ray march (Schneider & Vos 2015): in-scattered radiance and transmittance.") {
+    decl.needs = feature_bit(SceneFeature::clouds);
+    decl.check_scene = octave_problems;
+  }
+  // Variants.
+  VariantHandle march = variant("march", "the sun's visibility by a secondary march of light_steps toward it");
+  // Parameters.
+  ParamHandle<int64_t> steps = integer("steps", 64, 1, 1024, "", "equal steps over the ray's segment inside the layer");
+  ParamHandle<int64_t> light_steps = integer("light_steps", 6, 1, 64, "", "samples of the density toward the sun per step");
+  ParamHandle<double> light_distance = number("light_distance", 2000, 1, 1e5, "m", "how far toward the sun the light march reaches");
+  ParamHandle<int64_t> octaves = integer("octaves", 3, 1, 8, "", "Wrenninge's multiple-scattering octaves (1: single scattering)");
+  ParamHandle<double> a = number("a", 0.5, 0, 1, "", "each octave's optical-depth scale (a ≤ b)");
+  ParamHandle<double> b = number("b", 0.5, 0, 1, "", "each octave's energy scale");
+  ParamHandle<double> c = number("c", 0.5, 0, 1, "", "each octave's phase-anisotropy scale");
+  ParamHandle<double> g_forward = number("g_forward", 0.8, -0.998, 0.998, "", "the forward HG lobe's g");
+  ParamHandle<double> g_back = number("g_back", -0.3, -0.998, 0.998, "", "the backward HG lobe's g");
+  ParamHandle<double> back_weight = number("back_weight", 0.2, 0, 1, "", "the backward lobe's weight");
+  ParamHandle<bool> powder = flag("powder", false, "Schneider & Vos's powder term (not physical: darkens sunlit edges, adds energy inside)");
+  ParamHandle<double> max_distance = number("max_distance", 60000, 1, 1e7, "m", "how far along the view ray the march reaches");
+  ParamHandle<double> curl_strength = number("curl_strength", 0.1, 0, 1, "detail tiles", "how far the curl noise shifts the detail");
+  ParamHandle<std::array<double, 3>> ambient = vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the cloud scatters");
+  // Slots.
+  SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
+  SlotHandle shape = input("shape", ResourceKind::texture3d, Usage::sampled, "cloud_noise.shape");
+  SlotHandle detail = input("detail", ResourceKind::texture3d, Usage::sampled, "cloud_noise.detail");
+  SlotHandle curl = input("curl", ResourceKind::texture2d, Usage::sampled, "cloud_noise.curl");
+  SlotHandle clouds = output("clouds", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(),
+                             "rgb the layer's in-scattered radiance toward the camera, a the transmittance through it");
+  SlotHandle transmittance = output("transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
+                                    SizeSpec::of_output(), "the transmittance through the layer in rgb (fog_apply's fog_transmittance)");
+};
+
+struct GpuCloudMarchParams {  // cloud_march.comp's CloudMarchParams
+  float view_position[4], view_forward[4], view_right[4], view_up[4];
+  float sun[4], sun_irradiance[4], ambient[4];
+  float layer[4], cloud[4], scales[4], wind[4];
+  int32_t steps[4];
+  float octave[4], lobes[4];
+  static constexpr std::array<uint64_t, 14> offsets() {
+    using P = GpuCloudMarchParams;
+    return {offsetof(P, view_position), offsetof(P, view_forward), offsetof(P, view_right), offsetof(P, view_up),
+            offsetof(P, sun),           offsetof(P, sun_irradiance), offsetof(P, ambient),  offsetof(P, layer),
+            offsetof(P, cloud),         offsetof(P, scales),       offsetof(P, wind),       offsetof(P, steps),
+            offsetof(P, octave),        offsetof(P, lobes)};
+  }
+};
+
+void copy4(float (&to)[4], const float (&from)[4]) {
+  for (int i = 0; i < 4; ++i) to[i] = from[i];
+}
+
+// The scene's sun: the atmosphere's sun light, else its first directional light; none: -1.
+int sun_index(const Scene& scene) {
+  if (scene.atmosphere && scene.atmosphere->sun_light >= 0) return scene.atmosphere->sun_light;
+  for (size_t i = 0; i < scene.lights.size(); ++i)
+    if (scene.lights[i].type == LightType::directional) return int(i);
+  return -1;
+}
+
+class CloudMarchExecution final : public PassExecution {
+ public:
+  explicit CloudMarchExecution(const CloudMarchTable& table) : t_(table) {}
+
+  void setup(PassSetup& s) override {
+    program_ = plumbing::create_compute_program(s.device, "cloud_march.comp");
+    plumbing::check_uniform_mirror<GpuCloudMarchParams>(program_, cloud_march_shader::params, s.name() + " params");
+    params_ = s.device.create_buffer({s.name() + " params", sizeof(GpuCloudMarchParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+  }
+
+  void record(PassContext& c) override {
+    namespace shader = cloud_march_shader;
+    const GpuCloudMarchParams params = march_params(c);
+    c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
+    const rhi::BindGroupId group = c.bind_group(
+        program_, {bind(shader::params, params_), bind(shader::scene_depth, c.view(t_.depth)),
+                   bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(shader::shape, c.view(t_.shape)),
+                   bind(shader::detail, c.view(t_.detail)), bind(shader::curl, c.view(t_.curl)),
+                   bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)), bind(shader::clouds, c.view(t_.clouds)),
+                   bind(shader::cloud_transmittance, c.view(t_.transmittance))});
+    plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.clouds));
+  }
+
+ private:
+  GpuCloudMarchParams march_params(const PassContext& c) const {
+    const Scene& scene = *c.scene;
+    const CloudLayer& layer = *scene.clouds;
+    GpuCloudMarchParams p{};
+    const fog::GpuViewRays view = fog::pack_view_rays(scene.camera, c.extent(t_.clouds));
+    copy4(p.view_position, view.position);
+    copy4(p.view_forward, view.forward);
+    copy4(p.view_right, view.right);
+    copy4(p.view_up, view.up);
+    if (const int sun = sun_index(scene); sun >= 0) {
+      const Light& light = scene.lights[size_t(sun)];
+      const double n = std::sqrt(light.direction[0] * light.direction[0] + light.direction[1] * light.direction[1] +
+                                 light.direction[2] * light.direction[2]);
+      p.sun[0] = float(-light.direction[0] / n), p.sun[1] = float(-light.direction[1] / n), p.sun[2] = float(-light.direction[2] / n);
+      p.sun[3] = 1;
+      p.sun_irradiance[0] = float(light.irradiance[0]), p.sun_irradiance[1] = float(light.irradiance[1]);
+      p.sun_irradiance[2] = float(light.irradiance[2]);
+    }
+    const std::array<double, 3> ambient = c.param(t_.ambient);
+    for (int i = 0; i < 3; ++i) p.ambient[i] = float(ambient[size_t(i)]);
+    const double radius = scene.atmosphere ? scene.atmosphere->bottom_radius : kEarthRadius;
+    const double origin_altitude = scene.atmosphere ? scene.atmosphere->origin_altitude : 0;
+    p.layer[0] = float(layer.bottom_altitude), p.layer[1] = float(layer.top_altitude);
+    p.layer[2] = float(radius), p.layer[3] = float(origin_altitude);
+    p.cloud[0] = float(layer.coverage), p.cloud[1] = float(layer.type), p.cloud[2] = float(layer.extinction);
+    p.cloud[3] = float(c.param(t_.max_distance));
+    p.scales[0] = float(layer.shape_scale), p.scales[1] = float(layer.detail_scale);
+    p.scales[2] = float(c.param(t_.curl_strength)), p.scales[3] = float(c.param(t_.light_distance));
+    const double seconds = double(c.frame) / kFramesPerSecond;
+    p.wind[0] = float(layer.wind[0] * seconds), p.wind[1] = float(layer.wind[1] * seconds), p.wind[2] = float(layer.wind[2] * seconds);
+    p.steps[0] = int32_t(c.param(t_.steps)), p.steps[1] = int32_t(c.param(t_.light_steps)), p.steps[2] = int32_t(c.param(t_.octaves));
+    p.octave[0] = float(c.param(t_.a)), p.octave[1] = float(c.param(t_.b)), p.octave[2] = float(c.param(t_.c));
+    p.octave[3] = c.param(t_.powder) ? 1.0f : 0.0f;
+    p.lobes[0] = float(c.param(t_.g_forward)), p.lobes[1] = float(c.param(t_.g_back)), p.lobes[2] = float(c.param(t_.back_weight));
+    return p;
+  }
+
+  const CloudMarchTable& t_;
+  plumbing::ComputeProgram program_;
+  rhi::BufferId params_;
+};
+
+}  // namespace
+
+VOLGRAPH_REGISTER_PASS(CloudMarchTable, CloudMarchExecution);
+
+}  // namespace volgraph

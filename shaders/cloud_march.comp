@@ -1,0 +1,215 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// cloud_march (passes/clouds/cloud_march.cpp): per pixel, the view ray through the cloud
+// layer (Schneider & Vos 2015; RTR4 14.4.2): the segment between the layer's two spheres
+// (clipped by the scene's surface and max_distance), marched in `steps` equal steps with
+// empty-space skipping (coarse steps of 2 × the step on the base density until some is
+// found, then one coarse step back and fine steps), a secondary march of `light_steps`
+// toward the sun per fine sample, the lighting of shaders/include/cloud_lighting.h, and
+// Hillaire's energy-conserving step. Writes rgb the in-scattered radiance, a the
+// transmittance (and the transmittance again as rgb in a second image for fog_apply).
+#include "include/cloud_density.h"
+#include "include/cloud_lighting.h"
+#include "include/depth_buffer.glsl"
+#include "include/view_rays.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform CloudMarchParams {
+  vec4 view_position;   // xyz the camera; w its near plane (m)
+  vec4 view_forward;    // view_rays.glsl's rays; w the far plane (m)
+  vec4 view_right;
+  vec4 view_up;
+  vec4 sun;             // xyz toward the sun (unit); w 1 with a sun, 0 without
+  vec4 sun_irradiance;  // rgb W/m² on a surface facing the sun
+  vec4 ambient;         // rgb ambient radiance (W/(m²·sr)) the cloud scatters
+  vec4 layer;           // x bottom altitude, y top altitude, z planet radius, w the altitude of world y = 0 (m)
+  vec4 cloud;           // x coverage, y type, z extinction (1/m at density 1), w max_distance (m)
+  vec4 scales;          // x shape tile, y detail tile (m), z curl distortion (detail tiles), w light march length (m)
+  vec4 wind;            // xyz the noise's offset (m): wind × time
+  ivec4 steps;          // x steps, y light_steps, z octaves
+  vec4 octave;          // x a, y b, z c, w powder (0 off, 1 on)
+  vec4 lobes;           // x g_forward, y g_back, z back_weight
+} params;
+layout(set = 0, binding = 1) uniform texture2D scene_depth;
+layout(set = 0, binding = 2) uniform sampler nearest;
+layout(set = 0, binding = 3) uniform texture3D shape;
+layout(set = 0, binding = 4) uniform texture3D detail;
+layout(set = 0, binding = 5) uniform texture2D curl;
+layout(set = 0, binding = 6) uniform sampler noise;  // linear, repeat: the textures tile
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D clouds;
+layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D cloud_transmittance;
+
+const float NEGLIGIBLE = 1e-3;    // early termination: below this transmittance nothing behind shows (kept, not zeroed)
+const float HALF_MAX = 65504.0;   // rgba16f's largest value
+const int EMPTY_FINE_STEPS = 6;   // fine samples without cloud before the march goes coarse again
+
+// The planet's centre seen from the world's origin: straight below, the radius plus y = 0's altitude.
+vec3 planet_centre() { return vec3(0.0, -(params.layer.z + params.layer.w), 0.0); }
+
+// The altitude of p above the planet's sphere (m).
+float altitude(vec3 p) { return length(p - planet_centre()) - params.layer.z; }
+
+// Ray o + t·d (d unit) against the sphere of the planet's radius plus `sphere_altitude`,
+// from an origin at altitude `origin_altitude`: the two roots (t0 ≤ t1), or none (false).
+// c = |o|² − r² as (h_o − h_r)(|o| + r) and the roots by the stable quadratic: no
+// cancellation at the planet's scale in float.
+bool sphere_roots(vec3 o, vec3 d, float origin_altitude, float sphere_altitude, out float t0, out float t1) {
+  const vec3 oc = o - planet_centre();
+  const float r = params.layer.z + sphere_altitude;
+  const float b = dot(oc, d);
+  const float c = (origin_altitude - sphere_altitude) * (length(oc) + r);
+  const float disc = b * b - c;
+  if (disc < 0.0) return false;
+  const float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
+  const float ra = q, rb = (q != 0.0) ? c / q : 0.0;
+  t0 = min(ra, rb);
+  t1 = max(ra, rb);
+  return true;
+}
+
+// Whether the ray from o (at altitude h) along d meets the ground ahead.
+bool hits_ground(vec3 o, vec3 d, float h) {
+  float t0, t1;
+  return h >= 0.0 && sphere_roots(o, d, h, 0.0, t0, t1) && t1 > 0.0;
+}
+
+// The segment [t_in, t_out] of the ray inside the layer (the first one), or false.
+bool layer_segment(vec3 o, vec3 d, out float t_in, out float t_out) {
+  const float h = altitude(o), bottom = params.layer.x, top = params.layer.y;
+  float b0, b1, u0, u1;
+  const bool meets_bottom = sphere_roots(o, d, h, bottom, b0, b1);
+  const bool meets_top = sphere_roots(o, d, h, top, u0, u1);
+  if (h < bottom) {  // below: up through the bottom sphere, out through the top
+    if (hits_ground(o, d, h) || !meets_bottom || !meets_top) return false;
+    t_in = b1;
+    t_out = u1;
+  } else if (h <= top) {  // inside: to the bottom sphere ahead, else out through the top
+    t_in = 0.0;
+    t_out = (meets_bottom && b0 > 0.0) ? b0 : (meets_top ? u1 : 0.0);
+  } else {  // above: in through the top, out through the bottom (or the top again)
+    if (!meets_top || u0 <= 0.0) return false;
+    t_in = u0;
+    t_out = (meets_bottom && b0 > 0.0) ? b0 : u1;
+  }
+  return t_out > t_in;
+}
+
+// The noise's coordinates of p: horizontal position and altitude, drifted by the wind.
+vec3 noise_point(vec3 p) { return vec3(p.x, altitude(p), p.z) + params.wind.xyz; }
+
+// The base density only (the coarse steps' test; GPU Pro 7 §4.3.3).
+float base_density(vec3 p, float h) {
+  const vec4 s = texture(sampler3D(shape, noise), noise_point(p) / params.scales.x);
+  return cloud_base_density(s, h, params.cloud.x, params.cloud.y);
+}
+
+// The full density: the base eroded by the curl-distorted detail (GPU Pro 7 §4.3.4).
+float density(vec3 p) {
+  const float h = cloud_height_fraction(altitude(p), params.layer.x, params.layer.y);
+  const float base = base_density(p, h);
+  if (base <= 0.0) return 0.0;
+  const vec3 q = noise_point(p) / params.scales.y;
+  const vec2 swirl = texture(sampler2D(curl, noise), q.xz).xy * 2.0 - 1.0;
+  const vec4 d = texture(sampler3D(detail, noise), q + params.scales.z * vec3(swirl.x, 0.0, swirl.y) * (1.0 - h));
+  return cloud_eroded_density(base, d, h);
+}
+
+// The optical depth toward the sun from p: `light_steps` samples over the light march's
+// length, infinite where the ground hides the sun.
+float sun_optical_depth(vec3 p) {
+  const vec3 to_sun = params.sun.xyz;
+  if (hits_ground(p, to_sun, altitude(p))) return 1e30;
+  const int n = max(params.steps.y, 1);
+  const float ds = params.scales.w / float(n);
+  float tau = 0.0;
+  for (int j = 0; j < n; ++j) tau += cloud_extinction(params.cloud.z, density(p + (float(j) + 0.5) * ds * to_sun)) * ds;
+  return tau;
+}
+
+// Radiance per metre the cloud sends toward the camera at p (density > 0): the sun through
+// the phase and Wrenninge's octaves (RTR4 eq. 14.18), the powder term when on, and the
+// ambient radiance scattered isotropically (∫ p dω = 1).
+vec3 source(vec3 p, float rho, float cos_theta) {
+  const float sigma_s = cloud_scattering(params.cloud.z, rho);
+  vec3 s = params.ambient.rgb * sigma_s;
+  if (params.sun.w > 0.5) {
+    const float tau = sun_optical_depth(p);
+    if (tau < 1e29) {
+      const float lit = cloud_octaves(sigma_s, tau, cos_theta, params.lobes.x, params.lobes.y, params.lobes.z, params.steps.z,
+                                      params.octave.x, params.octave.y, params.octave.z) * cloud_powder(tau, params.octave.w);
+      s += params.sun_irradiance.rgb * lit;
+    }
+  }
+  return s;
+}
+
+// Hillaire 2015's energy-conserving step (RTR4 eq. 14.16) for a grey extinction.
+void integrate(inout vec3 radiance, inout float transmittance, vec3 s, float sigma_t, float dt) {
+  const float step_t = exp(-sigma_t * dt);
+  const vec3 s_int = sigma_t > 0.0 ? (s - s * step_t) / sigma_t : s * dt;
+  radiance += transmittance * s_int;
+  transmittance *= step_t;
+}
+
+// The march over [t_in, t_out]: coarse steps (2 × dt) on the base density until it is
+// non-zero, then one coarse step back and fine steps; back to coarse after
+// EMPTY_FINE_STEPS empty fine samples. Stops when the transmittance is negligible.
+void march(vec3 o, vec3 d, float t_in, float t_out, inout vec3 radiance, inout float transmittance) {
+  const int steps = max(params.steps.x, 1);
+  const float dt = (t_out - t_in) / float(steps);
+  const float cos_theta = dot(params.sun.xyz, d);  // the light's travel −sun against the scattered −d
+  float t = t_in;
+  bool coarse = true;
+  int empty = 0;
+  for (int i = 0; i < 4 * steps + 8 && t < t_out; ++i) {
+    if (coarse) {
+      const vec3 p = o + (t + dt) * d;  // the middle of a coarse step
+      if (base_density(p, cloud_height_fraction(altitude(p), params.layer.x, params.layer.y)) > 0.0) {
+        coarse = false;  // found: sample this coarse step again, finely
+        empty = 0;
+        continue;
+      }
+      t += 2.0 * dt;
+      continue;
+    }
+    const float h = min(dt, t_out - t);
+    const vec3 p = o + (t + 0.5 * h) * d;
+    const float rho = density(p);
+    if (rho > 0.0) {
+      empty = 0;
+      integrate(radiance, transmittance, source(p, rho, cos_theta), cloud_extinction(params.cloud.z, rho), h);
+      if (transmittance < NEGLIGIBLE) return;
+    } else if (++empty >= EMPTY_FINE_STEPS) {
+      coarse = true;
+    }
+    t += h;
+  }
+}
+
+// No NaN or infinity leaves the pass: radiance in [0, half's largest], transmittance in [0, 1].
+// Ordered comparisons are false for NaN, so a NaN takes the fallback (WGSL has no isnan).
+float finite_in(float v, float hi, float fallback) { return (v >= 0.0 && v <= hi) ? v : (v > hi ? hi : fallback); }
+vec3 finite_radiance(vec3 l) { return vec3(finite_in(l.r, HALF_MAX, 0.0), finite_in(l.g, HALF_MAX, 0.0), finite_in(l.b, HALF_MAX, 0.0)); }
+float finite_transmittance(float t) { return finite_in(t, 1.0, t < 0.0 ? 0.0 : 1.0); }
+
+void main() {
+  const ivec2 texel = ivec2(gl_GlobalInvocationID.xy), size = imageSize(clouds);
+  if (any(greaterThanEqual(texel, size))) return;
+  const ViewRays view = ViewRays(params.view_position, params.view_forward, params.view_right, params.view_up);
+  const vec3 ray = view_ray(view, grid_ndc(vec2(texel), vec2(0.0), vec2(size)));
+  const float ray_length = length(ray);
+  const vec3 d = ray / ray_length, o = params.view_position.xyz;
+  vec3 radiance = vec3(0.0);
+  float transmittance = 1.0;
+  float t_in, t_out;
+  if (params.cloud.x > 0.0 && layer_segment(o, d, t_in, t_out)) {
+    const float depth = covered_depth(scene_depth, nearest, texel, size);
+    const float surface = depth < 1.0 ? linear_view_depth(depth, params.view_position.w, params.view_forward.w) * ray_length : 3.0e38;
+    t_out = min(t_out, min(surface, params.cloud.w));
+    if (t_out > t_in) march(o, d, t_in, t_out, radiance, transmittance);
+  }
+  const float tr = finite_transmittance(transmittance);
+  imageStore(clouds, texel, vec4(finite_radiance(radiance), tr));
+  imageStore(cloud_transmittance, texel, vec4(tr, tr, tr, 1.0));
+}

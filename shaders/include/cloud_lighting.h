@@ -1,0 +1,67 @@
+// The cloud layer's lighting at a sample (Schneider & Vos 2015; RTR4 14.4.2): the
+// dual-lobe Henyey–Greenstein phase, Wrenninge et al. 2013's multiple-scattering octaves
+// (RTR4 eq. 14.18) and Schneider & Vos's optional, non-physical powder term.
+//
+// ONE TEXT FOR BOTH SIDES, as shaders/include/cloud_density.h: GLSL includes this file, and
+// C++ includes it inside a namespace with GLM's types (physics/cloud_lighting.h). The HG
+// lobe is phase.glsl's phase_hg on the GPU; phase.glsl itself cannot be compiled as C++
+// (unsuffixed double literals in max(float, 1e-30) do not deduce with GLM, and its
+// functions are not inline), so the C++ twin binds phase_hg to physics/phase.h's
+// phase_hg<float>, phase.glsl's documented twin (same formula, same base).
+#ifndef VOLGRAPH_CLOUD_LIGHTING_H
+#define VOLGRAPH_CLOUD_LIGHTING_H
+
+#ifndef CLOUD_FN
+#ifdef __cplusplus
+#define CLOUD_FN inline
+#else
+#define CLOUD_FN
+#endif
+#endif
+
+#ifndef __cplusplus
+#include "phase.glsl"
+#endif
+
+// The octave count's ceiling: the march's `octaves` parameter stays within it.
+#define CLOUD_MAX_OCTAVES 8
+
+// Two HG lobes mixed (Schneider & Vos 2015, "Silver lining" slides; RTR4 14.4.2):
+// mix(HG(g_forward), HG(g_back), back_weight). Normalised over the sphere for any weight in [0, 1].
+CLOUD_FN float cloud_phase(float cos_theta, float g_forward, float g_back, float back_weight) {
+  const float w = clamp(back_weight, 0.0f, 1.0f);
+  return mix(phase_hg(g_forward, cos_theta), phase_hg(g_back, cos_theta), w);
+}
+
+// Wrenninge et al. 2013's multiple-scattering approximation (RTR4 eq. 14.18): the sum over
+// i < octaves of b^i σs p(θ, c^i g) T(a^i τ), T(x) = exp(−x), τ the optical depth toward
+// the sun. octaves = 1 is single scattering σs p(θ, g) T(τ). a ≤ b is enforced (a above b
+// is read as b: Wrenninge's energy condition); a, b, c are clamped to [0, 1], octaves to
+// [1, CLOUD_MAX_OCTAVES]. Radiance per metre per unit sun illuminance.
+CLOUD_FN float cloud_octaves(float sigma_s, float tau, float cos_theta, float g_forward, float g_back, float back_weight,
+                             int octaves, float a, float b, float c) {
+  const float bb = clamp(b, 0.0f, 1.0f);
+  const float aa = min(clamp(a, 0.0f, 1.0f), bb);
+  const float cc = clamp(c, 0.0f, 1.0f);
+  const int n = clamp(octaves, 1, CLOUD_MAX_OCTAVES);
+  const float t = max(tau, 0.0f);
+  const float s = max(sigma_s, 0.0f);
+  float sum = 0.0f;
+  float weight = 1.0f, depth = 1.0f, spread = 1.0f;  // b^i, a^i, c^i
+  for (int i = 0; i < n; ++i) {
+    sum += weight * s * cloud_phase(cos_theta, spread * g_forward, spread * g_back, back_weight) * exp(-depth * t);
+    weight *= bb;
+    depth *= aa;
+    spread *= cc;
+  }
+  return sum;
+}
+
+// Schneider & Vos 2015's "powder" darkening of edges that face the sun: 2 (1 − exp(−2τ))
+// multiplies the sun's term. NOT PHYSICAL: it is an art term (it reaches 2 inside thick
+// cloud, so it breaks the energy bound); off by default, `on` 0 leaves the factor 1.
+CLOUD_FN float cloud_powder(float tau, float on) {
+  return mix(1.0f, 2.0f * (1.0f - exp(-2.0f * max(tau, 0.0f))), clamp(on, 0.0f, 1.0f));
+}
+
+#endif
