@@ -20,7 +20,7 @@
 namespace volgraph {
 namespace {
 
-struct Run {
+struct CommandRun {
   int exit_code = -1;
   std::string errors;  // stderr
 };
@@ -32,7 +32,7 @@ std::filesystem::path scratch() {
 }
 
 // Runs `volgraph ARGS` (with `env` before it, e.g. "env -u DISPLAY"), stdout dropped.
-Run volgraph(const std::string& args, const std::string& env = "") {
+CommandRun volgraph(const std::string& args, const std::string& env = "") {
   const std::filesystem::path errors = scratch() / "stderr.txt";
   const std::string command = env + " " + VOLGRAPH_BINARY + " " + args + " >/dev/null 2>" + errors.string();
   const int status = std::system(command.c_str());
@@ -53,15 +53,15 @@ std::vector<float> png_texels(const std::filesystem::path& file, int& width, int
   return out;
 }
 
-std::string config(const std::string& name) { return source_dir() + "/configs/" + name; }
+std::string config(const std::string& name) { return testing::source_dir() + "/configs/" + name; }
 
 TEST(Viewer, ScreenshotMatchesTheHeadlessRender) {
   const std::filesystem::path rendered = scratch() / "render.png", shown = scratch() / "view.png";
   std::filesystem::remove(shown);
   const std::string common = config("demo_fog.json") + " --size 160x90 --frames 3 --validation";
-  const Run render = volgraph("render " + common + " -o " + rendered.string());
+  const CommandRun render = volgraph("render " + common + " -o " + rendered.string());
   ASSERT_EQ(render.exit_code, 0) << render.errors;
-  const Run view = volgraph("view " + common + " --screenshot " + shown.string());
+  const CommandRun view = volgraph("view " + common + " --screenshot " + shown.string());
   ASSERT_EQ(view.exit_code, 0) << view.errors;
   EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
   int w = 0, h = 0, rw = 0, rh = 0;
@@ -81,25 +81,25 @@ TEST(Viewer, ScreenshotMatchesTheHeadlessRender) {
 TEST(Viewer, BadConfigExitsTwoBeforeAnyWindow) {
   const std::filesystem::path bad = scratch() / "bad.json";
   std::ofstream(bad) << "{ \"graph\": ";
-  const Run render = volgraph("render " + bad.string() + " -o " + (scratch() / "never.png").string());
-  const Run view = volgraph("view " + bad.string(), "env -u DISPLAY -u WAYLAND_DISPLAY");
+  const CommandRun render = volgraph("render " + bad.string() + " -o " + (scratch() / "never.png").string());
+  const CommandRun view = volgraph("view " + bad.string(), "env -u DISPLAY -u WAYLAND_DISPLAY");
   EXPECT_EQ(view.exit_code, 2);
   EXPECT_EQ(render.exit_code, 2);
   EXPECT_EQ(view.errors, render.errors);
-  const Run missing = volgraph("view " + (scratch() / "missing.json").string(), "env -u DISPLAY -u WAYLAND_DISPLAY");
+  const CommandRun missing = volgraph("view " + (scratch() / "missing.json").string(), "env -u DISPLAY -u WAYLAND_DISPLAY");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.errors.find("missing.json"), std::string::npos) << missing.errors;
   EXPECT_EQ(missing.errors.find("display"), std::string::npos) << missing.errors;
 }
 
 TEST(Viewer, NoDisplayExitsTwoWithOneMessage) {
-  const Run view = volgraph("view " + config("demo_fog.json") + " --size 160x90 --frames 1", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  const CommandRun view = volgraph("view " + config("demo_fog.json") + " --size 160x90 --frames 1", "env -u DISPLAY -u WAYLAND_DISPLAY");
   EXPECT_EQ(view.exit_code, 2);
   EXPECT_NE(view.errors.find("no display"), std::string::npos) << view.errors;
 }
 
 TEST(Viewer, WebGpuSurfaceIsNotWrittenYet) {
-  const Run view = volgraph("view " + config("demo_fog.json") + " --backend webgpu --frames 1");
+  const CommandRun view = volgraph("view " + config("demo_fog.json") + " --backend webgpu --frames 1");
   EXPECT_EQ(view.exit_code, 2);
   EXPECT_NE(view.errors.find("view: the WebGPU backend's window surface is not written yet"), std::string::npos) << view.errors;
 }
