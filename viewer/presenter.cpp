@@ -212,7 +212,7 @@ void Presenter::record_copy(VkImage image, bool read_back) {
 bool Presenter::present(const std::vector<uint8_t>& rgba8, std::vector<uint8_t>* presented) {
   const size_t texels = size_t(extent_.width) * extent_.height;
   if (rgba8.size() != texels * 4) throw std::invalid_argument("Presenter::present: the texels do not match the swapchain's size");
-  if (presented && !readback_.buffer) presented = nullptr;
+  if (!readable()) presented = nullptr;
   uint32_t index = 0;
   const VkResult acquired = vkAcquireNextImageKHR(context_.device(), swapchain_, UINT64_MAX, acquired_, VK_NULL_HANDLE, &index);
   if (acquired == VK_ERROR_OUT_OF_DATE_KHR) return false;

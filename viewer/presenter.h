@@ -26,11 +26,13 @@ class Presenter {
   Presenter& operator=(const Presenter&) = delete;
 
   VkExtent2D extent() const { return extent_; }
+  // The swapchain's images can be copied from (TRANSFER_SRC): present() can read one back.
+  bool readable() const { return readback_.buffer != VK_NULL_HANDLE; }
   // A new swapchain for a window of `window` pixels (resized or out of date).
   void recreate(VkExtent2D window);
   // Copies `rgba8` (extent()'s size, RGBA rows top first) into the next swapchain image and
   // presents it; when `presented` is given, the image as presented is also read back into
-  // it (RGBA8; left untouched where the images cannot be copied from). Returns false,
+  // it (RGBA8; ignored unless readable()). Returns false,
   // presenting nothing, when the swapchain is out of date.
   bool present(const std::vector<uint8_t>& rgba8, std::vector<uint8_t>* presented);
   // The last present found the swapchain suboptimal or out of date: recreate it.

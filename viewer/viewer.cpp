@@ -135,14 +135,16 @@ class Loop {
         continue;
       }
       const bool last = options_.frames > 0 && rendered_ + 1 == options_.frames;
-      if (!frame(last && !options_.screenshot.empty())) {
+      // Until the window closes, any frame may be the last: each is read back for --screenshot.
+      const bool keep = !options_.screenshot.empty() && (last || options_.frames == 0);
+      if (!frame(keep)) {
         events.resized = true;
         continue;
       }
       if (last) break;
       glfwPollEvents();
     }
-    if (!options_.screenshot.empty() && !shot_.empty()) write_screenshot(options_.screenshot, presenter_.extent(), shot_);
+    if (!options_.screenshot.empty() && !shot_.empty()) write_screenshot(options_.screenshot, shot_extent_, shot_);
   }
 
  private:
@@ -174,8 +176,10 @@ class Loop {
   bool frame(bool screenshot) {
     executor_->run_frame();
     const std::vector<uint8_t> texels = srgb8(executor_->read_output(0));
-    if (!presenter_.present(texels, screenshot ? &shot_ : nullptr)) return false;
-    if (screenshot && shot_.empty()) shot_ = texels;  // images not copyable: the bytes presented
+    std::vector<uint8_t>* read_back = screenshot && presenter_.readable() ? &shot_ : nullptr;
+    if (!presenter_.present(texels, read_back)) return false;
+    if (screenshot) shot_extent_ = presenter_.extent();
+    if (screenshot && !read_back) shot_ = texels;  // swapchain images not copyable from: the bytes presented
     ++rendered_;
     ++settled_;
     return true;
@@ -190,7 +194,8 @@ class Loop {
   std::unique_ptr<Executor> executor_;
   int rendered_ = 0;
   int settled_ = 0;
-  std::vector<uint8_t> shot_;
+  std::vector<uint8_t> shot_;  // the last presented image, for --screenshot
+  VkExtent2D shot_extent_{};
 };
 
 }  // namespace
