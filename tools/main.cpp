@@ -401,7 +401,12 @@ int run_reference(const Args& args, const PassRegistry& registry) {
 // view CONFIG: the config checked and compiled as `render` does (its errors, exit 2,
 // before any window), then the window (viewer/).
 int run_view(const Args& args, const PassRegistry& registry) {
-  if (args.backend == "webgpu") return bad_usage("view: the WebGPU backend's window surface is not written yet; use --backend vulkan");
+  // Not the command line's fault: one line, without bad_usage's pointer to --help.
+  auto setup_missing = [](const std::string& message) {
+    std::cerr << "volgraph: " << message << "\n";
+    return kBadInput;
+  };
+  if (args.backend == "webgpu") return setup_missing("view: the WebGPU backend's window surface is not written yet; use --backend vulkan");
   if (!args.screenshot.empty()) {
     if (image_format_for(args.screenshot) != ImageFormat::png) {
       throw UsageError("--screenshot " + args.screenshot + ": expected a .png file name");
@@ -420,7 +425,7 @@ int run_view(const Args& args, const PassRegistry& registry) {
   try {
     return viewer::run(loaded, options);
   } catch (const viewer::NoDisplay& e) {
-    return bad_usage(e.what());
+    return setup_missing(e.what());
   }
 }
 

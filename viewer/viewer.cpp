@@ -158,6 +158,7 @@ class Loop {
       resize(loaded_.graph, size);
     }
     executor_ = std::make_unique<Executor>(device_, loaded_.graph, &loaded_.config.scene, options_.compile);
+    executor_->set_gpu_timing(false);  // nothing shows pass times yet (no overlay): frames without time stamps
     settled_ = 0;
   }
 

@@ -3,6 +3,7 @@
 // metric; bad input said before any window opens; no display said clearly.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -96,12 +97,24 @@ TEST(Viewer, NoDisplayExitsTwoWithOneMessage) {
   const CommandRun view = volgraph("view " + config("demo_fog.json") + " --size 160x90 --frames 1", "env -u DISPLAY -u WAYLAND_DISPLAY");
   EXPECT_EQ(view.exit_code, 2);
   EXPECT_NE(view.errors.find("no display"), std::string::npos) << view.errors;
+  EXPECT_EQ(std::count(view.errors.begin(), view.errors.end(), '\n'), 1) << view.errors;
+}
+
+// --screenshot names a PNG: said before the config is read or a window opens.
+TEST(Viewer, ScreenshotOtherThanPngExitsTwo) {
+  const std::filesystem::path shot = scratch() / "shot.exr";
+  const CommandRun view = volgraph("view " + config("demo_fog.json") + " --frames 1 --screenshot " + shot.string(),
+                                   "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(view.exit_code, 2);
+  EXPECT_NE(view.errors.find("expected a .png"), std::string::npos) << view.errors;
+  EXPECT_FALSE(std::filesystem::exists(shot));
 }
 
 TEST(Viewer, WebGpuSurfaceIsNotWrittenYet) {
   const CommandRun view = volgraph("view " + config("demo_fog.json") + " --backend webgpu --frames 1");
   EXPECT_EQ(view.exit_code, 2);
   EXPECT_NE(view.errors.find("view: the WebGPU backend's window surface is not written yet"), std::string::npos) << view.errors;
+  EXPECT_EQ(std::count(view.errors.begin(), view.errors.end(), '\n'), 1) << view.errors;
 }
 
 }  // namespace
