@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages volgraph builds and tests with, when any is missing:
 # chromium loads the A/B reports in the browser test, GNU parallel runs emitted sweep
-# jobs, rsvg-convert (librsvg2-bin) turns a sweep's SVG plot into its PNG.
+# jobs, rsvg-convert (librsvg2-bin) turns a sweep's SVG plot into its PNG; GLFW opens
+# `volgraph view`'s window, which its tests open under xvfb-run (xvfb, xauth).
 # Idempotent: a few dpkg queries when everything is there.
 set -euo pipefail
 
@@ -13,6 +14,7 @@ packages=(
   libstb-dev libopenexr-dev libtinygltf-dev
   libglm-dev libcli11-dev libspirv-cross-c-shared-dev
   chromium parallel librsvg2-bin
+  libglfw3-dev xvfb xauth
 )
 # Dawn refuses bookworm's lavapipe (Mesa 22); Mesa 25 comes from bookworm-backports.
 backports=(mesa-vulkan-drivers)

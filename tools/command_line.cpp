@@ -34,6 +34,8 @@ commands:
                                --size, --runs, --warmup, --backend, --reference override the spec's
   tune SPEC --max-error X -o DIR  the fastest point with its error (--metric, default the spec's) ≤ X:
                                DIR/tuned.json (a config including the swept one) and the flags
+  view CONFIG                  the graph in a window (docs/viewer.md): --size WxH, --backend vulkan,
+                               --device N, --validation, --frames N (then exit), --screenshot FILE.png; ESC quits
   passes                       the pass types with their variants, parameters and slots
   devices                      the Vulkan devices (index for --device N; lavapipe is the default)
   test                         run the whole test suite (handled by tools/volgraph)
@@ -195,6 +197,14 @@ void render_options(CLI::App& app, Args& args) {
   value_option(app, "--timings-out", [&](const std::string& v) { once(args.timings_out, "--timings-out", v); });
   flag(app, "--validation", [&] { args.validation = true; });
   value_option(app, "--dump", [&](const std::string& v) { args.dumps.push_back(v); });
+}
+
+void view_options(CLI::App& app, Args& args) {
+  value_option(app, "--backend", [&](const std::string& v) { args.backend = backend_value(v); });
+  value_option(app, "--device", [&](const std::string& v) { args.device = whole_number("--device", v, 0); });
+  value_option(app, "--frames", [&](const std::string& v) { args.view_frames = whole_number("--frames", v, 1); });
+  flag(app, "--validation", [&] { args.validation = true; });
+  value_option(app, "--screenshot", [&](const std::string& v) { once(args.screenshot, "--screenshot", v); });
 }
 
 void reference_options(CLI::App& app, Args& args) {

@@ -37,6 +37,7 @@
 #include "reference/media.h"
 #include "reference/atmosphere_reference.h"
 #include "reference/renderer.h"
+#include "viewer/viewer.h"
 
 namespace volgraph {
 namespace {
@@ -397,6 +398,43 @@ int run_reference(const Args& args, const PassRegistry& registry) {
   return reference_render(args, load(args, registry));
 }
 
+// view CONFIG: the config checked and compiled as `render` does (its errors, exit 2,
+// before any window), then the window (viewer/).
+int run_view(const Args& args, const PassRegistry& registry) {
+  // Not the command line's fault: one line, without bad_usage's pointer to --help.
+  auto setup_missing = [](const std::string& message) {
+    std::cerr << "volgraph: " << message << "\n";
+    return kBadInput;
+  };
+  if (args.backend == "webgpu") return setup_missing("view: the WebGPU backend's window surface is not written yet; use --backend vulkan");
+  if (!args.screenshot.empty()) {
+    if (image_format_for(args.screenshot) != ImageFormat::png) {
+      throw UsageError("--screenshot " + args.screenshot + ": expected a .png file name");
+    }
+    check_output_target(args.screenshot, "--screenshot");
+  }
+  LoadedConfig loaded = load(args, registry);
+  compile_loaded(loaded, args.compile);
+  viewer::ViewOptions options;
+  options.frames = args.view_frames;
+  options.screenshot = args.screenshot;
+  options.validation = args.validation;
+  options.device = args.device;
+  options.compile = args.compile;
+  options.title = "volgraph view " + args.config;
+  try {
+    return viewer::run(loaded, options);
+  } catch (const viewer::NoDisplay& e) {
+    return setup_missing(e.what());
+  }
+}
+
+void declare_view(CLI::App& app, Args& args) {
+  config_argument(app, args);
+  graph_options(app, args);
+  view_options(app, args);
+}
+
 // passes and devices take no arguments and no options: a word after them is bad input.
 void no_arguments(CLI::App&, Args&) {}
 void check_no_arguments(const Args& args) {
@@ -450,6 +488,7 @@ constexpr Command kCommands[] = {
     {"ab", declare_ab, run_ab},
     {"sweep", declare_sweep, run_sweep_command},
     {"tune", declare_tune, run_tune},
+    {"view", declare_view, run_view},
 };
 
 // --device N names a device that exists: an index past the last one is bad input, said
@@ -466,7 +505,7 @@ void check_device_index(const Args& args) {
 }
 
 int run(const Args& args, const PassRegistry& registry) {
-  for (const char* uses_device : {"render", "ab", "sweep", "tune"}) {
+  for (const char* uses_device : {"render", "ab", "sweep", "tune", "view"}) {
     if (args.command == uses_device) check_device_index(args);
   }
   for (const Command& command : kCommands) {

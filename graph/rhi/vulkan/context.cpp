@@ -102,9 +102,9 @@ std::vector<DeviceInfo> Context::list_devices() {
 std::unique_ptr<Context> Context::create(const ContextOptions& options) {
   std::unique_ptr<Context> c(new Context());
   c->simulate_ = options.simulate;
-  c->create_instance(options.validation);
+  c->create_instance(options.validation, options.instance_extensions);
   c->pick_device(options.device_index);
-  c->create_device();
+  c->create_device(options.device_extensions);
   return c;
 }
 
@@ -119,7 +119,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::on_message(VkDebugUtilsMessageSeverityFl
   return VK_FALSE;
 }
 
-void Context::create_instance(bool validation) {
+void Context::create_instance(bool validation, const std::vector<const char*>& extra_extensions) {
   if (validation && !has_layer(kValidationLayer)) {
     throw DeviceError(DeviceError::Kind::unsupported,
                       "validation requested, but VK_LAYER_KHRONOS_validation is not installed (Debian: vulkan-validationlayers)");
@@ -135,6 +135,7 @@ void Context::create_instance(bool validation) {
   std::vector<const char*> layers, extensions;
   if (validation) layers.push_back(kValidationLayer);
   if (debug_utils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  extensions.insert(extensions.end(), extra_extensions.begin(), extra_extensions.end());
 
   // Synchronization validation, and the messenger for messages during vkCreateInstance.
   const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
@@ -197,7 +198,7 @@ void Context::pick_device(int index) {
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
-void Context::create_device() {
+void Context::create_device(const std::vector<const char*>& extra_extensions) {
   VkPhysicalDeviceVulkan13Features have13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   VkPhysicalDeviceFeatures2 have{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &have13};
   vkGetPhysicalDeviceFeatures2(physical_, &have);
@@ -232,6 +233,8 @@ void Context::create_device() {
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &want12};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue;
+  info.enabledExtensionCount = uint32_t(extra_extensions.size());
+  info.ppEnabledExtensionNames = extra_extensions.data();
   check(vkCreateDevice(physical_, &info, nullptr, &device_), "vkCreateDevice");
   vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
 

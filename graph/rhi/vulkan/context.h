@@ -26,6 +26,10 @@ struct ContextOptions {
   bool validation = false;       // VK_LAYER_KHRONOS_validation, synchronization validation included
   int device_index = -1;         // -1: lavapipe when present, else the first Vulkan 1.3 device
   SimulatedFault simulate = SimulatedFault::none;
+  // Beyond volgraph's own: what a window needs (viewer/: the surface's instance
+  // extensions from GLFW, VK_KHR_swapchain on the device).
+  std::vector<const char*> instance_extensions;
+  std::vector<const char*> device_extensions;
 };
 
 struct DeviceInfo {
@@ -82,9 +86,9 @@ class Context {
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                    VkDebugUtilsMessageTypeFlagsEXT types,
                                                    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
-  void create_instance(bool validation);
+  void create_instance(bool validation, const std::vector<const char*>& extra_extensions);
   void pick_device(int index);
-  void create_device();
+  void create_device(const std::vector<const char*>& extra_extensions);
 
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
