@@ -40,8 +40,8 @@ class CompositeExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "composite.comp");
     const Extent size = s.extent(t_.output_slot);
-    const GpuCompositeParams params{{size.width, size.height}, float(s.param(t_.exposure)), s.variant().shader_code};
-    params_ = plumbing::create_checked_uniform_block(s.device, program_, composite_shader::params, s.name() + " params", params);
+    const gpu::CompositeParams params{{size.width, size.height}, float(s.param(t_.exposure)), s.variant().shader_code};
+    params_ = plumbing::create_shared_uniform_block(s.device, program_, composite_shader::params, s.name() + " params", params);
   }
 
   void record(PassContext& c) override {

@@ -18,17 +18,6 @@
 
 namespace volgraph {
 
-// composite.comp's CompositeParams.
-struct GpuCompositeParams {
-  uint32_t size[2];
-  float exposure_ev;
-  int32_t tone_map_op;
-  static constexpr std::array<uint64_t, 3> offsets() {
-    return {offsetof(GpuCompositeParams, size), offsetof(GpuCompositeParams, exposure_ev),
-            offsetof(GpuCompositeParams, tone_map_op)};
-  }
-};
-
 // The scene pass's Frame (shaders/include/scene_uniforms.glsl).
 struct GpuSceneFrame {
   float view_projection[16];
@@ -43,41 +32,6 @@ struct GpuSceneFrame {
 
 // The scene pass's `frame` output: GpuSceneFrame, padded to 256 bytes.
 constexpr uint64_t kSceneFrameBytes = (sizeof(GpuSceneFrame) + 255) / 256 * 256;
-
-// depth_fog.comp's Params.
-struct GpuDepthFogParams {
-  float fog[4];    // start (m), end (m), density (1/m), the variant's DEPTH_FOG_* code
-  float color[4];  // rgb: the fog's radiance
-  static constexpr std::array<uint64_t, 2> offsets() { return {offsetof(GpuDepthFogParams, fog), offsetof(GpuDepthFogParams, color)}; }
-};
-
-// scatter_integrate.comp's Params.
-struct GpuIntegrateParams {
-  int32_t method[4];  // x: the variant's INTEGRATE_* code
-  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuIntegrateParams, method)}; }
-};
-
-// The atmosphere LUT passes' Params (shaders/atmosphere_*_lut.comp).
-struct GpuAtmosphereLutParams {
-  int32_t panels[4];  // x: Gauss–Legendre panels along each ray
-  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuAtmosphereLutParams, panels)}; }
-};
-
-// atmosphere_multiscattering_lut.comp's Params.
-struct GpuMultiscatteringLutParams {
-  int32_t sampling[4];  // x: directions per axis (x² in all), y: steps a ray
-  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuMultiscatteringLutParams, sampling)}; }
-};
-
-// atmosphere_skyview_lut.comp's Params.
-struct GpuSkyViewLutParams {
-  float camera[4];    // x: the camera's radius (m, at most the top's), y: the sun's zenith cosine there
-  float sampling[4];  // min and max samples a ray, the length (m) from which rays take the max, multiple scattering (1) or not (0)
-  float placement[4];  // x: where in its step each sample sits
-  static constexpr std::array<uint64_t, 3> offsets() {
-    return {offsetof(GpuSkyViewLutParams, camera), offsetof(GpuSkyViewLutParams, sampling), offsetof(GpuSkyViewLutParams, placement)};
-  }
-};
 
 // The sky pass's frame (shaders/include/atmosphere_sky_frame.glsl SkyPassFrame, the only
 // member of every variant's Frame block).
@@ -123,19 +77,6 @@ struct GpuAerialLookup {
 // Bytes of atmosphere_aerial_perspective's `lookup` buffer (the block rounded up to 256).
 constexpr uint64_t kAerialLookupBytes = (sizeof(GpuAerialLookup) + 255) / 256 * 256;
 
-// opacity_shadow_map.comp's Params.
-struct GpuOpacityParams {
-  int32_t steps[4];    // x per layer, y toward the light from the column's start
-  float distances[4];  // x the march toward a directional light (m)
-  static constexpr std::array<uint64_t, 2> offsets() { return {offsetof(GpuOpacityParams, steps), offsetof(GpuOpacityParams, distances)}; }
-};
-
-// fog_apply's Frame (shaders/include/fog_image_lookup.glsl, fog_image_lookup_depth_aware.glsl).
-struct GpuFogApplyFrame {
-  float size[4];  // the colour's width and height (pixels), the camera's near and far (m)
-  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuFogApplyFrame, size)}; }
-};
-
 // light_volume.glsl's LightVolumeParams, the one member of the light_volume shaders'
 // Params block (plumbing::check_wrapped_uniform_mirror).
 struct GpuLightVolumeParams {
@@ -143,31 +84,6 @@ struct GpuLightVolumeParams {
   int32_t sizes[4];
   static constexpr std::array<uint64_t, 2> offsets() {
     return {offsetof(GpuLightVolumeParams, camera_clip), offsetof(GpuLightVolumeParams, sizes)};
-  }
-};
-
-// froxel_scatter_body.glsl's Params (froxel_scatter.comp and its shadowed variants).
-// passes/fog/froxel_scatter.cpp still declares its own copy; it is to use this one.
-struct GpuFroxelScatterParams {
-  int32_t modes[4];     // phase code, skip empty
-  float lobes[4];       // dual_hg: g_back, w_forward
-  float volumetric[4];  // shadow steps, shadow distance
-  static constexpr std::array<uint64_t, 3> offsets() {
-    return {offsetof(GpuFroxelScatterParams, modes), offsetof(GpuFroxelScatterParams, lobes),
-            offsetof(GpuFroxelScatterParams, volumetric)};
-  }
-};
-
-// raymarch_fog_body.glsl's Params (raymarch_fog.comp, raymarch_fog_shadowed.comp).
-struct GpuRaymarchParams {
-  int32_t steps[4];
-  float distances[4];
-  float jitter[4];
-  int32_t modes[4];  // phase code
-  float lobes[4];    // dual_hg: g_back, w_forward
-  static constexpr std::array<uint64_t, 5> offsets() {
-    return {offsetof(GpuRaymarchParams, steps), offsetof(GpuRaymarchParams, distances), offsetof(GpuRaymarchParams, jitter),
-            offsetof(GpuRaymarchParams, modes), offsetof(GpuRaymarchParams, lobes)};
   }
 };
 

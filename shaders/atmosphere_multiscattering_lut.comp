@@ -4,13 +4,12 @@
 // linear mapping, include/atmosphere_lut.glsl) and Ψ_ms there
 // (include/atmosphere_multiscattering.glsl).
 #include "include/atmosphere_multiscattering.glsl"
+#include "include/multiscattering_lut_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
-layout(set = 0, binding = 1) uniform Params {
-  ivec4 sampling;  // x: directions per axis, y: steps a ray
-} params;
+layout(set = 0, binding = 1) uniform MultiscatteringLutParamsBlock { MultiscatteringLutParams params; };
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D multiscattering_lut;

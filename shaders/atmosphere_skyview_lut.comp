@@ -4,15 +4,12 @@
 // (Hillaire 2020's latitude/azimuth mapping, include/atmosphere_lut.glsl) and the light
 // scattered toward the camera along it (include/atmosphere_sky.glsl).
 #include "include/atmosphere_sky.glsl"
+#include "include/skyview_lut_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
-layout(set = 0, binding = 1) uniform Params {
-  vec4 camera;    // x: radius, y: the sun's zenith cosine, z: 1 when there is a sun
-  vec4 sampling;  // min samples, max samples, the length taking the max (m), multiple scattering (1)
-  vec4 placement;  // x: where in its step each sample sits
-} params;
+layout(set = 0, binding = 1) uniform SkyViewLutParamsBlock { SkyViewLutParams params; };
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4) uniform texture2D multiscattering;

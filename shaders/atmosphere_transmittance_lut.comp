@@ -5,13 +5,12 @@
 // top of the atmosphere (include/atmosphere.glsl: Gauss–Legendre panels).
 #include "include/atmosphere.glsl"
 #include "include/atmosphere_lut.glsl"
+#include "include/transmittance_lut_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
-layout(set = 0, binding = 1) uniform Params {
-  ivec4 panels;  // x: Gauss–Legendre panels along each ray
-} params;
+layout(set = 0, binding = 1) uniform TransmittanceLutParamsBlock { TransmittanceLutParams params; };
 layout(set = 0, binding = 2, rgba32f) uniform writeonly image2D transmittance;
 
 void main() {

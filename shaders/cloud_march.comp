@@ -12,25 +12,11 @@
 #include "include/cloud_lighting.h"
 #include "include/depth_buffer.glsl"
 #include "include/view_rays.glsl"
+#include "include/cloud_march_params.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform CloudMarchParams {
-  vec4 view_position;   // xyz the camera; w its near plane (m)
-  vec4 view_forward;    // view_rays.glsl's rays; w the far plane (m)
-  vec4 view_right;
-  vec4 view_up;
-  vec4 sun;             // xyz toward the sun (unit); w 1 with a sun, 0 without
-  vec4 sun_irradiance;  // rgb W/m² on a surface facing the sun
-  vec4 ambient;         // rgb ambient radiance (W/(m²·sr)) the cloud scatters
-  vec4 layer;           // x bottom altitude, y top altitude, z planet radius, w the altitude of world y = 0 (m)
-  vec4 cloud;           // x coverage, y type, z extinction (1/m at density 1), w max_distance (m)
-  vec4 scales;          // x shape tile, y detail tile (m), z curl distortion (detail tiles), w light march length (m)
-  vec4 wind;            // xyz the noise's offset (m): wind × time
-  ivec4 steps;          // x steps, y light_steps, z octaves
-  vec4 octave;          // x a, y b, z c, w powder (0 off, 1 on)
-  vec4 lobes;           // x g_forward, y g_back, z back_weight
-} params;
+layout(set = 0, binding = 0) uniform CloudMarchParamsBlock { CloudMarchParams params; };
 layout(set = 0, binding = 1) uniform texture2D scene_depth;
 layout(set = 0, binding = 2) uniform sampler nearest;
 layout(set = 0, binding = 3) uniform texture3D shape;

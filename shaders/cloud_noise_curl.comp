@@ -3,10 +3,11 @@
 // cloud_noise (passes/clouds/cloud_noise.cpp): the curl texture, one texel an invocation, at
 // its texel centre (shaders/include/cloud_noise.h: the text the CPU twin compiles too).
 #include "include/cloud_noise.h"
+#include "include/cloud_noise_params.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform CloudNoiseParams { uvec4 seed; } params;  // x: the seed
+layout(set = 0, binding = 0) uniform CloudNoiseParamsBlock { CloudNoiseParams params; };
 layout(set = 0, binding = 1, rgba8) uniform writeonly image2D curl;
 
 void main() {

@@ -3,17 +3,14 @@
 // (passes/composite.cpp). Separate texture and sampler, uniform block: WebGPU-safe.
 #extension GL_GOOGLE_include_directive : require
 #include "include/tonemap.glsl"
+#include "include/composite_params.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform texture2D color;
 layout(set = 0, binding = 1) uniform sampler nearest;
 layout(set = 0, binding = 2, rgba32f) uniform writeonly image2D frame;
-layout(set = 0, binding = 3) uniform CompositeParams {
-  uvec2 size;
-  float exposure_ev;
-  int tone_map_op;
-} params;
+layout(set = 0, binding = 3) uniform CompositeParamsBlock { CompositeParams params; };
 
 void main() {
   const uvec2 pixel = gl_GlobalInvocationID.xy;

@@ -5,11 +5,9 @@
 #include "include/depth_fog_codes.h"
 #include "include/media.glsl"
 #include "include/pixel_fog.glsl"
+#include "include/depth_fog_params.h"
 
-layout(set = 0, binding = 5) uniform Params {
-  vec4 fog;    // x start (m), y end (m), z density (1/m), w variant: DEPTH_FOG_* (include/depth_fog_codes.h)
-  vec4 color;  // rgb fog radiance
-} params;
+layout(set = 0, binding = 5) uniform DepthFogParamsBlock { DepthFogParams params; };
 
 float fog_factor(float z) {
   const int variant = int(params.fog.w);

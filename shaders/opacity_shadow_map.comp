@@ -8,16 +8,14 @@
 #include "include/fog_frame.glsl"
 #include "include/light_transmittance.glsl"
 #include "include/opacity_shadow.glsl"
+#include "include/opacity_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(set = 0, binding = 0) uniform Frame { FogFrame f; } frame;
 layout(set = 0, binding = 1) uniform ShadowBlock { ShadowView view; } shadow;
 layout(set = 0, binding = 2, rgba16f) uniform writeonly image3D optical_depth;
-layout(set = 0, binding = 3) uniform Params {
-  ivec4 steps;     // x: per layer, y: from the column's start toward the light
-  vec4 distances;  // x: how far the march toward a directional light goes (m)
-} params;
+layout(set = 0, binding = 3) uniform OpacityParamsBlock { OpacityParams params; };
 
 const float FP16_MAX = 65000.0;
 

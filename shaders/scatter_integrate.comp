@@ -6,6 +6,7 @@
 // depths [depth(k/N), depth((k+1)/N)]; distances are along the column's ray.
 #include "include/fog_frame.glsl"
 #include "include/integration_codes.h"
+#include "include/integrate_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
@@ -16,7 +17,7 @@ layout(set = 0, binding = 3) uniform texture3D media_absorption;
 layout(set = 0, binding = 4) uniform sampler nearest;
 layout(set = 0, binding = 5, rgba16f) uniform writeonly image3D integrated_scattering;
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image3D integrated_transmittance;
-layout(set = 0, binding = 7) uniform Params { ivec4 method; } params;  // x: INTEGRATE_WRONSKI or INTEGRATE_HILLAIRE
+layout(set = 0, binding = 7) uniform IntegrateParamsBlock { IntegrateParams params; };
 
 void main() {
   const uvec3 size = frame.f.grid.size.xyz;

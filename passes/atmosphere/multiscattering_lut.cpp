@@ -52,8 +52,8 @@ class MultiscatteringLutExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "atmosphere_multiscattering_lut.comp");
     atmosphere_.setup(s, program_);
-    const GpuMultiscatteringLutParams params{{int32_t(s.param(t_.directions)), int32_t(s.param(t_.steps)), 0, 0}};
-    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 1, s.name() + " params", params);
+    const gpu::MultiscatteringLutParams params{{int32_t(s.param(t_.directions)), int32_t(s.param(t_.steps)), 0, 0}};
+    params_ = plumbing::create_shared_uniform_block(s.device, program_, atmosphere_multiscattering_lut_shader::params, s.name() + " params", params);
   }
 
   void record(PassContext& c) override {

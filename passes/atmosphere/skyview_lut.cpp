@@ -67,13 +67,13 @@ class SkyViewLutExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "atmosphere_skyview_lut.comp");
     atmosphere_.setup(s, program_);
-    plumbing::check_uniform_mirror<GpuSkyViewLutParams>(program_, 0, 1, s.name() + " params");
-    params_ = s.device.create_buffer({s.name() + " params", sizeof(GpuSkyViewLutParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    plumbing::check_wrapped_uniform_mirror<gpu::SkyViewLutParams>(program_, atmosphere_skyview_lut_shader::params, s.name() + " params");
+    params_ = s.device.create_buffer({s.name() + " params", sizeof(gpu::SkyViewLutParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
 
   void record(PassContext& c) override {
     const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
-    const GpuSkyViewLutParams params{{planet.planet_up[3], planet.toward_sun[3], planet.has_sun ? 1.0f : 0.0f, 0},
+    const gpu::SkyViewLutParams params{{planet.planet_up[3], planet.toward_sun[3], planet.has_sun ? 1.0f : 0.0f, 0},
                                      {float(c.param(t_.min_samples)), float(c.param(t_.max_samples)), 100e3f,
                                       c.param(t_.multiscattering_term) ? 1.0f : 0.0f},
                                      {float(c.param(t_.sample_offset)), 0, 0, 0}};

@@ -50,8 +50,8 @@ class TransmittanceLutExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "atmosphere_transmittance_lut.comp");
     atmosphere_.setup(s, program_);
-    const GpuAtmosphereLutParams params{{int32_t(s.param(t_.panels)), 0, 0, 0}};
-    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 1, s.name() + " params", params);
+    const gpu::TransmittanceLutParams params{{int32_t(s.param(t_.panels)), 0, 0, 0}};
+    params_ = plumbing::create_shared_uniform_block(s.device, program_, atmosphere_transmittance_lut_shader::params, s.name() + " params", params);
   }
 
   // Runs when the cache key changed: the first frame, or a new atmosphere.

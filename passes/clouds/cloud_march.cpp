@@ -78,22 +78,7 @@ struct CloudMarchTable : PassTable {
                                     SizeSpec::of_output(), "the transmittance through the layer in rgb (fog_apply's fog_transmittance)");
 };
 
-struct GpuCloudMarchParams {  // cloud_march.comp's CloudMarchParams
-  float view_position[4], view_forward[4], view_right[4], view_up[4];
-  float sun[4], sun_irradiance[4], ambient[4];
-  float layer[4], cloud[4], scales[4], wind[4];
-  int32_t steps[4];
-  float octave[4], lobes[4];
-  static constexpr std::array<uint64_t, 14> offsets() {
-    using P = GpuCloudMarchParams;
-    return {offsetof(P, view_position), offsetof(P, view_forward), offsetof(P, view_right), offsetof(P, view_up),
-            offsetof(P, sun),           offsetof(P, sun_irradiance), offsetof(P, ambient),  offsetof(P, layer),
-            offsetof(P, cloud),         offsetof(P, scales),       offsetof(P, wind),       offsetof(P, steps),
-            offsetof(P, octave),        offsetof(P, lobes)};
-  }
-};
-
-void copy4(float (&to)[4], const float (&from)[4]) {
+void copy4(gpu::vec4& to, const float (&from)[4]) {
   for (int i = 0; i < 4; ++i) to[i] = from[i];
 }
 
@@ -111,13 +96,13 @@ class CloudMarchExecution final : public PassExecution {
 
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "cloud_march.comp");
-    plumbing::check_uniform_mirror<GpuCloudMarchParams>(program_, cloud_march_shader::params, s.name() + " params");
-    params_ = s.device.create_buffer({s.name() + " params", sizeof(GpuCloudMarchParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    plumbing::check_wrapped_uniform_mirror<gpu::CloudMarchParams>(program_, cloud_march_shader::params, s.name() + " params");
+    params_ = s.device.create_buffer({s.name() + " params", sizeof(gpu::CloudMarchParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
 
   void record(PassContext& c) override {
     namespace shader = cloud_march_shader;
-    const GpuCloudMarchParams params = march_params(c);
+    const gpu::CloudMarchParams params = march_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const rhi::BindGroupId group = c.bind_group(
         program_, {bind(shader::params, params_), bind(shader::scene_depth, c.view(t_.depth)),
@@ -129,10 +114,10 @@ class CloudMarchExecution final : public PassExecution {
   }
 
  private:
-  GpuCloudMarchParams march_params(const PassContext& c) const {
+  gpu::CloudMarchParams march_params(const PassContext& c) const {
     const Scene& scene = *c.scene;
     const CloudLayer& layer = *scene.clouds;
-    GpuCloudMarchParams p{};
+    gpu::CloudMarchParams p{};
     const fog::GpuViewRays view = fog::pack_view_rays(scene.camera, c.extent(t_.clouds));
     copy4(p.view_position, view.position);
     copy4(p.view_forward, view.forward);

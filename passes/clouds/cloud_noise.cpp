@@ -49,11 +49,6 @@ struct CloudNoiseTable : PassTable {
                            "r g: the curl of a gradient-noise potential, 0.5 + 0.5 · curl / 8 (tileable)");
 };
 
-struct GpuCloudNoiseParams {  // cloud_noise_*.comp's CloudNoiseParams
-  uint32_t seed[4];           // x: the seed
-  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuCloudNoiseParams, seed)}; }
-};
-
 class CloudNoiseExecution final : public PassExecution {
  public:
   explicit CloudNoiseExecution(const CloudNoiseTable& table) : t_(table) {}
@@ -62,8 +57,8 @@ class CloudNoiseExecution final : public PassExecution {
     shape_ = plumbing::create_compute_program(s.device, "cloud_noise_shape.comp");
     detail_ = plumbing::create_compute_program(s.device, "cloud_noise_detail.comp");
     curl_ = plumbing::create_compute_program(s.device, "cloud_noise_curl.comp");
-    const GpuCloudNoiseParams params{{uint32_t(s.param(t_.seed)), 0, 0, 0}};
-    params_ = plumbing::create_checked_uniform_block(s.device, shape_, cloud_noise_shape_shader::params, s.name() + " params", params);
+    const gpu::CloudNoiseParams params{{uint32_t(s.param(t_.seed)), 0, 0, 0}};
+    params_ = plumbing::create_shared_uniform_block(s.device, shape_, cloud_noise_shape_shader::params, s.name() + " params", params);
   }
 
   // Runs when the cache key changed: the first frame, or another seed or size.

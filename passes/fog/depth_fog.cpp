@@ -6,6 +6,7 @@
 // colour and ignores the scene's media and lights (it still needs a medium to run).
 // Shader: shaders/depth_fog.comp (f from shaders/include/media.glsl).
 #include "passes/register_pass.h"
+#include "shaders/bindings/depth_fog.comp.h"  // gpu::DepthFogParams, its layout asserted
 #include "passes/fog/pixel_fog.h"
 #include "passes/uniform_mirrors.h"
 #include "shaders/include/depth_fog_codes.h"
@@ -33,7 +34,7 @@ struct DepthFogTable : fog::PixelFogTable {
 // The shader's Params block.
 fog::PixelFogInputs depth_fog_inputs(const DepthFogTable& t, const PassSetup& s) {
   const std::array<double, 3>& color = s.param(t.color);
-  const GpuDepthFogParams params{
+  const gpu::DepthFogParams params{
       {float(s.param(t.start)), float(s.param(t.end)), float(s.param(t.density)), float(s.variant().shader_code)},
       {float(color[0]), float(color[1]), float(color[2]), 0}};
   return fog::PixelFogInputs::with_params(params, {0, 0, 0});

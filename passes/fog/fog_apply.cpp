@@ -53,9 +53,9 @@ class FogApplyExecution final : public PassExecution {
     }
     const Extent size = s.extent(t_.color);
     const Camera& camera = s.scene->camera;
-    const GpuFogApplyFrame frame{{float(size.width), float(size.height), float(camera.near), float(camera.far)}};
+    const gpu::FogApplyFrame frame{{float(size.width), float(size.height), float(camera.near), float(camera.far)}};
     for (const plumbing::RenderProgram* p : draws_.programs()) {
-      plumbing::check_uniform_mirror<GpuFogApplyFrame>(*p, 0, 3, s.name() + " frame");
+      plumbing::check_wrapped_uniform_mirror<gpu::FogApplyFrame>(*p, fog_apply_transmittance_shader::frame, s.name() + " frame");
     }
     frame_ = plumbing::create_uniform_block(s.device, s.name() + " frame", frame);
   }

@@ -62,10 +62,10 @@ class FroxelScatterExecution final : public PassExecution {
     program_ = plumbing::create_compute_program(s.device, media_shadowed_ ? "froxel_scatter_media_shadowed.comp"
                                                           : shadowed_      ? "froxel_scatter_shadowed.comp"
                                                                            : "froxel_scatter.comp");
-    const GpuFroxelScatterParams params{{s.variant().shader_code, s.param(t_.skip_empty) ? 1 : 0, 0, 0},
+    const gpu::FroxelScatterParams params{{s.variant().shader_code, s.param(t_.skip_empty) ? 1 : 0, 0, 0},
                                         {float(s.param(t_.g_back)), float(s.param(t_.w_forward)), 0, 0},
                                         {float(s.param(t_.shadow_steps)), float(s.param(t_.shadow_distance)), 0, 0}};
-    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 5, s.name() + " params", params);
+    params_ = plumbing::create_shared_uniform_block(s.device, program_, froxel_scatter_shader::params, s.name() + " params", params);
   }
 
   void record(PassContext& c) override {

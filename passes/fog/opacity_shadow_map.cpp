@@ -67,9 +67,9 @@ class OpacityShadowMapExecution final : public PassExecution {
     plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");
     plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, 0, 1, s.name() + " light_view");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(fog::GpuFogFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
-    const GpuOpacityParams params{{int32_t(s.param(t_.steps_per_layer)), int32_t(s.param(t_.light_steps)), 0, 0},
+    const gpu::OpacityParams params{{int32_t(s.param(t_.steps_per_layer)), int32_t(s.param(t_.light_steps)), 0, 0},
                                   {float(s.param(t_.distance)), 0, 0, 0}};
-    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 3, s.name() + " params", params);
+    params_ = plumbing::create_shared_uniform_block(s.device, program_, opacity_shadow_map_shader::params, s.name() + " params", params);
   }
 
   // Runs when the cache key changed (the first frame, or new lights, media or light

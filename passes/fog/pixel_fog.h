@@ -51,8 +51,12 @@ struct PixelFogInputs {
   template <typename Block>
   static PixelFogInputs with_params(const Block& block, Vec3 ambient) {
     const auto bytes = std::as_bytes(std::span(&block, 1));
-    const auto offsets = Block::offsets();
-    return {{bytes.begin(), bytes.end()}, {offsets.begin(), offsets.end()}, ambient};
+    if constexpr (requires { Block::offsets(); }) {
+      const auto offsets = Block::offsets();
+      return {{bytes.begin(), bytes.end()}, {offsets.begin(), offsets.end()}, ambient};
+    } else {  // a struct written once (gpu_struct.h), the one member of its block: laid out at compile time
+      return {{bytes.begin(), bytes.end()}, {0}, ambient};
+    }
   }
 };
 using PixelFogInputsOf = std::function<PixelFogInputs(const PassSetup& s)>;

@@ -82,17 +82,17 @@ class RaymarchFogExecution final : public PassExecution {
     using namespace rhi;
     shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
     program_ = plumbing::create_compute_program(s.device, shadowed_ ? "raymarch_fog_shadowed.comp" : "raymarch_fog.comp");
-    plumbing::check_uniform_mirror<GpuRaymarchParams>(program_, 0, 5, s.name() + " params");
+    plumbing::check_wrapped_uniform_mirror<gpu::RaymarchParams>(program_, raymarch_fog_shadowed_shader::params, s.name() + " params");
     plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");
     phase_ = {s.variant().shader_code, float(s.param(t_.g_back)), float(s.param(t_.w_forward))};
     frame_ = s.device.create_buffer({"raymarch_fog frame", sizeof(fog::GpuFogFrame), buffer_usage::uniform | buffer_usage::copy_dst});
-    params_ = s.device.create_buffer({"raymarch_fog params", sizeof(GpuRaymarchParams), buffer_usage::uniform | buffer_usage::copy_dst});
+    params_ = s.device.create_buffer({"raymarch_fog params", sizeof(gpu::RaymarchParams), buffer_usage::uniform | buffer_usage::copy_dst});
   }
 
   void record(PassContext& c) override {
     const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, frame_inputs(c), lighting_);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
-    const GpuRaymarchParams params = march_params(c);
+    const gpu::RaymarchParams params = march_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
     // Both variants' shaders declare raymarch_fog_body.glsl's set 0; the shadowed one set 1.
@@ -121,8 +121,8 @@ class RaymarchFogExecution final : public PassExecution {
     return in;
   }
 
-  GpuRaymarchParams march_params(const PassContext& c) const {
-    GpuRaymarchParams p{};
+  gpu::RaymarchParams march_params(const PassContext& c) const {
+    gpu::RaymarchParams p{};
     p.steps[0] = int32_t(c.param(t_.steps));
     p.steps[1] = int32_t(c.param(t_.shadow_steps));
     // Where no surface is, never past the camera's far plane: the scene ends there (as in the reference).

@@ -45,8 +45,8 @@ class ScatterIntegrateExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "scatter_integrate.comp");
     plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");  // froxel_voxelize's
-    const GpuIntegrateParams params{{s.variant().shader_code, 0, 0, 0}};
-    params_ = plumbing::create_checked_uniform_block(s.device, program_, 0, 7, s.name() + " params", params);
+    const gpu::IntegrateParams params{{s.variant().shader_code, 0, 0, 0}};
+    params_ = plumbing::create_shared_uniform_block(s.device, program_, scatter_integrate_shader::params, s.name() + " params", params);
   }
 
   void record(PassContext& c) override {

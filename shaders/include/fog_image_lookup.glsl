@@ -9,7 +9,8 @@
 layout(set = 0, binding = 0) uniform texture2D fog_scattering;
 layout(set = 0, binding = 1) uniform texture2D fog_transmittance;
 layout(set = 0, binding = 2) uniform sampler bilinear;
-layout(set = 0, binding = 3) uniform Frame { vec4 size; } frame;  // xy: the colour's size in pixels
+#include "fog_apply_frame.h"
+layout(set = 0, binding = 3) uniform FogApplyFrameBlock { FogApplyFrame frame; };
 
 struct FogAtPixel {
   vec3 in_scatter;

@@ -8,11 +8,12 @@
 #ifndef VOLGRAPH_FOG_IMAGE_LOOKUP_DEPTH_AWARE_GLSL
 #define VOLGRAPH_FOG_IMAGE_LOOKUP_DEPTH_AWARE_GLSL
 #include "depth_buffer.glsl"
+#include "fog_apply_frame.h"
 
 layout(set = 0, binding = 0) uniform texture2D fog_scattering;
 layout(set = 0, binding = 1) uniform texture2D fog_transmittance;
 layout(set = 0, binding = 2) uniform sampler nearest;
-layout(set = 0, binding = 3) uniform Frame { vec4 size; } frame;  // xy: the colour's size in pixels; z, w: the camera's near, far (m)
+layout(set = 0, binding = 3) uniform FogApplyFrameBlock { FogApplyFrame frame; };
 layout(set = 0, binding = 4) uniform texture2D scene_depth;
 
 const float DEPTH_TOLERANCE = 0.01;  // relative depth difference at which a texel's weight halves

@@ -17,11 +17,8 @@ layout(set = 0, binding = 1) uniform texture3D media_scattering;
 layout(set = 0, binding = 2) uniform texture3D media_emission;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4, rgba16f) uniform writeonly image3D in_scatter;
-layout(set = 0, binding = 5) uniform Params {
-  ivec4 modes;  // x: the phase code (phase_codes.h); y: 1 skips froxels without scattering
-  vec4 lobes;   // dual-lobe HG: x backward g, y forward weight
-  vec4 volumetric;  // volumetric self-shadowing: x steps toward each light (0: off), y distance (m)
-} params;
+#include "froxel_scatter_params.h"
+layout(set = 0, binding = 5) uniform FroxelScatterParamsBlock { FroxelScatterParams params; };
 
 #include "in_scattering.glsl"  // after `frame`, which it reads
 

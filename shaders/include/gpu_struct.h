@@ -18,12 +18,28 @@
 
 namespace volgraph::gpu {
 using uint = uint32_t;
-struct alignas(8) vec2 { float x, y; };
-struct alignas(8) ivec2 { int32_t x, y; };
-struct alignas(8) uvec2 { uint32_t x, y; };
-struct alignas(16) vec4 { float x, y, z, w; };
-struct alignas(16) ivec4 { int32_t x, y, z, w; };
-struct alignas(16) uvec4 { uint32_t x, y, z, w; };
+
+// A GLSL vector: x, y, z, w, and [i] as GLSL indexes it.
+template <typename T, int N, int Align>
+struct alignas(Align) Vector;
+template <typename T>
+struct alignas(8) Vector<T, 2, 8> {
+  T x, y;
+  constexpr T& operator[](int i) { return i == 0 ? x : y; }
+  constexpr const T& operator[](int i) const { return i == 0 ? x : y; }
+};
+template <typename T>
+struct alignas(16) Vector<T, 4, 16> {
+  T x, y, z, w;
+  constexpr T& operator[](int i) { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
+  constexpr const T& operator[](int i) const { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
+};
+using vec2 = Vector<float, 2, 8>;
+using ivec2 = Vector<int32_t, 2, 8>;
+using uvec2 = Vector<uint32_t, 2, 8>;
+using vec4 = Vector<float, 4, 16>;
+using ivec4 = Vector<int32_t, 4, 16>;
+using uvec4 = Vector<uint32_t, 4, 16>;
 struct alignas(16) mat4 { vec4 columns[4]; };  // column-major, as GLSL
 }  // namespace volgraph::gpu
 

@@ -11,14 +11,9 @@
 #define VOLGRAPH_RAYMARCH_FOG_BODY_GLSL
 #include "pixel_fog.glsl"  // bindings 0–4 (the frame block `frame`), the workgroup, store_fog
 #include "in_scattering.glsl"
+#include "raymarch_params.h"
 
-layout(set = 0, binding = 5) uniform Params {
-  ivec4 steps;      // x: steps along the view ray, y: steps toward each light (0: no volumetric shadows)
-  vec4 distances;   // x: max_distance (view depth, m) where no surface is, y: shadow_distance (m) toward directional lights
-  vec4 jitter;      // x: 1 jittered samples, 0 each step's midpoint; y: the frame
-  ivec4 modes;      // x: the phase code (phase_codes.h)
-  vec4 lobes;       // dual-lobe HG: x backward g, y forward weight
-} params;
+layout(set = 0, binding = 5) uniform RaymarchParamsBlock { RaymarchParams params; };
 
 const float SOURCE_MAX = 1e30;     // in-scattering is kept finite (a light at a sample point)
 
