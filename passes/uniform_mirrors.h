@@ -36,7 +36,7 @@ constexpr uint64_t kSceneFrameBytes = (sizeof(GpuSceneFrame) + 255) / 256 * 256;
 // The sky pass's frame (shaders/include/atmosphere_sky_frame.glsl SkyPassFrame, the only
 // member of every variant's Frame block).
 struct GpuSkyFrame {
-  fog::GpuViewRays view;
+  gpu::ViewRays view;
   float planet_up[4];     // xyz: the camera's local zenith; w: its radius (m, at most the top's: the sky-view LUT's)
   float toward_sun[4];    // xyz: unit, toward the sun; w: the sun's zenith cosine at the camera
   float sun[4];           // rgb: E at the top of the atmosphere; w: 1 when there is a sun
@@ -51,7 +51,7 @@ struct GpuSkyFrame {
 
 // atmosphere_aerial_perspective.comp's Frame.
 struct GpuAerialPerspectiveFrame {
-  fog::GpuViewRays view;
+  gpu::ViewRays view;
   float planet_up[4];   // xyz: the camera's local zenith; w: its radius (m, at most the top's)
   float toward_sun[4];  // xyz: unit, toward the sun; w: the sun's zenith cosine at the camera
   float volume[4];      // x: metres a slice (along each ray), y: 1 when there is a sun
@@ -67,7 +67,7 @@ struct GpuAerialPerspectiveFrame {
 // AerialLookup): atmosphere_aerial_perspective writes it to its `lookup` output for the
 // passes that read the volumes.
 struct GpuAerialLookup {
-  fog::GpuViewRays view;
+  gpu::ViewRays view;
   float volume[4];  // x: the distance the volume reaches (m), y: its slices
   float sun[4];     // rgb: the sun's E at the top of the atmosphere (0 without a sun)
   static constexpr std::array<uint64_t, 3> offsets() {

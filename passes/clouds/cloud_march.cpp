@@ -78,7 +78,7 @@ struct CloudMarchTable : PassTable {
                                     SizeSpec::of_output(), "the transmittance through the layer in rgb (fog_apply's fog_transmittance)");
 };
 
-void copy4(gpu::vec4& to, const float (&from)[4]) {
+void copy4(gpu::vec4& to, const gpu::vec4& from) {
   for (int i = 0; i < 4; ++i) to[i] = from[i];
 }
 
@@ -118,7 +118,7 @@ class CloudMarchExecution final : public PassExecution {
     const Scene& scene = *c.scene;
     const CloudLayer& layer = *scene.clouds;
     gpu::CloudMarchParams p{};
-    const fog::GpuViewRays view = fog::pack_view_rays(scene.camera, c.extent(t_.clouds));
+    const gpu::ViewRays view = fog::pack_view_rays(scene.camera, c.extent(t_.clouds));
     copy4(p.view_position, view.position);
     copy4(p.view_forward, view.forward);
     copy4(p.view_right, view.right);

@@ -13,8 +13,9 @@ double radical_inverse(uint64_t n, uint64_t base) {
   return inverse;
 }
 
-void put(float* out, const Vec3& v, double w) {
-  for (size_t i = 0; i < 3; ++i) out[i] = float(v[i]);
+template <typename Vector4>  // float[4] or gpu::vec4
+void put(Vector4& out, const Vec3& v, double w) {
+  for (int i = 0; i < 3; ++i) out[i] = float(v[size_t(i)]);
   out[3] = float(w);
 }
 
@@ -25,9 +26,9 @@ std::array<double, 3> froxel_jitter(uint64_t frame) {
   return {radical_inverse(frame, 2) - 0.5, radical_inverse(frame, 3) - 0.5, radical_inverse(frame, 5) - 0.5};
 }
 
-GpuViewRays pack_view_rays(const Camera& camera, Extent output) {
+gpu::ViewRays pack_view_rays(const Camera& camera, Extent output) {
   const physics::ViewRays rays = physics::view_rays(camera, double(output.width) / double(output.height));
-  GpuViewRays v{};
+  gpu::ViewRays v{};
   put(v.position, rays.position, camera.near);
   put(v.forward, rays.forward, camera.far);
   put(v.right, rays.right, 0);

@@ -15,27 +15,17 @@
 #include "passes/plumbing/light_list.h"
 #include "passes/plumbing/scene_lighting.h"
 #include "physics/media_field.h"
+#include "shaders/include/froxel_grid.h"
+#include "shaders/include/view_rays.h"
 
 namespace volgraph::fog {
 
-// std140 mirrors of ViewRays (view_rays.glsl), FroxelGrid (froxel.glsl) and FogFrame
-// (fog_frame.glsl); the shaders hold a FogFrame as the one member of their Frame block
-// (plumbing::check_wrapped_uniform_mirror).
-struct GpuViewRays {
-  float position[4], forward[4], right[4], up[4];
-  static constexpr std::array<uint64_t, 4> offsets() {
-    return {offsetof(GpuViewRays, position), offsetof(GpuViewRays, forward), offsetof(GpuViewRays, right),
-            offsetof(GpuViewRays, up)};
-  }
-};
-struct GpuFroxelGrid {
-  uint32_t size[4];
-  float range[4];
-  static constexpr std::array<uint64_t, 2> offsets() { return {offsetof(GpuFroxelGrid, size), offsetof(GpuFroxelGrid, range)}; }
-};
+// The std140 mirror of FogFrame (fog_frame.glsl); the shaders hold a FogFrame as the one
+// member of their Frame block (plumbing::check_wrapped_uniform_mirror). Its ViewRays and
+// FroxelGrid are written once for GLSL and C++ (shaders/include/view_rays.h, froxel_grid.h).
 struct GpuFogFrame {
-  GpuViewRays view;
-  GpuFroxelGrid grid;
+  gpu::ViewRays view;
+  gpu::FroxelGrid grid;
   float jitter[4];
   float ambient[4];
   plumbing::GpuLightList light_list;
@@ -58,7 +48,7 @@ struct FogFrameInputs {
 
 // The camera's rays for a frame of `output` pixels (view_rays.glsl), its near and far
 // planes in position.w and forward.w.
-GpuViewRays pack_view_rays(const Camera& camera, Extent output);
+gpu::ViewRays pack_view_rays(const Camera& camera, Extent output);
 
 // The frame block of frame `frame` (its jitter) for the scene and frame size `s` sees: its
 // lights and the ambient radiance (the inputs' plus the sky's) as `lighting` gives them.

@@ -25,7 +25,7 @@ void TemporalExecution::record(PassContext& c) {
 // The last frame's camera is the view the history was made with (the executor lets the
 // scene's camera change between frames); the first frame has none.
 GpuTemporalParams TemporalExecution::frame_params(const PassContext& c) {
-  const GpuViewRays view = pack_view_rays(c.scene->camera, c.frame_size());
+  const gpu::ViewRays view = pack_view_rays(c.scene->camera, c.frame_size());
   GpuTemporalParams p{};
   p.previous_view = last_view_.value_or(view);
   p.blend[0] = float(c.param(table_.alpha));

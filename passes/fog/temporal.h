@@ -21,7 +21,7 @@ namespace volgraph::fog {
 
 // std140 mirror of the temporal shaders' Params block.
 struct GpuTemporalParams {
-  GpuViewRays previous_view;
+  gpu::ViewRays previous_view;
   float blend[4];  // alpha, history valid (0/1), reproject (0/1), unused
   static constexpr std::array<uint64_t, 2> offsets() {
     return {offsetof(GpuTemporalParams, previous_view), offsetof(GpuTemporalParams, blend)};
@@ -68,7 +68,7 @@ class TemporalExecution : public PassExecution {
   uint32_t params_binding_;
   plumbing::ComputeProgram program_;
   rhi::BufferId params_;
-  std::optional<GpuViewRays> last_view_;  // the camera the history was made with
+  std::optional<gpu::ViewRays> last_view_;  // the camera the history was made with
 };
 
 }  // namespace volgraph::fog

@@ -6,10 +6,7 @@
 #define VOLGRAPH_FROXEL_GLSL
 #include "view_rays.glsl"
 
-struct FroxelGrid {
-  uvec4 size;   // xyz froxels, w unused
-  vec4 range;   // x near, y far (view depth, m), z distribution (0 linear, 1 exponential)
-};
+#include "froxel_grid.h"  // struct FroxelGrid
 
 float froxel_depth(FroxelGrid g, float w) {
   if (g.range.z < 0.5) return mix(g.range.x, g.range.y, w);

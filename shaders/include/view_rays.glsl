@@ -4,12 +4,7 @@
 #ifndef VOLGRAPH_VIEW_RAYS_GLSL
 #define VOLGRAPH_VIEW_RAYS_GLSL
 
-struct ViewRays {
-  vec4 position;  // xyz; w unused
-  vec4 forward;
-  vec4 right;     // scaled by tan(fov/2)·aspect
-  vec4 up;        // scaled by tan(fov/2)
-};
+#include "view_rays.h"  // struct ViewRays
 
 vec3 view_ray(ViewRays v, vec2 ndc) { return v.forward.xyz + ndc.x * v.right.xyz + ndc.y * v.up.xyz; }
 

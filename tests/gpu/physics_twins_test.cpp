@@ -396,8 +396,8 @@ TEST_P(PhysicsTwins, InScatteringMatchesItsCpuTwin) {
 // coordinates) and relative on z and the blend; inside/outside the same. Points behind
 // the camera compare only z (u and v mean nothing there).
 struct ReprojectionCase {
-  fog::GpuViewRays view;
-  fog::GpuFroxelGrid grid;
+  gpu::ViewRays view;
+  gpu::FroxelGrid grid;
   float point[4];
   float blend[4];  // current, history value, history frames, alpha
   float valid[4];

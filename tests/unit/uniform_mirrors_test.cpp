@@ -294,8 +294,6 @@ TEST(UniformMirrors, LightVolumeParamsBlocksMatch) {
 
 TEST(UniformMirrors, NestedStructsMatchTheirGlsl) {
   EXPECT_NESTED_MATCH(fog::GpuFogFrame, "FogFrame");
-  EXPECT_NESTED_MATCH(fog::GpuViewRays, "ViewRays");
-  EXPECT_NESTED_MATCH(fog::GpuFroxelGrid, "FroxelGrid");
   EXPECT_NESTED_MATCH(plumbing::GpuLightList, "LightList");
   EXPECT_NESTED_MATCH(plumbing::GpuLight, "Light");
   EXPECT_NESTED_MATCH(physics::GpuMediaField, "MediaField");
@@ -361,8 +359,8 @@ TEST(UniformMirrors, MovedMemberFailsNamingIt) {
 // A wrapped block is checked by size: a frame block one vec4 short fails.
 TEST(UniformMirrors, WrappedBlockOfAnotherSizeFails) {
   struct ShortFrame {
-    fog::GpuViewRays view;
-    fog::GpuFroxelGrid grid;
+    gpu::ViewRays view;
+    gpu::FroxelGrid grid;
     float jitter[4];
     plumbing::GpuLightList light_list;
     physics::GpuMediaField media;
