@@ -417,7 +417,8 @@ int run_view(const Args& args, const PassRegistry& registry) {
     throw UsageError("--script and --frames: the script's `frames N` lines say how many frames to render");
   }
   viewer::ViewOptions options;
-  if (!args.script.empty()) options.script = viewer::read_script(args.script);
+  options.scripted = !args.script.empty();
+  if (options.scripted) options.script = viewer::read_script(args.script);
   LoadedConfig loaded = load(args, registry);
   compile_loaded(loaded, args.compile);
   options.frames = args.view_frames;

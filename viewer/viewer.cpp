@@ -154,7 +154,7 @@ class Loop {
 
   // Returns the exit code's part: false when a script's wait-change timed out.
   bool run() {
-    if (!options_.script.empty()) return run_script();
+    if (options_.scripted) return run_script();
     run_interactive();
     return true;
   }

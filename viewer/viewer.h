@@ -19,7 +19,8 @@ struct ViewOptions {
   std::string config;        // the config file: reloaded (R, hot reload, the script's reload)
   const PassRegistry* registry = nullptr;
   Overrides overrides;       // the command line's --set/--variant/--graph, kept under every reload
-  std::vector<ScriptCommand> script;  // --script: run between frames, then exit (read_script)
+  bool scripted = false;     // --script given: its commands run between frames, then the viewer exits
+  std::vector<ScriptCommand> script;  // read_script's commands (an empty script: exit after none)
 };
 
 // No window can be opened here (no display): the user's setup, exit 2.
