@@ -35,7 +35,8 @@ commands:
   tune SPEC --max-error X -o DIR  the fastest point with its error (--metric, default the spec's) ≤ X:
                                DIR/tuned.json (a config including the swept one) and the flags
   view CONFIG                  the graph in a window (docs/viewer.md): --size WxH, --backend vulkan,
-                               --device N, --validation, --frames N (then exit), --screenshot FILE.png; ESC quits
+                               --device N, --validation, --frames N (then exit), --screenshot FILE.png,
+                               --script FILE (control commands between frames); ESC quits, R reloads
   passes                       the pass types with their variants, parameters and slots
   devices                      the Vulkan devices (index for --device N; lavapipe is the default)
   test                         run the whole test suite (handled by tools/volgraph)
@@ -205,6 +206,7 @@ void view_options(CLI::App& app, Args& args) {
   value_option(app, "--frames", [&](const std::string& v) { args.view_frames = whole_number("--frames", v, 1); });
   flag(app, "--validation", [&] { args.validation = true; });
   value_option(app, "--screenshot", [&](const std::string& v) { once(args.screenshot, "--screenshot", v); });
+  value_option(app, "--script", [&](const std::string& v) { once(args.script, "--script", v); });
 }
 
 void reference_options(CLI::App& app, Args& args) {

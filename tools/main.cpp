@@ -413,17 +413,25 @@ int run_view(const Args& args, const PassRegistry& registry) {
     }
     check_output_target(args.screenshot, "--screenshot");
   }
+  if (!args.script.empty() && args.view_frames > 0) {
+    throw UsageError("--script and --frames: the script's `frames N` lines say how many frames to render");
+  }
+  viewer::ViewOptions options;
+  options.scripted = !args.script.empty();
+  if (options.scripted) options.script = viewer::read_script(args.script);
   LoadedConfig loaded = load(args, registry);
   compile_loaded(loaded, args.compile);
-  viewer::ViewOptions options;
   options.frames = args.view_frames;
   options.screenshot = args.screenshot;
   options.validation = args.validation;
   options.device = args.device;
   options.compile = args.compile;
   options.title = "volgraph view " + args.config;
+  options.config = args.config;
+  options.registry = &registry;
+  options.overrides = args.overrides;
   try {
-    return viewer::run(loaded, options);
+    return viewer::run(std::move(loaded), options);
   } catch (const viewer::NoDisplay& e) {
     return setup_missing(e.what());
   }

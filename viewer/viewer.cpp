@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <chrono>
 #include <memory>
+#include <thread>
 #include <vector>
 
 #define GLFW_INCLUDE_VULKAN
@@ -26,11 +28,15 @@ namespace {
 constexpr int kSettleFrames = 32;
 // How long an idle loop sleeps in glfwWaitEventsTimeout between checks (seconds).
 constexpr double kIdleWait = 0.25;
+// How long a script's wait-change waits for the config or an include to change (seconds).
+constexpr double kWaitChange = 30.0;
 
 // What the callbacks tell the loop (the window's user pointer).
 struct WindowEvents {
   bool resized = false;
   bool exposed = false;
+  bool reload = false;  // R
+  bool ab = false;      // Tab: the last `ab` pair toggled again
 };
 
 // GLFW initialised for the loop's lifetime; its failure is the user's setup (no display).
@@ -65,7 +71,11 @@ Window open_window(Extent size, const std::string& title, WindowEvents& events) 
   glfwSetWindowRefreshCallback(window.get(), [](GLFWwindow* w) { static_cast<WindowEvents*>(glfwGetWindowUserPointer(w))->exposed = true; });
   // ESC closes the window (docs/viewer.md "Keys").
   glfwSetKeyCallback(window.get(), [](GLFWwindow* w, int key, int, int action, int) {
-    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    if (action != GLFW_PRESS) return;
+    WindowEvents& events = *static_cast<WindowEvents*>(glfwGetWindowUserPointer(w));
+    if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    if (key == GLFW_KEY_R) events.reload = true;
+    if (key == GLFW_KEY_TAB) events.ab = true;
   });
   return window;
 }
@@ -116,14 +126,45 @@ void write_screenshot(const std::string& path, VkExtent2D extent, const std::vec
 // (glfwWaitEventsTimeout) once a static scene has settled.
 class Loop {
  public:
-  Loop(vulkan::Context& context, GLFWwindow* window, LoadedConfig& loaded, const ViewOptions& options)
-      : context_(context), window_(window), loaded_(loaded), options_(options), device_(context),
+  Loop(vulkan::Context& context, GLFWwindow* window, LoadedConfig loaded, const ViewOptions& options, WindowEvents& events)
+      : context_(context), window_(window),
+        source_(options.config, *options.registry, options.overrides, options.compile, std::move(loaded)),
+        options_(options), events_(events), device_(context),
         presenter_(context, create_surface(context, window), framebuffer_extent(window)) {
     restart();
   }
 
-  void run(WindowEvents& events) {
+  // The control API (docs/viewer.md "Control"): keys and --script call these. A change
+  // recompiles the graph (a new executor) on the same window, swapchain and device; a
+  // refused one keeps the last good graph running and shows the loader's message.
+  std::string set_variant(const std::string& pass, const std::string& variant) { return applied(source_.set_variant(pass, variant)); }
+  std::string set_param(const std::string& pass, const std::string& name, const std::string& json) {
+    return applied(source_.set_param(pass, name, json));
+  }
+  std::string reload() { return applied(source_.reload()); }
+  std::string toggle_ab(const std::string& pass, const std::string& a, const std::string& b) {
+    ab_ = {pass, a, b};
+    return applied(source_.toggle_ab(pass, a, b));
+  }
+  // The last presented image (one frame first when none was presented yet).
+  void screenshot(const std::string& path) {
+    if (shot_.empty()) frames(1);
+    write_screenshot(path, shot_extent_, shot_);
+  }
+
+  // Returns the exit code's part: false when a script's wait-change timed out.
+  bool run() {
+    if (options_.scripted) return run_script();
+    run_interactive();
+    return true;
+  }
+
+ private:
+  void run_interactive() {
+    WindowEvents& events = events_;
     while (!glfwWindowShouldClose(window_)) {
+      handle_keys();
+      poll_files();
       if (events.resized || presenter_.stale()) {
         events.resized = false;
         if (!resize_to_window()) continue;
@@ -147,17 +188,98 @@ class Loop {
     if (!options_.screenshot.empty() && !shot_.empty()) write_screenshot(options_.screenshot, shot_extent_, shot_);
   }
 
- private:
+  bool run_script() {
+    for (const ScriptCommand& c : options_.script) {
+      if (glfwWindowShouldClose(window_)) break;
+      if (!run_command(c)) return false;
+    }
+    if (!options_.screenshot.empty()) screenshot(options_.screenshot);
+    return true;
+  }
+
+  bool run_command(const ScriptCommand& c) {
+    const std::vector<std::string>& a = c.args;
+    if (c.verb == "frames") frames(std::stoi(a[0]));
+    if (c.verb == "variant") set_variant(a[0], a[1]);
+    if (c.verb == "param") set_param(a[0], a[1], a[2]);
+    if (c.verb == "ab") toggle_ab(a[0], a[1], a[2]);
+    if (c.verb == "reload") reload();
+    if (c.verb == "screenshot") screenshot(a[0]);
+    if (c.verb == "wait-change" && !wait_change()) {
+      std::cerr << "view: --script line " << c.line << ": wait-change: the config and its includes did not change in "
+                << int(kWaitChange) << " s\n";
+      return false;
+    }
+    return true;
+  }
+
+  // Renders `n` frames, each kept for a screenshot; keys, resizes and file changes between them.
+  void frames(int n) {
+    for (int done = 0; done < n && !glfwWindowShouldClose(window_);) {
+      glfwPollEvents();
+      handle_keys();
+      poll_files();
+      if ((events_.resized || presenter_.stale()) && !resize_to_window()) continue;
+      events_.resized = false;
+      if (frame(true)) {
+        ++done;
+      } else {
+        events_.resized = true;
+      }
+    }
+  }
+
+  // Until the hot reload saw a change on disk since the last wait (or kWaitChange seconds).
+  bool wait_change() {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(kWaitChange);
+    while (disk_changes_ == waited_changes_ && std::chrono::steady_clock::now() < end) {
+      glfwPollEvents();
+      poll_files();
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    const bool seen = disk_changes_ != waited_changes_;
+    waited_changes_ = disk_changes_;
+    return seen;
+  }
+
+  void handle_keys() {
+    if (events_.reload) reload();
+    if (events_.ab && !ab_.pass.empty()) toggle_ab(ab_.pass, ab_.a, ab_.b);
+    events_.reload = events_.ab = false;
+  }
+
+  // Hot reload: the config or an include changed on disk.
+  void poll_files() {
+    if (!source_.files_changed()) return;
+    ++disk_changes_;
+    reload();
+  }
+
+  // After a change: the new graph runs, or the refusal is shown (title) and printed once.
+  std::string applied(const std::string& error) {
+    if (error.empty()) {
+      restart();
+      glfwSetWindowTitle(window_, options_.title.c_str());
+    } else {
+      std::cerr << error << "\n";
+      const std::string first_line = error.substr(0, error.find('\n'));
+      glfwSetWindowTitle(window_, (options_.title + " | error: " + first_line).c_str());
+      settled_ = std::min(settled_, kSettleFrames - 1);  // present the last good graph again
+    }
+    return error;
+  }
+
   // The executor for the swapchain's size: the graph resized when it differs.
   void restart() {
     executor_.reset();
     const VkExtent2D e = presenter_.extent();
     const Extent size{e.width, e.height, 1};
-    if (size.width != loaded_.config.output_size.width || size.height != loaded_.config.output_size.height) {
-      loaded_.config.output_size = size;
-      resize(loaded_.graph, size);
+    LoadedConfig& loaded = source_.current();
+    if (size.width != loaded.config.output_size.width || size.height != loaded.config.output_size.height) {
+      loaded.config.output_size = size;
+      resize(loaded.graph, size);
     }
-    executor_ = std::make_unique<Executor>(device_, loaded_.graph, &loaded_.config.scene, options_.compile);
+    executor_ = std::make_unique<Executor>(device_, loaded.graph, &loaded.config.scene, options_.compile);
     executor_->set_gpu_timing(false);  // nothing shows pass times yet (no overlay): frames without time stamps
     settled_ = 0;
   }
@@ -188,8 +310,9 @@ class Loop {
 
   vulkan::Context& context_;
   GLFWwindow* window_;
-  LoadedConfig& loaded_;
+  GraphSource source_;
   const ViewOptions& options_;
+  WindowEvents& events_;
   vulkan::VulkanDevice device_;
   Presenter presenter_;
   std::unique_ptr<Executor> executor_;
@@ -197,11 +320,16 @@ class Loop {
   int settled_ = 0;
   std::vector<uint8_t> shot_;  // the last presented image, for --screenshot
   VkExtent2D shot_extent_{};
+  int disk_changes_ = 0;    // changes the hot reload saw
+  int waited_changes_ = 0;  // of which the script's wait-change consumed
+  struct AbPair {
+    std::string pass, a, b;
+  } ab_;  // the last toggle_ab: Tab repeats it
 };
 
 }  // namespace
 
-int run(LoadedConfig& loaded, const ViewOptions& options) {
+int run(LoadedConfig loaded, const ViewOptions& options) {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   if ((!display || !*display) && (!wayland || !*wayland)) {
@@ -211,13 +339,14 @@ int run(LoadedConfig& loaded, const ViewOptions& options) {
   WindowEvents events;
   Window window = open_window(loaded.config.output_size, options.title, events);
   std::unique_ptr<vulkan::Context> context = create_context(options);
+  bool script_done = true;
   {
-    Loop loop(*context, window.get(), loaded, options);
-    loop.run(events);
+    Loop loop(*context, window.get(), std::move(loaded), options, events);
+    script_done = loop.run();
   }
   const std::vector<std::string> messages = context->take_validation_messages();
   for (const std::string& m : messages) std::cerr << "validation: " << m << "\n";
-  return messages.empty() ? 0 : 1;
+  return messages.empty() && script_done ? 0 : 1;
 }
 
 }  // namespace volgraph::viewer

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "graph/config/config.h"
+#include "viewer/control.h"
 
 namespace volgraph::viewer {
 
@@ -15,6 +16,11 @@ struct ViewOptions {
   int device = -1;           // --device N (vulkan::ContextOptions::device_index)
   CompileOptions compile;
   std::string title;         // the window's title
+  std::string config;        // the config file: reloaded (R, hot reload, the script's reload)
+  const PassRegistry* registry = nullptr;
+  Overrides overrides;       // the command line's --set/--variant/--graph, kept under every reload
+  bool scripted = false;     // --script given: its commands run between frames, then the viewer exits
+  std::vector<ScriptCommand> script;  // read_script's commands (an empty script: exit after none)
 };
 
 // No window can be opened here (no display): the user's setup, exit 2.
@@ -23,9 +29,9 @@ struct NoDisplay : std::runtime_error {
 };
 
 // Opens the window and runs frames of `loaded` (compiled already, so that its errors came
-// first) until ESC, the window's close or options.frames. Returns the exit code: 0, or 1
-// when validation reported messages (printed on stderr). Throws NoDisplay, DeviceError,
-// IoError (the screenshot).
-int run(LoadedConfig& loaded, const ViewOptions& options);
+// first) until ESC, the window's close, options.frames or the script's end. Returns the
+// exit code: 0, or 1 when validation reported messages (printed on stderr) or a script's
+// wait-change timed out. Throws NoDisplay, DeviceError, IoError (the screenshot).
+int run(LoadedConfig loaded, const ViewOptions& options);
 
 }  // namespace volgraph::viewer

@@ -51,6 +51,7 @@ struct GraphOutput {
 
 struct Config {
   std::string file;
+  std::vector<std::string> files;  // every file read, the config then its includes: what a viewer watches for changes
   std::string description;
   Extent output_size{1280, 720, 1};
   Scene scene;

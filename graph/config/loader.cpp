@@ -116,6 +116,7 @@ class Loader {
       diags_.error(from.file.empty() ? Where{path, "", 0} : from, "cannot read \"" + path + "\": " + problem);
       return;
     }
+    config_.files.push_back(path);
     sources_.push_back(std::make_unique<Source>());
     Source& src = *sources_.back();
     src.file = path;

@@ -5,10 +5,13 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <chrono>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -55,6 +58,68 @@ std::vector<float> png_texels(const std::filesystem::path& file, int& width, int
 }
 
 std::string config(const std::string& name) { return testing::source_dir() + "/configs/" + name; }
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Written whole, then renamed over `file`: the viewer's poll never sees half a file.
+void replace_file(const std::filesystem::path& file, const std::string& text) {
+  const std::filesystem::path temporary = file.string() + ".new";
+  std::ofstream(temporary) << text;
+  std::filesystem::rename(temporary, file);
+}
+
+size_t count_of(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+testing::ImageDifference difference(const std::filesystem::path& a, const std::filesystem::path& b) {
+  int w = 0, h = 0, bw = 0, bh = 0;
+  const std::vector<float> x = png_texels(a, w, h), y = png_texels(b, bw, bh);
+  EXPECT_FALSE(x.empty()) << "no image at " << a;
+  EXPECT_FALSE(y.empty()) << "no image at " << b;
+  EXPECT_EQ(x.size(), y.size());
+  if (x.empty() || x.size() != y.size()) return {1.0, 1.0};
+  return testing::compare_images(x, y);
+}
+
+// The golden tests' bounds (tests/gpu/configs_test.cpp).
+void expect_golden_match(const std::filesystem::path& a, const std::filesystem::path& b) {
+  const testing::ImageDifference d = difference(a, b);
+  EXPECT_LE(d.relative_mean_error, 0.01) << a << " against " << b << ": " << d.describe();
+  EXPECT_LE(d.outlier_fraction, 0.005) << a << " against " << b << ": " << d.describe();
+}
+
+void expect_different(const std::filesystem::path& a, const std::filesystem::path& b) {
+  EXPECT_GT(difference(a, b).relative_mean_error, 0.01) << a << " and " << b << " should differ";
+}
+
+// demo_analytic_fog and its graph (an include) copied to a folder of their own, to edit.
+std::filesystem::path copy_analytic_fog(const std::string& folder) {
+  const std::filesystem::path dir = scratch() / folder;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "graphs");
+  std::filesystem::copy_file(config("demo_analytic_fog.json"), dir / "demo_analytic_fog.json");
+  std::filesystem::copy_file(config("graphs/analytic_fog.json"), dir / "graphs" / "analytic_fog.json");
+  return dir;
+}
+
+// Runs `volgraph view CONFIG --script` in a thread; once the script's first screenshot
+// (`first`) is written, `edit` runs, then the viewer's wait-change sees it.
+CommandRun view_with_edit(const std::string& args, const std::filesystem::path& first, const std::function<void()>& edit) {
+  CommandRun run;
+  std::thread viewer([&] { run = volgraph(args); });
+  for (int i = 0; i < 1200 && !std::filesystem::exists(first); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  edit();
+  viewer.join();
+  return run;
+}
 
 TEST(Viewer, ScreenshotMatchesTheHeadlessRender) {
   const std::filesystem::path rendered = scratch() / "render.png", shown = scratch() / "view.png";
@@ -108,6 +173,79 @@ TEST(Viewer, ScreenshotOtherThanPngExitsTwo) {
   EXPECT_EQ(view.exit_code, 2);
   EXPECT_NE(view.errors.find("expected a .png"), std::string::npos) << view.errors;
   EXPECT_FALSE(std::filesystem::exists(shot));
+}
+
+// A variant changed between frames (the control API through --script) gives what
+// `render --variant` gives; a refused parameter keeps that graph, with the loader's message.
+TEST(Viewer, ScriptVariantMatchesRenderVariant) {
+  const std::filesystem::path dir = scratch() / "variant", script = dir / "script.txt";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path before = dir / "before.png", shown = dir / "view.png", rendered = dir / "render.png",
+                              plain = dir / "plain.png";
+  std::filesystem::remove(shown);
+  std::ofstream(script) << "frames 3\nscreenshot " << before.string() << "\nvariant final reinhard\n"
+                        << "param final exposure 99\nframes 3\nscreenshot " << shown.string() << "\n";
+  const std::string common = config("demo_fog.json") + " --size 160x90 --validation";
+  const CommandRun view = volgraph("view " + common + " --script " + script.string());
+  ASSERT_EQ(view.exit_code, 0) << view.errors;
+  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  EXPECT_EQ(count_of(view.errors, "parameter \"exposure\" expects a number in [-20, 20], got 99"), 1u) << view.errors;
+  ASSERT_EQ(volgraph("render " + common + " --frames 3 --variant final=reinhard -o " + rendered.string()).exit_code, 0);
+  ASSERT_EQ(volgraph("render " + common + " --frames 3 -o " + plain.string()).exit_code, 0);
+  expect_golden_match(shown, rendered);
+  expect_golden_match(before, plain);
+  expect_different(shown, plain);  // the variant did change the image
+}
+
+// Hot reload: an include edited while the viewer runs is reloaded; the image is the
+// edited config's.
+TEST(Viewer, EditedIncludeIsReloaded) {
+  const std::filesystem::path dir = copy_analytic_fog("reload"), script = dir / "script.txt";
+  const std::filesystem::path before = dir / "before.png", after = dir / "after.png", rendered = dir / "render.png";
+  std::ofstream(script) << "frames 2\nscreenshot " << before.string() << "\nwait-change\nframes 2\nscreenshot " << after.string() << "\n";
+  const std::filesystem::path include = dir / "graphs" / "analytic_fog.json";
+  const std::string args = (dir / "demo_analytic_fog.json").string() + " --size 160x90 --validation";
+  const CommandRun view = view_with_edit("view " + args + " --script " + script.string(), before, [&] {
+    std::string text = read_text(include);
+    text.replace(text.find("\"aces\""), 6, "\"reinhard\"");
+    replace_file(include, text);
+  });
+  ASSERT_EQ(view.exit_code, 0) << view.errors;
+  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  ASSERT_EQ(volgraph("render " + args + " --frames 2 -o " + rendered.string()).exit_code, 0);
+  expect_golden_match(after, rendered);
+  expect_different(after, before);
+}
+
+// A bad edit keeps the last good graph: the frames after it equal the ones before, and
+// the loader's message (file, JSON pointer) is printed once.
+TEST(Viewer, BadEditKeepsTheLastGoodFrame) {
+  const std::filesystem::path dir = copy_analytic_fog("bad_edit"), script = dir / "script.txt";
+  const std::filesystem::path before = dir / "before.png", after = dir / "after.png";
+  std::ofstream(script) << "frames 2\nscreenshot " << before.string() << "\nwait-change\nframes 2\nscreenshot " << after.string() << "\n";
+  const std::filesystem::path include = dir / "graphs" / "analytic_fog.json";
+  const CommandRun view = view_with_edit("view " + (dir / "demo_analytic_fog.json").string() + " --size 160x90 --validation --script " + script.string(),
+                                         before, [&] {
+                                           std::string text = read_text(include);
+                                           text.replace(text.find("\"aces\""), 6, "\"nope\"");
+                                           replace_file(include, text);
+                                         });
+  ASSERT_EQ(view.exit_code, 0) << view.errors;
+  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  EXPECT_EQ(count_of(view.errors, "analytic_fog.json"), 1u) << view.errors;
+  EXPECT_EQ(count_of(view.errors, "/graph/passes/3/variant"), 1u) << view.errors;
+  EXPECT_EQ(read_text(after), read_text(before));
+}
+
+// A script is checked before any window opens: one message with the file and line, exit 2.
+TEST(Viewer, BadScriptExitsTwoBeforeAnyWindow) {
+  const std::filesystem::path script = scratch() / "bad_script.txt";
+  std::ofstream(script) << "frames 2\nzoom 3\n";
+  const CommandRun view = volgraph("view " + config("demo_fog.json") + " --script " + script.string(), "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(view.exit_code, 2);
+  EXPECT_NE(view.errors.find("bad_script.txt"), std::string::npos) << view.errors;
+  EXPECT_NE(view.errors.find("unknown command \"zoom\""), std::string::npos) << view.errors;
+  EXPECT_EQ(view.errors.find("display"), std::string::npos) << view.errors;
 }
 
 TEST(Viewer, WebGpuSurfaceIsNotWrittenYet) {
