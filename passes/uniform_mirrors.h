@@ -4,8 +4,9 @@
 // Each lists its members' offsets in offsets() (passes/plumbing/programs.h), which the
 // pass's check at setup uses. The blocks several passes share are next to their packing:
 // fog::GpuFogFrame (fog/fog_frame.h), plumbing::GpuLightList (plumbing/light_list.h),
-// plumbing::ShadowViewBlock (plumbing/shadow_view.h), plumbing::GpuObjectBlock
-// (plumbing/scene_geometry.h), fog::GpuTemporalParams (fog/temporal.h).
+// plumbing::ShadowViewBlock (plumbing/shadow_view.h) and plumbing::GpuObjectBlock
+// (plumbing/scene_geometry.h). The structs written once for GLSL and C++ are in
+// shaders/include/ (GPU_STRUCT, gpu_struct.h).
 #pragma once
 
 #include <array>

@@ -7,6 +7,7 @@
 #include "include/atmosphere_bruneton.glsl"
 #include "include/atmosphere_sky_lookup.glsl"
 #include "include/view_rays.glsl"
+#include "include/bruneton_table_params.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
@@ -22,10 +23,7 @@ layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4) uniform texture3D scattering;
 layout(set = 0, binding = 8) uniform texture3D single_mie_scattering;  // single Mie (rgb), same shape
-layout(set = 0, binding = 5) uniform Table {
-  ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
-  ivec4 order;  // unused here
-} table;
+layout(set = 0, binding = 5) uniform BrunetonTableParamsBlock { BrunetonTableParams table; };
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image3D aerial_scattering;
 layout(set = 0, binding = 7, rgba16f) uniform writeonly image3D aerial_transmittance;
 

@@ -5,14 +5,12 @@
 // ComputeDirectIrradianceTexture) into delta_irradiance, and the irradiance sum started at
 // 0 (the table holds the sky's irradiance alone; the sun's is added at lookup).
 #include "include/atmosphere_bruneton.glsl"
+#include "include/bruneton_table_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
-layout(set = 0, binding = 1) uniform Params {
-  ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
-  ivec4 order;  // x: the scattering order this step computes
-} params;
+layout(set = 0, binding = 1) uniform BrunetonTableParamsBlock { BrunetonTableParams params; };
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D delta_irradiance;

@@ -5,14 +5,12 @@
 // ComputeIndirectIrradiance: 16 × 64 directions of the upper hemisphere) into
 // delta_irradiance, and the irradiance sum's next value (the previous one plus it).
 #include "include/atmosphere_bruneton.glsl"
+#include "include/bruneton_table_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
-layout(set = 0, binding = 1) uniform Params {
-  ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
-  ivec4 order;  // x: the scattering order n of the step (its irradiance is of order n − 1); y: 1 when n is within the pass's orders
-} params;
+layout(set = 0, binding = 1) uniform BrunetonTableParamsBlock { BrunetonTableParams params; };
 layout(set = 0, binding = 2) uniform texture3D delta_rayleigh;
 layout(set = 0, binding = 3) uniform texture3D delta_mie;
 layout(set = 0, binding = 4) uniform texture3D delta_multiple;

@@ -6,14 +6,12 @@
 // into delta_multiple, and the scattering sum's next value: the previous one plus it over
 // the Rayleigh phase (the table's rgb is read with p_R(nu) at lookup).
 #include "include/atmosphere_bruneton.glsl"
+#include "include/bruneton_table_params.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
-layout(set = 0, binding = 1) uniform Params {
-  ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
-  ivec4 order;  // x: the scattering order n this step computes; y: 1 when n is within the pass's orders (else only the sum is carried on); z: trapezoids along each ray
-} params;
+layout(set = 0, binding = 1) uniform BrunetonTableParamsBlock { BrunetonTableParams params; };
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4) uniform texture3D density;

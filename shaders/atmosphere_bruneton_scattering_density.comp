@@ -6,14 +6,12 @@
 // tables — single Rayleigh and Mie with their phases for n = 2, delta_multiple above — and
 // the ground's light of order n − 2 from delta_irradiance through its albedo).
 #include "include/atmosphere_bruneton.glsl"
+#include "include/bruneton_table_params.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
-layout(set = 0, binding = 1) uniform Params {
-  ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
-  ivec4 order;  // x: the scattering order n this step is for
-} params;
+layout(set = 0, binding = 1) uniform BrunetonTableParamsBlock { BrunetonTableParams params; };
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4) uniform texture3D delta_rayleigh;

@@ -6,14 +6,12 @@
 // into delta_rayleigh and delta_mie, the scattering sum started as Rayleigh (rgb), and the
 // single Mie table (rgb: Bruneton 2017 without COMBINED_SCATTERING_TEXTURES).
 #include "include/atmosphere_bruneton.glsl"
+#include "include/bruneton_table_params.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
-layout(set = 0, binding = 1) uniform Params {
-  ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
-  ivec4 order;  // x: the scattering order this step computes; z: trapezoids along each ray
-} params;
+layout(set = 0, binding = 1) uniform BrunetonTableParamsBlock { BrunetonTableParams params; };
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image3D delta_rayleigh;

@@ -8,6 +8,7 @@
 // transmittance to it, all times the sun's irradiance; elsewhere the scene's colour.
 #include "include/atmosphere_bruneton.glsl"
 #include "include/atmosphere_sky_frame.glsl"
+#include "include/bruneton_table_params.h"
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
 layout(set = 0, binding = 1) uniform Frame { SkyPassFrame f; } frame;
@@ -18,10 +19,7 @@ layout(set = 0, binding = 5) uniform texture2D transmittance;
 layout(set = 0, binding = 8) uniform texture3D scattering;
 layout(set = 0, binding = 9) uniform texture3D single_mie_scattering;
 layout(set = 0, binding = 10) uniform texture2D irradiance;
-layout(set = 0, binding = 11) uniform Table {
-  ivec4 size;   // the scattering table's nu, mu_s, mu, r texels
-  ivec4 order;  // unused here
-} table;
+layout(set = 0, binding = 11) uniform BrunetonTableParamsBlock { BrunetonTableParams table; };
 
 // The Lambertian ground where the ray (r, mu) meets it, per unit E: albedo / π × (the sun's
 // and the sky's irradiance there) × the transmittance to it (Bruneton 2017's demo ground).

@@ -8,6 +8,7 @@
 // frame, this frame's value passes through unchanged (passes/fog/froxel_temporal.cpp).
 #include "include/fog_frame.glsl"
 #include "include/temporal_blend.glsl"
+#include "include/temporal_params.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
@@ -17,11 +18,7 @@ layout(set = 0, binding = 2) uniform texture3D history;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4) uniform sampler trilinear;  // linear filtering: trilinear in a 3D texture
 layout(set = 0, binding = 5, rgba16f) uniform writeonly image3D accumulated;
-layout(set = 0, binding = 6) uniform Params {
-  ViewRays previous_view;  // the camera of the frame the history holds
-  vec4 blend;              // x: alpha (weight of a new frame), y: 1 when the history holds the last frame,
-                           // z: 1 to reproject, 0 to read the history at the same froxel
-} params;
+layout(set = 0, binding = 6) uniform TemporalParamsBlock { TemporalParams params; };
 
 void main() {
   const uvec3 id = gl_GlobalInvocationID;

@@ -11,6 +11,7 @@
 // scattering, the point's view depth (m) in the transmittance.
 #include "include/fog_frame.glsl"
 #include "include/temporal_blend.glsl"
+#include "include/temporal_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
@@ -24,10 +25,7 @@ layout(set = 0, binding = 6) uniform sampler nearest;
 layout(set = 0, binding = 7) uniform sampler bilinear;
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D accumulated_scattering;
 layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D accumulated_transmittance;
-layout(set = 0, binding = 10) uniform Params {
-  ViewRays previous_view;  // the camera of the frame the history holds
-  vec4 blend;              // x: alpha, y: 1 when the history holds the last frame, z: 1 to reproject
-} params;
+layout(set = 0, binding = 10) uniform TemporalParamsBlock { TemporalParams params; };
 
 // This texel's point: on its ray at the scene's depth there (the far plane where
 // nothing was drawn). w: its view depth.

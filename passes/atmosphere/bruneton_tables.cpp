@@ -169,7 +169,7 @@ class BrunetonTablesExecution final : public PassExecution {
     plumbing::check_wrapped_uniform_mirror<physics::GpuAtmosphere>(multiple_, bruneton_multiple_scattering_shader::atmosphere, atmosphere_label);
     const int orders = int(s.param(t_.orders));
     for (int n = 1; n <= kMaxOrders; ++n) {
-      GpuBrunetonTableParams params{};
+      gpu::BrunetonTableParams params{};
       params.size[0] = int32_t(s.param(t_.nu));
       params.size[1] = int32_t(s.param(t_.nu_mu_s) / s.param(t_.nu));
       params.size[2] = int32_t(s.param(t_.mu));
@@ -178,7 +178,7 @@ class BrunetonTablesExecution final : public PassExecution {
       params.order[1] = n <= orders ? 1 : 0;
       params.order[2] = int32_t(n == 1 ? s.param(t_.single_samples) : s.param(t_.samples));
       const std::string label = s.pass_name() + " params (order " + std::to_string(n) + ")";
-      params_[size_t(n - 1)] = plumbing::create_checked_uniform_block(
+      params_[size_t(n - 1)] = plumbing::create_shared_uniform_block(
           s.device, n == 1 ? single_ : multiple_,
           n == 1 ? bruneton_single_scattering_shader::params : bruneton_multiple_scattering_shader::params, label, params);
     }

@@ -104,7 +104,7 @@ class SkyExecution final : public PassExecution {
     atmosphere_.setup(s, program_);
     plumbing::check_wrapped_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuSkyFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
-    if (s.variant_is(t_.bruneton)) table_ = plumbing::create_checked_uniform_block(s.device, program_, 0, atmosphere_sky_bruneton_shader::table.binding, s.name() + " table", table_shape(s));
+    if (s.variant_is(t_.bruneton)) table_ = plumbing::create_shared_uniform_block(s.device, program_, atmosphere_sky_bruneton_shader::table, s.name() + " table", table_shape(s));
   }
 
   void record(PassContext& c) override {
@@ -150,7 +150,7 @@ class SkyExecution final : public PassExecution {
 
   // bruneton: the scattering table's shape, its nu slices those of the tables pass that
   // made it (atmosphere_bruneton_tables.nu: one source, so a reader never disagrees).
-  GpuBrunetonTableParams table_shape(const PassSetup& s) const {
+  gpu::BrunetonTableParams table_shape(const PassSetup& s) const {
     const Extent e = s.extent(t_.scattering);
     return bruneton_table_shape(e.width, e.height, e.depth, s.producer_param(t_.scattering, "nu"));
   }

@@ -15,18 +15,10 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/pass_decl.h"
 #include "passes/fog/fog_frame.h"
+#include "shaders/include/temporal_params.h"
 #include "passes/plumbing/programs.h"
 
 namespace volgraph::fog {
-
-// std140 mirror of the temporal shaders' Params block.
-struct GpuTemporalParams {
-  gpu::ViewRays previous_view;
-  float blend[4];  // alpha, history valid (0/1), reproject (0/1), unused
-  static constexpr std::array<uint64_t, 2> offsets() {
-    return {offsetof(GpuTemporalParams, previous_view), offsetof(GpuTemporalParams, blend)};
-  }
-};
 
 // The passes' shared parameters, alpha (the weight of a new frame once the history is
 // long) and reproject; a pass's table derives from it and adds its variants and slots.
@@ -60,7 +52,7 @@ class TemporalExecution : public PassExecution {
   rhi::BufferId params() const { return params_; }
 
  private:
-  GpuTemporalParams frame_params(const PassContext& c);
+  gpu::TemporalParams frame_params(const PassContext& c);
 
   const TemporalTable& table_;
   std::string shader_;
