@@ -7,17 +7,12 @@
 #include "include/atmosphere_sky.glsl"
 #include "include/atmosphere_sky_lookup.glsl"
 #include "include/view_rays.glsl"
+#include "include/aerial_perspective_frame.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(set = 0, binding = 0) uniform Atmosphere { AtmosphereParameters a; } atmosphere;
-layout(set = 0, binding = 1) uniform Frame {
-  ViewRays view;
-  vec4 planet_up;   // xyz: the camera's zenith, w: its radius
-  vec4 toward_sun;  // xyz: toward the sun, w: its zenith cosine at the camera
-  vec4 volume;      // x: metres a slice, y: 1 when there is a sun
-  vec4 sampling;    // min and max samples, the length taking the max (m), where in its step a sample sits
-} frame;
+layout(set = 0, binding = 1) uniform AerialPerspectiveFrameBlock { AerialPerspectiveFrame frame; };
 layout(set = 0, binding = 2) uniform texture2D transmittance;
 layout(set = 0, binding = 3) uniform sampler nearest;
 layout(set = 0, binding = 4) uniform texture2D multiscattering;

@@ -76,16 +76,16 @@ class AerialPerspectiveExecution final : public PassExecution {
     bruneton_ = s.variant_is(t_.bruneton);  // the loader made sure the variant's input is wired
     program_ = plumbing::create_compute_program(s.device, bruneton_ ? "atmosphere_aerial_perspective_bruneton.comp" : "atmosphere_aerial_perspective.comp");
     atmosphere_.setup(s, program_);
-    plumbing::check_uniform_mirror<GpuAerialPerspectiveFrame>(program_, 0, 1, s.name() + " frame");
-    frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuAerialPerspectiveFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    plumbing::check_wrapped_uniform_mirror<gpu::AerialPerspectiveFrame>(program_, 0, 1, s.name() + " frame");
+    frame_ = s.device.create_buffer({s.name() + " frame", sizeof(gpu::AerialPerspectiveFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
     if (bruneton_) table_ = plumbing::create_shared_uniform_block(s.device, program_, atmosphere_aerial_perspective_bruneton_shader::table, s.name() + " table", table_shape(s));
   }
 
   void record(PassContext& c) override {
-    const GpuAerialPerspectiveFrame frame = aerial_frame(c);
+    const gpu::AerialPerspectiveFrame frame = aerial_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     // The volumes' frame for their readers, whichever variant fills them.
-    const GpuAerialLookup lookup = aerial_lookup(c);
+    const gpu::AerialLookup lookup = aerial_lookup(c);
     c.encoder.update_buffer(c.buffer(t_.lookup), 0, std::as_bytes(std::span(&lookup, 1)));
     if (bruneton_) {
       record_bruneton(c);
@@ -120,12 +120,12 @@ class AerialPerspectiveExecution final : public PassExecution {
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, size.depth});
   }
 
-  GpuAerialPerspectiveFrame aerial_frame(const PassContext& c) const {
+  gpu::AerialPerspectiveFrame aerial_frame(const PassContext& c) const {
     const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
-    GpuAerialPerspectiveFrame f{};
+    gpu::AerialPerspectiveFrame f{};
     f.view = fog::pack_view_rays(c.scene->camera, c.frame_size());
-    std::copy(std::begin(planet.planet_up), std::end(planet.planet_up), f.planet_up);
-    std::copy(std::begin(planet.toward_sun), std::end(planet.toward_sun), f.toward_sun);
+    f.planet_up = gpu::vec4_of(planet.planet_up);
+    f.toward_sun = gpu::vec4_of(planet.toward_sun);
     f.volume[0] = float(c.param(t_.distance) / double(c.param(t_.slices)));
     f.volume[1] = planet.has_sun ? 1.0f : 0.0f;
     const float samples = float(c.param(t_.samples));
@@ -136,13 +136,14 @@ class AerialPerspectiveExecution final : public PassExecution {
     return f;
   }
 
-  GpuAerialLookup aerial_lookup(const PassContext& c) const {
-    GpuAerialLookup l{};
+  gpu::AerialLookup aerial_lookup(const PassContext& c) const {
+    gpu::AerialLookup l{};
     l.view = fog::pack_view_rays(c.scene->camera, c.frame_size());
     l.volume[0] = float(c.param(t_.distance));
     l.volume[1] = float(c.param(t_.slices));
     const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
-    std::copy(std::begin(planet.sun), std::begin(planet.sun) + 3, l.sun);  // its w stays 0: the block has no flag
+    l.sun = gpu::vec4_of(planet.sun);
+    l.sun.w = 0;  // the block has no flag
     return l;
   }
 

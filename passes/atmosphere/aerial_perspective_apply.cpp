@@ -45,7 +45,7 @@ class AerialPerspectiveApplyExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     draws_.prepare(s, t_.color, "aerial_perspective_apply_transmittance.frag", "aerial_perspective_apply_scattering.frag");
     for (const plumbing::RenderProgram* p : draws_.programs()) {
-      plumbing::check_wrapped_uniform_mirror<GpuAerialLookup>(*p, 0, 0, s.name() + " lookup");
+      plumbing::check_wrapped_uniform_mirror<gpu::AerialLookup>(*p, 0, 0, s.name() + " lookup");
     }
   }
 

@@ -88,7 +88,7 @@ struct SkyTable : PassTable {
                                "the scene's linear radiance (scene.color); the sky drawn behind its surfaces");
 };
 
-// Every variant's shader declares the atmosphere, the frame (GpuSkyFrame), the depth, a
+// Every variant's shader declares the atmosphere, the frame (gpu::SkyPassFrame), the depth, a
 // nearest sampler and the transmittance LUT at the same bindings (bound by
 // atmosphere_sky.frag's names), and a linear sampler but bruneton; then its own inputs.
 
@@ -102,14 +102,14 @@ class SkyExecution final : public PassExecution {
     pipeline.colors = {{s.desc(t_.sky_color).format, rhi::BlendMode::replace}};
     program_ = plumbing::create_render_program(s.device, pipeline, "fullscreen.vert", shader(s));
     atmosphere_.setup(s, program_);
-    plumbing::check_wrapped_uniform_mirror<GpuSkyFrame>(program_, 0, 1, s.name() + " frame");
-    frame_ = s.device.create_buffer({s.name() + " frame", sizeof(GpuSkyFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    plumbing::check_wrapped_uniform_mirror<gpu::SkyPassFrame>(program_, 0, 1, s.name() + " frame");
+    frame_ = s.device.create_buffer({s.name() + " frame", sizeof(gpu::SkyPassFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
     if (s.variant_is(t_.bruneton)) table_ = plumbing::create_shared_uniform_block(s.device, program_, atmosphere_sky_bruneton_shader::table, s.name() + " table", table_shape(s));
   }
 
   void record(PassContext& c) override {
     namespace shared = atmosphere_sky_shader;
-    const GpuSkyFrame frame = sky_frame(c);
+    const gpu::SkyPassFrame frame = sky_frame(c);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     std::vector<rhi::BoundResource> entries = {
         bind(shared::atmosphere, atmosphere_.write(c)), bind(shared::frame, frame_), bind(shared::depth, c.view(t_.depth)),
@@ -157,14 +157,14 @@ class SkyExecution final : public PassExecution {
 
   bool has_multiscattering(const PassContext& c) const { return c.bound(t_.multiscattering); }
 
-  GpuSkyFrame sky_frame(const PassContext& c) const {
+  gpu::SkyPassFrame sky_frame(const PassContext& c) const {
     const Atmosphere& a = *c.scene->atmosphere;
     const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
-    GpuSkyFrame f{};
+    gpu::SkyPassFrame f{};
     f.view = fog::pack_view_rays(c.scene->camera, c.extent(t_.sky_color));
-    std::copy(std::begin(planet.planet_up), std::end(planet.planet_up), f.planet_up);
-    std::copy(std::begin(planet.toward_sun), std::end(planet.toward_sun), f.toward_sun);
-    std::copy(std::begin(planet.sun), std::end(planet.sun), f.sun);
+    f.planet_up = gpu::vec4_of(planet.planet_up);
+    f.toward_sun = gpu::vec4_of(planet.toward_sun);
+    f.sun = gpu::vec4_of(planet.sun);
     f.sun_disk[0] = float(a.sun_angular_radius);
     f.sun_disk[1] = c.param(t_.sun_disk) ? 1.0f : 0.0f;
     f.sun_disk[2] = c.param(t_.limb_darkening) ? 1.0f : 0.0f;

@@ -47,6 +47,7 @@
 // by the plan checker and timed like any other.
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <span>
 
 #include "graph/execute/pass_execution.h"
@@ -207,8 +208,10 @@ class LightVolumeExecution final : public PassExecution {
       face_vertices_ = uint32_t(indices.size());
       indices_ = buffer(s, "indices", std::as_bytes(std::span(indices)), rhi::buffer_usage::index);
     }
-    GpuLightVolumeParams params{};
-    physics::to_floats(faces_clip(s.scene->camera, double(out.width) / double(out.height)), params.camera_clip);
+    gpu::LightVolumeParams params{};
+    float camera_clip[16];
+    physics::to_floats(faces_clip(s.scene->camera, double(out.width) / double(out.height)), camera_clip);
+    std::memcpy(&params.camera_clip, camera_clip, sizeof(camera_clip));
     params.sizes[0] = int32_t(grid);
     params.sizes[2] = int32_t(size.width);
     params.sizes[3] = int32_t(size.height);
@@ -275,13 +278,13 @@ class LightVolumeExecution final : public PassExecution {
                       view = s.pass_name() + " shadow view";
     check_wrapped_uniform_mirror<fog::GpuFogFrame>(ends_program_, light_volume_ends_shader::frame, frame);
     check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(ends_program_, light_volume_ends_shader::shadow, view);
-    check_wrapped_uniform_mirror<GpuLightVolumeParams>(ends_program_, light_volume_ends_shader::params, params);
+    check_wrapped_uniform_mirror<gpu::LightVolumeParams>(ends_program_, light_volume_ends_shader::params, params);
     check_wrapped_uniform_mirror<fog::GpuFogFrame>(resolve_, light_volume_resolve_shader::frame, frame);
     if (!shadowed_) return;
     check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(unproject_, light_volume_unproject_shader::shadow, view);
     check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(cells_program_, light_volume_cells_shader::shadow, view);
-    check_wrapped_uniform_mirror<GpuLightVolumeParams>(cells_program_, light_volume_cells_shader::params, params);
-    check_wrapped_uniform_mirror<GpuLightVolumeParams>(faces_, light_volume_faces_frag_shader::params, params);
+    check_wrapped_uniform_mirror<gpu::LightVolumeParams>(cells_program_, light_volume_cells_shader::params, params);
+    check_wrapped_uniform_mirror<gpu::LightVolumeParams>(faces_, light_volume_faces_frag_shader::params, params);
     check_wrapped_uniform_mirror<fog::GpuFogFrame>(faces_, light_volume_faces_frag_shader::frame, frame);
   }
 

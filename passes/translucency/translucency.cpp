@@ -244,7 +244,7 @@ class TranslucencyExecution final : public PassExecution {
     plumbing::check_uniform_mirror<GpuSceneFrame>(*like, shader::frame, s.name() + " frame (the scene pass's)");
     plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(*like, shader::shadow, s.name() + " light_view");
     plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(*like, shader::fog, s.name() + " fog_frame");
-    plumbing::check_wrapped_uniform_mirror<GpuAerialLookup>(*like, shader::air, s.name() + " aerial_lookup");
+    plumbing::check_wrapped_uniform_mirror<gpu::AerialLookup>(*like, shader::air, s.name() + " aerial_lookup");
     block_ = plumbing::create_checked_uniform_block(s.device, *like, shader::translucency, s.name() + " translucency", GpuTranslucencyBlock{});
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, *like);
     textures_ = std::make_unique<plumbing::TextureCache>(s.device);

@@ -10,12 +10,7 @@
 
 #include "view_rays.glsl"
 
-// passes/uniform_mirrors.h GpuAerialLookup.
-struct AerialLookup {
-  ViewRays view;  // the camera's rays; position.w its near plane, forward.w its far one
-  vec4 volume;    // x: the distance the volume reaches (m), y: its slices
-  vec4 sun;       // rgb: the sun's E at the top of the atmosphere (0 without a sun)
-};
+#include "aerial_lookup.h"  // struct AerialLookup
 
 struct AerialAtPoint {
   vec3 in_scatter;     // radiance added (the sun's E included)

@@ -41,6 +41,9 @@ using vec4 = Vector<float, 4, 16>;
 using ivec4 = Vector<int32_t, 4, 16>;
 using uvec4 = Vector<uint32_t, 4, 16>;
 struct alignas(16) mat4 { vec4 columns[4]; };  // column-major, as GLSL
+
+// A vec4 of four floats the host computed (float[4] arrays of physics/).
+constexpr vec4 vec4_of(const float (&v)[4]) { return {v[0], v[1], v[2], v[3]}; }
 }  // namespace volgraph::gpu
 
 #define GPU_BEGIN namespace volgraph::gpu {

@@ -6,10 +6,7 @@
 #define VOLGRAPH_LIGHT_VOLUME_GLSL
 #include "fog_frame.glsl"
 
-struct LightVolumeParams {
-  mat4 camera_clip;  // world → the camera's clip space: w the view depth, near plane 1e-3·near, no far plane
-  ivec4 sizes;       // x: cells per side of the grid over the shadow map; z, w: the fog images' width and height
-};
+#include "light_volume_params.h"  // struct LightVolumeParams
 
 // light_frame: texels 0–3 the columns of the shadow map's clip space → world (the inverse
 // of its view-projection), texel 4: x the sign of that map's orientation (its

@@ -212,7 +212,6 @@ TEST(UniformMirrors, PassBlocksMatchTheirShaders) {
   for (const char* shader : {"scene.vert", "scene.frag", "scene_shadowed.frag", "scene_media_shadowed.frag", "shadow.vert"}) {
     EXPECT_EQ(mirror_error<plumbing::GpuObjectBlock>(shader, 1, 0, "GpuObjectBlock"), "") << shader;
   }
-  EXPECT_EQ(mirror_error<GpuAerialPerspectiveFrame>("atmosphere_aerial_perspective.comp", 0, 1, "GpuAerialPerspectiveFrame"), "");
 }
 
 // ---- Blocks holding one shared struct ---------------------------------------------------
@@ -238,12 +237,6 @@ TEST(UniformMirrors, AtmosphereBlocksMatch) {
                              "atmosphere_sky.frag", "atmosphere_sky_raymarch.frag", "atmosphere_aerial_perspective.comp"}) {
     EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>(shader, 0, 0, "GpuAtmosphere"), "") << shader;
   }
-  for (const char* shader : {"atmosphere_sky.frag", "atmosphere_sky_raymarch.frag"}) {
-    EXPECT_EQ(wrapped_error<GpuSkyFrame>(shader, 0, 1, "GpuSkyFrame"), "") << shader;
-  }
-  for (const char* shader : {"aerial_perspective_apply_transmittance.frag", "aerial_perspective_apply_scattering.frag"}) {
-    EXPECT_EQ(wrapped_error<GpuAerialLookup>(shader, 0, 0, "GpuAerialLookup"), "") << shader;
-  }
   // Bruneton 2017's tables and their readers.
   for (const char* shader : {"atmosphere_bruneton_direct_irradiance.comp", "atmosphere_bruneton_single_scattering.comp",
                              "atmosphere_bruneton_scattering_density.comp", "atmosphere_bruneton_indirect_irradiance.comp",
@@ -251,8 +244,6 @@ TEST(UniformMirrors, AtmosphereBlocksMatch) {
                              "atmosphere_sky_bruneton.frag"}) {
     EXPECT_EQ(wrapped_error<physics::GpuAtmosphere>(shader, 0, 0, "GpuAtmosphere"), "") << shader;
   }
-  EXPECT_EQ(mirror_error<GpuAerialPerspectiveFrame>("atmosphere_aerial_perspective_bruneton.comp", 0, 1, "GpuAerialPerspectiveFrame"), "");
-  EXPECT_EQ(wrapped_error<GpuSkyFrame>("atmosphere_sky_bruneton.frag", 0, 1, "GpuSkyFrame"), "");
 }
 
 TEST(UniformMirrors, ShadowViewBlocksMatch) {
@@ -269,18 +260,6 @@ TEST(UniformMirrors, ShadowViewBlocksMatch) {
   }
 }
 
-TEST(UniformMirrors, LightVolumeParamsBlocksMatch) {
-  struct At {
-    const char* shader;
-    uint32_t binding;
-  };
-  for (const At at : std::initializer_list<At>{{"light_volume_cells.frag", 3}, {"light_volume_ends.frag", 4},
-                                               {"light_volume_faces.vert", 0}, {"light_volume_surface.vert", 0},
-                                               {"light_volume_faces.frag", 0}}) {
-    EXPECT_EQ(wrapped_error<GpuLightVolumeParams>(at.shader, 0, at.binding, "GpuLightVolumeParams"), "") << at.shader;
-  }
-}
-
 // ---- The structs inside blocks, member by member ----------------------------------------
 
 TEST(UniformMirrors, NestedStructsMatchTheirGlsl) {
@@ -291,8 +270,6 @@ TEST(UniformMirrors, NestedStructsMatchTheirGlsl) {
   EXPECT_NESTED_MATCH(physics::GpuMediumVolume, "MediumVolume");
   EXPECT_NESTED_MATCH(physics::GpuMediumCoefficients, "MediumCoefficients");
   EXPECT_NESTED_MATCH(plumbing::ShadowViewBlock, "ShadowView");
-  EXPECT_NESTED_MATCH(GpuLightVolumeParams, "LightVolumeParams");
-  EXPECT_NESTED_MATCH(GpuSkyFrame, "SkyPassFrame");
 }
 
 // The reader agrees with reflection where both see a struct: FogFrame is Frame's only
