@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <thread>
+#include <type_traits>
 
 #include "physics/cloud_density.h"
 #include "physics/cloud_lighting.h"
@@ -66,7 +67,48 @@ bool sphere_roots(const Vec3& o, const Vec3& d, const Vec3& c, double r, double&
   return true;
 }
 
+// Parameter `name` of graph pass `pass` as T, if the pass declares it and has values.
+template <typename T>
+void read_param(const GraphPass& pass, const std::vector<ParamValue>& values, const char* name, T& to) {
+  const int k = pass.decl->param_index(name);
+  if (k < 0 || size_t(k) >= values.size()) return;
+  if (const auto* v = std::get_if<T>(&values[size_t(k)])) {
+    to = *v;
+  } else if constexpr (std::is_same_v<T, int64_t>) {  // an integer the loader kept as a number
+    if (const auto* d = std::get_if<double>(&values[size_t(k)])) to = int64_t(*d);
+  }
+}
+
 }  // namespace
+
+CloudReferenceSettings cloud_reference_settings(const Graph& graph, const std::vector<std::vector<ParamValue>>& params,
+                                                CloudReferenceSettings k) {
+  bool noise = false, march = false;
+  for (size_t i = 0; i < graph.passes.size(); ++i) {
+    const GraphPass& pass = graph.passes[i];
+    if (!pass.decl) continue;
+    // The graph pass's own values where it holds them, else the loader's per-pass list.
+    static const std::vector<ParamValue> none;
+    const std::vector<ParamValue>& v = !pass.params.empty() ? pass.params : (i < params.size() ? params[i] : none);
+    if (!noise && pass.decl->name == "cloud_noise") {
+      noise = true;
+      int64_t shape = k.shape_size, detail = k.detail_size, curl = k.curl_size, seed = k.seed;
+      read_param(pass, v, "shape_size", shape), read_param(pass, v, "detail_size", detail), read_param(pass, v, "curl_size", curl);
+      read_param(pass, v, "seed", seed);
+      k.shape_size = int(shape), k.detail_size = int(detail), k.curl_size = int(curl), k.seed = uint32_t(seed);
+    } else if (!march && pass.decl->name == "cloud_march") {
+      march = true;
+      int64_t octaves = k.octaves;
+      read_param(pass, v, "octaves", octaves);
+      k.octaves = int(octaves);
+      read_param(pass, v, "light_distance", k.light_distance), read_param(pass, v, "max_distance", k.max_distance);
+      read_param(pass, v, "curl_strength", k.curl_strength), read_param(pass, v, "a", k.a), read_param(pass, v, "b", k.b);
+      read_param(pass, v, "c", k.c), read_param(pass, v, "g_forward", k.g_forward), read_param(pass, v, "g_back", k.g_back);
+      read_param(pass, v, "back_weight", k.back_weight), read_param(pass, v, "ambient", k.ambient);
+    }
+  }
+  return k;
+}
 
 float quantise_unorm8(float v) { return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f; }
 

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "graph/graph.h"
 #include "graph/scene/scene.h"
 
 namespace volgraph::reference {
@@ -28,7 +29,7 @@ namespace volgraph::reference {
 inline constexpr double kCloudReferenceTolerance = 2e-3;
 
 // cloud_noise's and cloud_march's parameters the reference uses: their defaults
-// (passes/clouds/*.cpp), the pass parameters of a config being no part of the scene.
+// (passes/clouds/*.cpp) unless taken from a config's graph (cloud_reference_settings).
 struct CloudReferenceSettings {
   int shape_size = 128, detail_size = 32, curl_size = 128;
   uint32_t seed = 0;
@@ -40,6 +41,12 @@ struct CloudReferenceSettings {
   // The quadrature (not the GPU's): equal steps over the view segment and toward the sun.
   int view_steps = 2048, light_steps = 128;
 };
+
+// The settings a loaded graph gives: its first cloud_noise's sizes and seed and its first
+// cloud_march's parameters (each pass's defaults where the graph has none), the quadrature
+// of `base`. `params` is LoadedConfig::params (per graph pass).
+CloudReferenceSettings cloud_reference_settings(const Graph& graph, const std::vector<std::vector<ParamValue>>& params,
+                                                CloudReferenceSettings base = {});
 
 // An rgba8 unorm texture as the GPU holds it: channels quantised, sampled trilinearly with
 // repeat wrap (level 0; compute shaders have no derivatives).

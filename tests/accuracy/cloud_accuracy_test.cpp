@@ -36,16 +36,9 @@ struct CloudImage {
   std::vector<double> rgbt;  // 4 a pixel
 };
 
-// The oracles' noise sizes (their cloud_noise params), the reference's own quadrature.
-reference::CloudReferenceSettings oracle_settings() {
-  reference::CloudReferenceSettings k;
-  k.shape_size = 64, k.detail_size = 32, k.curl_size = 64;
-  return k;
-}
-
 CloudImage reference_clouds(const LoadedConfig& loaded) {
   const Scene& scene = loaded.config.scene;
-  const reference::CloudReference clouds(scene, oracle_settings());
+  const reference::CloudReference clouds(scene, reference::cloud_reference_settings(loaded.graph, loaded.params));
   CloudImage out{loaded.config.output_size.width, loaded.config.output_size.height, {}};
   out.rgbt.resize(size_t(out.width) * out.height * 4);
   reference::RenderSettings settings{.width = out.width, .height = out.height};

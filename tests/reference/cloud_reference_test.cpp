@@ -9,6 +9,7 @@
 #include "physics/cloud_noise.h"
 #include "reference/clouds.h"
 #include "reference/renderer.h"
+#include "tests/reference/test_scenes.h"
 
 namespace volgraph::reference {
 namespace {
@@ -114,6 +115,23 @@ TEST(CloudReference, NoiseTexelsAreTheTwinQuantisedAsRgba8) {
       }
     }
   }
+}
+
+// `volgraph reference` takes the config's cloud_noise sizes and cloud_march parameters.
+TEST(CloudReference, SettingsComeFromTheConfigsCloudPasses) {
+  // The registry outlives the graphs: their passes point at its decls (load_shipped's does not).
+  PassRegistry registry;
+  register_builtin_passes(registry);
+  const std::string configs = std::string(::volgraph::testing::source_dir()) + "/configs/";
+  const LoadedConfig loaded = load_config(configs + "tests/oracle_clouds.json", registry);
+  const CloudReferenceSettings k = cloud_reference_settings(loaded.graph, loaded.params);
+  EXPECT_EQ(k.shape_size, 64);
+  EXPECT_EQ(k.detail_size, 32);
+  EXPECT_EQ(k.curl_size, 64);
+  EXPECT_EQ(k.light_distance, 2000);
+  EXPECT_EQ(k.octaves, 3);
+  const LoadedConfig demo = load_config(configs + "demo_clouds.json", registry);
+  EXPECT_EQ(cloud_reference_settings(demo.graph, demo.params).ambient, (Vec3{0.25, 0.3, 0.4}));
 }
 
 }  // namespace
