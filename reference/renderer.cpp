@@ -8,6 +8,7 @@
 #include "physics/camera.h"
 #include "physics/lighting.h"
 #include "reference/atmosphere_reference.h"
+#include "reference/clouds.h"
 
 namespace volgraph::reference {
 namespace {
@@ -98,6 +99,7 @@ Renderer::Renderer(const Scene& scene, const IntegrationSettings& integration, c
       lights_(physics::lights_through_atmosphere(scene)),
       sky_ambient_(physics::sky_ambient_radiance(scene)),
       atmosphere_(atmosphere_reference(scene, atmosphere)),
+      clouds_(scene.clouds ? std::make_shared<const CloudReference>(scene, integration.clouds) : nullptr),
       triangles_(scene_triangles(scene)),
       camera_bvh_(triangles_.triangles),
       shadow_bvh_(shadow_casters(triangles_)),

@@ -73,6 +73,7 @@
 namespace volgraph::reference {
 
 class AtmosphereReference;
+class CloudReference;
 struct AtmosphereReferenceSettings;
 
 // The seed of the atmosphere's Monte Carlo paths for a camera ray of unit `direction`
@@ -137,6 +138,8 @@ class Renderer {
   const std::vector<Light>& lights() const { return lights_; }
   // The atmosphere's reference, null without an atmosphere.
   const AtmosphereReference* atmosphere() const { return atmosphere_.get(); }
+  // The cloud layer's reference, null without a layer.
+  const CloudReference* clouds() const { return clouds_.get(); }
 
   // Orders ≥ 2 of the air along a camera ray: the Monte Carlo's A(t) at these many equal
   // steps to the ray's end, linear between (only where the scene has media).
@@ -194,6 +197,7 @@ class Renderer {
   std::vector<Light> lights_;
   Vec3 sky_ambient_{0, 0, 0};  // L: a surface receives π·L, a medium scatters σs·L
   std::shared_ptr<const AtmosphereReference> atmosphere_;
+  std::shared_ptr<const CloudReference> clouds_;  // the scene's cloud layer, null without one
   SceneTriangles triangles_;
   Bvh camera_bvh_;  // every triangle
   Bvh shadow_bvh_;  // the triangles of shadow-casting objects

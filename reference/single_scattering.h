@@ -13,6 +13,7 @@
 #include <functional>
 #include <vector>
 
+#include "reference/clouds.h"
 #include "reference/media.h"
 
 namespace volgraph::reference {
@@ -45,6 +46,8 @@ struct IntegrationSettings {
   // Richardson estimate. Converging segments use a small fraction of it.
   uint64_t max_evaluations = uint64_t{1} << 14;
   TranslucencyMode translucency = TranslucencyMode::straight;
+  // The cloud layer's reference (reference/clouds.h): cloud_noise's and cloud_march's defaults.
+  CloudReferenceSettings clouds;
   // Layers a ray composes (straight mode) or translucent surfaces a shadow ray crosses:
   // beyond them the camera ray sees the background, the light is taken as blocked.
   uint32_t max_layers = 64;

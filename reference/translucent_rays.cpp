@@ -3,9 +3,11 @@
 // translucent surfaces' transmittance on shadow rays.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "physics/camera.h"
 #include "reference/atmosphere_reference.h"
+#include "reference/clouds.h"
 #include "reference/renderer.h"
 
 namespace volgraph::reference {
@@ -150,6 +152,10 @@ Renderer::LayeredRay Renderer::layers_along(const Vec3& direction) const {
 Vec3 Renderer::straight_ray_radiance(const Vec3& direction) const {
   const LayeredRay ray = layers_along(direction);
   Vec3 c = ray_end_radiance(direction, ray.end);
+  if (clouds_) {  // as cloud_march + fog_apply compose it: C_behind · T + the layer's in-scattering
+    const CloudSample cloud = clouds_->along(direction, ray.end ? ray.end->t : std::numeric_limits<double>::infinity());
+    c = add(cloud.radiance, scaled(c, cloud.transmittance));
+  }
   const bool fogged = atmosphere_ || !media_.empty();
   for (auto k = ray.layers.rbegin(); k != ray.layers.rend(); ++k) {
     physics::SurfaceLayer<double> layer = k->layer;

@@ -36,6 +36,7 @@
 #include "reference/image_render.h"
 #include "reference/media.h"
 #include "reference/atmosphere_reference.h"
+#include "reference/clouds.h"
 #include "reference/renderer.h"
 #include "viewer/viewer.h"
 
@@ -286,6 +287,7 @@ int reference_render(const Args& args, const LoadedConfig& loaded) {
   try {
     reference::IntegrationSettings integration;
     integration.relative_tolerance = args.tolerance;
+    integration.clouds = reference::cloud_reference_settings(loaded.graph, loaded.params);  // the config's cloud passes
     reference::AtmosphereReferenceSettings atmosphere;
     atmosphere.samples = uint32_t(args.atmosphere_paths);
     renderer.emplace(loaded.config.scene, integration, atmosphere);

@@ -1,0 +1,278 @@
+#include "reference/clouds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+#include <type_traits>
+
+#include "physics/cloud_density.h"
+#include "physics/cloud_lighting.h"
+#include "physics/cloud_noise.h"
+#include "physics/vec3.h"
+
+namespace volgraph::reference {
+namespace {
+
+using physics::add;
+using physics::dot;
+using physics::scaled;
+using physics::sub;
+
+namespace noise = physics::cloud_noise;
+namespace density_fn = physics::cloud_density;
+namespace lighting = physics::cloud_lighting;
+
+constexpr double kEarthRadius = 6360e3;  // m: cloud_march's planet without an atmosphere
+
+std::array<float, 4> to_array(const glm::vec4& v) { return {v.x, v.y, v.z, v.w}; }
+
+// Runs fill(z) for every slice z in [0, depth) on the machine's threads: the textures are
+// a few million texels of Worley noise.
+void for_slices(int depth, const std::function<void(int)>& fill) {
+  const int workers = std::max(1, std::min(int(std::thread::hardware_concurrency()), depth));
+  std::vector<std::thread> threads;
+  for (int k = 0; k < workers; ++k) {
+    threads.emplace_back([&, k] {
+      for (int z = k; z < depth; z += workers) fill(z);
+    });
+  }
+  for (std::thread& t : threads) t.join();
+}
+
+// The wrapped lower texel and the weight of the upper one, for normalised u on n texels
+// (the linear filter: texel centres at (i + 0.5) / n).
+void filter_axis(double u, int n, int& i0, int& i1, float& w) {
+  const double x = u * n - 0.5;
+  const double base = std::floor(x);
+  w = float(x - base);
+  const long long i = (long long)base;
+  i0 = int(((i % n) + n) % n);
+  i1 = (i0 + 1) % n;
+}
+
+// The ray o + t·d against the sphere of radius r centred at c: roots t0 ≤ t1, false if none.
+bool sphere_roots(const Vec3& o, const Vec3& d, const Vec3& c, double r, double& t0, double& t1) {
+  const Vec3 oc = sub(o, c);
+  const double b = dot(oc, d);
+  const double cc = dot(oc, oc) - r * r;
+  const double disc = b * b - cc;
+  if (disc < 0) return false;
+  const double q = -(b + (b >= 0 ? 1.0 : -1.0) * std::sqrt(disc));
+  const double ra = q, rb = q != 0 ? cc / q : 0;
+  t0 = std::min(ra, rb);
+  t1 = std::max(ra, rb);
+  return true;
+}
+
+// Parameter `name` of graph pass `pass` as T, if the pass declares it and has values.
+template <typename T>
+void read_param(const GraphPass& pass, const std::vector<ParamValue>& values, const char* name, T& to) {
+  const int k = pass.decl->param_index(name);
+  if (k < 0 || size_t(k) >= values.size()) return;
+  if (const auto* v = std::get_if<T>(&values[size_t(k)])) {
+    to = *v;
+  } else if constexpr (std::is_same_v<T, int64_t>) {  // an integer the loader kept as a number
+    if (const auto* d = std::get_if<double>(&values[size_t(k)])) to = int64_t(*d);
+  }
+}
+
+}  // namespace
+
+CloudReferenceSettings cloud_reference_settings(const Graph& graph, const std::vector<std::vector<ParamValue>>& params,
+                                                CloudReferenceSettings k) {
+  bool noise = false, march = false;
+  for (size_t i = 0; i < graph.passes.size(); ++i) {
+    const GraphPass& pass = graph.passes[i];
+    if (!pass.decl) continue;
+    // The graph pass's own values where it holds them, else the loader's per-pass list.
+    static const std::vector<ParamValue> none;
+    const std::vector<ParamValue>& v = !pass.params.empty() ? pass.params : (i < params.size() ? params[i] : none);
+    if (!noise && pass.decl->name == "cloud_noise") {
+      noise = true;
+      int64_t shape = k.shape_size, detail = k.detail_size, curl = k.curl_size, seed = k.seed;
+      read_param(pass, v, "shape_size", shape), read_param(pass, v, "detail_size", detail), read_param(pass, v, "curl_size", curl);
+      read_param(pass, v, "seed", seed);
+      k.shape_size = int(shape), k.detail_size = int(detail), k.curl_size = int(curl), k.seed = uint32_t(seed);
+    } else if (!march && pass.decl->name == "cloud_march") {
+      march = true;
+      int64_t octaves = k.octaves;
+      read_param(pass, v, "octaves", octaves);
+      k.octaves = int(octaves);
+      read_param(pass, v, "light_distance", k.light_distance), read_param(pass, v, "max_distance", k.max_distance);
+      read_param(pass, v, "curl_strength", k.curl_strength), read_param(pass, v, "a", k.a), read_param(pass, v, "b", k.b);
+      read_param(pass, v, "c", k.c), read_param(pass, v, "g_forward", k.g_forward), read_param(pass, v, "g_back", k.g_back);
+      read_param(pass, v, "back_weight", k.back_weight), read_param(pass, v, "ambient", k.ambient);
+    }
+  }
+  return k;
+}
+
+float quantise_unorm8(float v) { return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f; }
+
+void CloudTexture::store(int x, int y, int z, const std::array<float, 4>& v) {
+  std::array<float, 4>& t = texels_[index(x, y, z)];
+  for (size_t c = 0; c < 4; ++c) t[c] = quantise_unorm8(v[c]);
+}
+
+std::array<float, 4> CloudTexture::sample(double u, double v, double w) const {
+  int x0, x1, y0, y1, z0 = 0, z1 = 0;
+  float fx, fy, fz = 0;
+  filter_axis(u, w_, x0, x1, fx);
+  filter_axis(v, h_, y0, y1, fy);
+  if (d_ > 1) filter_axis(w, d_, z0, z1, fz);
+  std::array<float, 4> out{0, 0, 0, 0};
+  for (int k = 0; k < 8; ++k) {
+    const float weight = ((k & 1) ? fx : 1 - fx) * ((k & 2) ? fy : 1 - fy) * ((k & 4) ? fz : 1 - fz);
+    if (weight == 0) continue;
+    const std::array<float, 4>& t = texel((k & 1) ? x1 : x0, (k & 2) ? y1 : y0, (k & 4) ? z1 : z0);
+    for (size_t c = 0; c < 4; ++c) out[c] += weight * t[c];
+  }
+  return out;
+}
+
+CloudTexture cloud_shape_texture(int size, uint32_t seed) {
+  CloudTexture t(size, size, size);
+  for_slices(size, [&](int z) {
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x)
+        t.store(x, y, z, to_array(noise::cloud_shape_texel((glm::vec3(float(x), float(y), float(z)) + 0.5f) / glm::vec3(float(size)), seed)));
+  });
+  return t;
+}
+
+CloudTexture cloud_detail_texture(int size, uint32_t seed) {
+  CloudTexture t(size, size, size);
+  for_slices(size, [&](int z) {
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x)
+        t.store(x, y, z, to_array(noise::cloud_detail_texel((glm::vec3(float(x), float(y), float(z)) + 0.5f) / glm::vec3(float(size)), seed)));
+  });
+  return t;
+}
+
+CloudTexture cloud_curl_texture(int size, uint32_t seed) {
+  CloudTexture t(size, size, 1);
+  for_slices(size, [&](int y) {
+    for (int x = 0; x < size; ++x)
+      t.store(x, y, 0, to_array(noise::cloud_curl_texel((glm::vec2(float(x), float(y)) + 0.5f) / glm::vec2(float(size)), 1.0f / float(size), seed)));
+  });
+  return t;
+}
+
+// The sun as cloud_march takes it: the atmosphere's sun light, else the first directional one.
+CloudReference::CloudReference(const Scene& scene, const CloudReferenceSettings& settings)
+    : layer_(scene.clouds ? *scene.clouds : throw std::invalid_argument("CloudReference: the scene has no cloud layer")),
+      settings_(settings),
+      camera_(scene.camera.position),
+      radius_(scene.atmosphere ? scene.atmosphere->bottom_radius : kEarthRadius),
+      origin_altitude_(scene.atmosphere ? scene.atmosphere->origin_altitude : 0),
+      shape_(cloud_shape_texture(settings.shape_size, settings.seed)),
+      detail_(cloud_detail_texture(settings.detail_size, settings.seed)),
+      curl_(cloud_curl_texture(settings.curl_size, settings.seed)) {
+  int sun = scene.atmosphere ? scene.atmosphere->sun_light : -1;
+  for (size_t i = 0; sun < 0 && i < scene.lights.size(); ++i)
+    if (scene.lights[i].type == LightType::directional) sun = int(i);
+  if (sun >= 0) {
+    const Light& light = scene.lights[size_t(sun)];
+    has_sun_ = true;
+    to_sun_ = scaled(physics::normalize(light.direction), -1);
+    sun_irradiance_ = light.irradiance;
+  }
+}
+
+double CloudReference::altitude(const Vec3& p) const {
+  const Vec3 from_centre = {p[0], p[1] + radius_ + origin_altitude_, p[2]};
+  return std::sqrt(dot(from_centre, from_centre)) - radius_;
+}
+
+// cloud_march.comp's layer_segment, in double.
+bool CloudReference::segment(const Vec3& o, const Vec3& d, double& t_in, double& t_out) const {
+  const Vec3 centre{0, -(radius_ + origin_altitude_), 0};
+  const double h = altitude(o), bottom = layer_.bottom_altitude, top = layer_.top_altitude;
+  double b0 = 0, b1 = 0, u0 = 0, u1 = 0, g0 = 0, g1 = 0;
+  const bool meets_bottom = sphere_roots(o, d, centre, radius_ + bottom, b0, b1);
+  const bool meets_top = sphere_roots(o, d, centre, radius_ + top, u0, u1);
+  const bool ground = h >= 0 && sphere_roots(o, d, centre, radius_, g0, g1) && g1 > 0;
+  if (h < bottom) {
+    if (ground || !meets_bottom || !meets_top) return false;
+    t_in = b1;
+    t_out = u1;
+  } else if (h <= top) {
+    t_in = 0;
+    t_out = (meets_bottom && b0 > 0) ? b0 : (meets_top ? u1 : 0);
+  } else {
+    if (!meets_top || u0 <= 0) return false;
+    t_in = u0;
+    t_out = (meets_bottom && b0 > 0) ? b0 : u1;
+  }
+  return t_out > t_in;
+}
+
+// cloud_march.comp's density(): the shape's base, eroded by the curl-shifted detail.
+double CloudReference::density(const Vec3& p) const {
+  const double a = altitude(p);
+  const double seconds = settings_.seconds;
+  const Vec3 np{p[0] + layer_.wind[0] * seconds, a + layer_.wind[1] * seconds, p[2] + layer_.wind[2] * seconds};
+  const float h = density_fn::cloud_height_fraction(float(a), float(layer_.bottom_altitude), float(layer_.top_altitude));
+  const std::array<float, 4> s = shape_.sample(np[0] / layer_.shape_scale, np[1] / layer_.shape_scale, np[2] / layer_.shape_scale);
+  const float base = density_fn::cloud_base_density(glm::vec4(s[0], s[1], s[2], s[3]), h, float(layer_.coverage), float(layer_.type));
+  if (base <= 0) return 0;
+  const Vec3 q = scaled(np, 1 / layer_.detail_scale);
+  const std::array<float, 4> c = curl_.sample(q[0], q[2], 0);
+  const double shift = settings_.curl_strength * (1 - h);
+  const std::array<float, 4> dt = detail_.sample(q[0] + shift * (c[0] * 2 - 1), q[1], q[2] + shift * (c[1] * 2 - 1));
+  return density_fn::cloud_eroded_density(base, glm::vec4(dt[0], dt[1], dt[2], dt[3]), h);
+}
+
+// The sun's optical depth over light_distance, light_steps midpoint samples; ∞ where the
+// ground hides the sun.
+double CloudReference::sun_optical_depth(const Vec3& p) const {
+  const Vec3 centre{0, -(radius_ + origin_altitude_), 0};
+  double g0 = 0, g1 = 0;
+  if (altitude(p) >= 0 && sphere_roots(p, to_sun_, centre, radius_, g0, g1) && g1 > 0) return std::numeric_limits<double>::infinity();
+  const int n = std::max(settings_.light_steps, 1);
+  const double ds = settings_.light_distance / n;
+  double tau = 0;
+  for (int j = 0; j < n; ++j) tau += layer_.extinction * density(add(p, scaled(to_sun_, (j + 0.5) * ds))) * ds;
+  return tau;
+}
+
+// cloud_march.comp's source(): the sun through the octaves (powder off) plus the ambient.
+Vec3 CloudReference::source(const Vec3& p, double rho, double cos_theta) const {
+  const float sigma_s = density_fn::cloud_scattering(float(layer_.extinction), float(rho));
+  Vec3 s = scaled(settings_.ambient, sigma_s);
+  if (!has_sun_) return s;
+  const double tau = sun_optical_depth(p);
+  if (!std::isfinite(tau)) return s;
+  const CloudReferenceSettings& k = settings_;
+  const double lit = lighting::cloud_octaves(sigma_s, float(tau), float(cos_theta), float(k.g_forward), float(k.g_back),
+                                             float(k.back_weight), k.octaves, float(k.a), float(k.b), float(k.c));
+  return add(s, scaled(sun_irradiance_, lit));
+}
+
+CloudSample CloudReference::along(const Vec3& d, double surface) const {
+  CloudSample out;
+  double t_in = 0, t_out = 0;
+  if (layer_.coverage <= 0 || !segment(camera_, d, t_in, t_out)) return out;
+  t_out = std::min(t_out, std::min(surface, settings_.max_distance));
+  if (!(t_out > t_in)) return out;
+  const int n = std::max(settings_.view_steps, 1);
+  const double dt = (t_out - t_in) / n;
+  const double cos_theta = dot(to_sun_, d);
+  for (int i = 0; i < n; ++i) {  // no skipping, no early termination
+    const Vec3 p = add(camera_, scaled(d, t_in + (i + 0.5) * dt));
+    const double rho = density(p);
+    if (rho <= 0) continue;
+    const double sigma_t = layer_.extinction * rho;
+    const double step_t = std::exp(-sigma_t * dt);
+    const double w = out.transmittance * (1 - step_t) / sigma_t;  // Hillaire's step, exact for J and σt constant on it
+    out.radiance = add(out.radiance, scaled(source(p, rho, cos_theta), w));
+    out.transmittance *= step_t;
+  }
+  return out;
+}
+
+}  // namespace volgraph::reference
