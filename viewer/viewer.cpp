@@ -405,7 +405,7 @@ class Loop {
   }
 
   void draw_plan() {
-    if (!ImGui::CollapsingHeader("Plan")) return;
+    if (!ImGui::CollapsingHeader("Plan", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const Plan& plan = executor_->plan();
     ImGui::Text("transient: %s aliased, %s unaliased", bytes_text(plan.memory.aliased_bytes).c_str(),
                 bytes_text(plan.memory.unaliased_bytes).c_str());
@@ -455,7 +455,7 @@ class Loop {
   void draw_sun() {
     Scene& scene = source_.current().config.scene;
     const int sun = sun_index(scene);
-    if (sun < 0 || !ImGui::CollapsingHeader("Sun")) return;
+    if (sun < 0 || !ImGui::CollapsingHeader("Sun", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const Vec3 to_sun = normalized(scene.lights[size_t(sun)].direction * -1.0);
     float az = float(std::atan2(to_sun[0], to_sun[2]) * 180 / kPi), el = float(std::asin(std::clamp(to_sun[1], -1.0, 1.0)) * 180 / kPi);
     bool changed = ImGui::SliderFloat("azimuth", &az, -180, 180, "%.1f deg");
@@ -492,11 +492,19 @@ class Loop {
       if (ImGui::Checkbox(d.name.c_str(), &v)) json = v ? "true" : "false";
     } else if (const int64_t* n = std::get_if<int64_t>(&value)) {
       int v = int(*n);
-      ImGui::SliderInt(d.name.c_str(), &v, int(d.min), int(d.max), ("%d" + (d.unit.empty() ? "" : " " + d.unit)).c_str());
+      if (d.min < d.max) {
+        ImGui::SliderInt(d.name.c_str(), &v, int(d.min), int(d.max), ("%d" + (d.unit.empty() ? "" : " " + d.unit)).c_str());
+      } else {  // no declared range: a plain input
+        ImGui::InputInt(d.name.c_str(), &v);
+      }
       if (ImGui::IsItemDeactivatedAfterEdit()) json = std::to_string(v);
     } else if (const double* x = std::get_if<double>(&value)) {
       float v = float(*x);
-      ImGui::SliderFloat(d.name.c_str(), &v, float(d.min), float(d.max), format.c_str());
+      if (d.min < d.max) {
+        ImGui::SliderFloat(d.name.c_str(), &v, float(d.min), float(d.max), format.c_str());
+      } else {  // no declared range: a plain input
+        ImGui::InputFloat(d.name.c_str(), &v, 0, 0, format.c_str());
+      }
       if (ImGui::IsItemDeactivatedAfterEdit()) json = json_number(v);
     } else if (const auto* a = std::get_if<std::array<double, 3>>(&value)) {
       float v[3] = {float((*a)[0]), float((*a)[1]), float((*a)[2])};
