@@ -160,8 +160,9 @@ Vec3 sun_travel(double az, double el) {
   return {-std::cos(e) * std::sin(a), -std::sin(e), -std::cos(e) * std::cos(a)};
 }
 
-// The scene's sun: its first directional light (-1: none).
+// The scene's sun: the atmosphere's sun light, else its first directional light (-1: none).
 int sun_index(const Scene& scene) {
+  if (scene.atmosphere && scene.atmosphere->sun_light >= 0) return scene.atmosphere->sun_light;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     if (scene.lights[i].type == LightType::directional) return int(i);
   }

@@ -323,6 +323,23 @@ TEST(Viewer, ScriptCameraAndSunMatchRenderOfThatScene) {
   expect_different(shown, plain);
 }
 
+// camera and sun take numbers, six and two: checked before any window, file and line named.
+TEST(Viewer, BadCameraOrSunLineExitsTwoBeforeAnyWindow) {
+  const std::filesystem::path short_camera = scratch() / "short_camera.txt", word_sun = scratch() / "word_sun.txt";
+  std::ofstream(short_camera) << "camera 1 2 3\n";
+  std::ofstream(word_sun) << "frames 1\nsun 30 high\n";
+  const std::string no_display = "env -u DISPLAY -u WAYLAND_DISPLAY";
+  const CommandRun a = volgraph("view " + config("demo_fog.json") + " --script " + short_camera.string(), no_display);
+  EXPECT_EQ(a.exit_code, 2);
+  EXPECT_NE(a.errors.find("short_camera.txt"), std::string::npos) << a.errors;
+  EXPECT_NE(a.errors.find("camera takes 6 word(s)"), std::string::npos) << a.errors;
+  const CommandRun b = volgraph("view " + config("demo_fog.json") + " --script " + word_sun.string(), no_display);
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.errors.find("word_sun.txt"), std::string::npos) << b.errors;
+  EXPECT_NE(b.errors.find("sun high: expected a number"), std::string::npos) << b.errors;
+  EXPECT_EQ(b.errors.find("display"), std::string::npos) << b.errors;
+}
+
 TEST(Viewer, WebGpuSurfaceIsNotWrittenYet) {
   const CommandRun view = volgraph("view " + config("demo_fog.json") + " --backend webgpu --frames 1");
   EXPECT_EQ(view.exit_code, 2);
