@@ -2,7 +2,8 @@
 # Installs the Debian packages volgraph builds and tests with, when any is missing:
 # chromium loads the A/B reports in the browser test, GNU parallel runs emitted sweep
 # jobs, rsvg-convert (librsvg2-bin) turns a sweep's SVG plot into its PNG; GLFW opens
-# `volgraph view`'s window, which its tests open under xvfb-run (xvfb, xauth).
+# `volgraph view`'s window, which its tests open under xvfb-run (xvfb, xauth); Dear ImGui
+# (libimgui-dev, with its GLFW and Vulkan backends) draws the viewer's overlay.
 # Idempotent: a few dpkg queries when everything is there.
 set -euo pipefail
 
@@ -14,7 +15,7 @@ packages=(
   libstb-dev libopenexr-dev libtinygltf-dev
   libglm-dev libcli11-dev libspirv-cross-c-shared-dev
   chromium parallel librsvg2-bin
-  libglfw3-dev xvfb xauth
+  libglfw3-dev xvfb xauth libimgui-dev
 )
 # Dawn refuses bookworm's lavapipe (Mesa 22); Mesa 25 comes from bookworm-backports.
 backports=(mesa-vulkan-drivers)

@@ -36,7 +36,8 @@ commands:
                                DIR/tuned.json (a config including the swept one) and the flags
   view CONFIG                  the graph in a window (docs/viewer.md): --size WxH, --backend vulkan,
                                --device N, --validation, --frames N (then exit), --screenshot FILE.png,
-                               --script FILE (control commands between frames); ESC quits, R reloads
+                               --script FILE (control commands between frames), --no-overlay;
+                               ESC quits, R reloads, F1 the overlay, WASD + right drag the camera
   passes                       the pass types with their variants, parameters and slots
   devices                      the Vulkan devices (index for --device N; lavapipe is the default)
   test                         run the whole test suite (handled by tools/volgraph)
@@ -207,6 +208,7 @@ void view_options(CLI::App& app, Args& args) {
   flag(app, "--validation", [&] { args.validation = true; });
   value_option(app, "--screenshot", [&](const std::string& v) { once(args.screenshot, "--screenshot", v); });
   value_option(app, "--script", [&](const std::string& v) { once(args.script, "--script", v); });
+  flag(app, "--no-overlay", [&] { args.no_overlay = true; });
 }
 
 void reference_options(CLI::App& app, Args& args) {

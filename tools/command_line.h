@@ -58,6 +58,7 @@ struct Args {
   std::string screenshot;  // view --screenshot FILE.png
   int view_frames = 0;     // view --frames N (0: until the window closes)
   std::string script;      // view --script FILE: control commands run between frames (docs/viewer.md)
+  bool no_overlay = false; // view --no-overlay: frames and screenshots without the overlay
   CompileOptions compile;
   Overrides overrides;
   CompareArgs compare;
@@ -84,7 +85,7 @@ void ab_options(CLI::App& app, Args& args);         // --pass --a --b --a-graph 
 void timing_options(CLI::App& app, Args& args);     // --runs --warmup
 void sweep_options(CLI::App& app, Args& args);      // --point --reference --emit-jobs --merge --size --backend --device --validation
 void tune_options(CLI::App& app, Args& args);       // --max-error --metric
-void view_options(CLI::App& app, Args& args);       // --backend --device --frames --validation --screenshot --script
+void view_options(CLI::App& app, Args& args);       // --backend --device --frames --validation --screenshot --script --no-overlay
 // All of the above but the comparison groups: what the commands older than CLI11 accept (each ignores those it
 // does not use, as it always did).
 void every_option(CLI::App& app, Args& args);

@@ -426,6 +426,7 @@ int run_view(const Args& args, const PassRegistry& registry) {
   options.frames = args.view_frames;
   options.screenshot = args.screenshot;
   options.validation = args.validation;
+  options.overlay = !args.no_overlay;
   options.device = args.device;
   options.compile = args.compile;
   options.title = "volgraph view " + args.config;

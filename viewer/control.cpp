@@ -1,5 +1,7 @@
 #include "viewer/control.h"
 
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -107,6 +109,8 @@ size_t words_for(const std::string& verb) {
   if (verb == "param" || verb == "ab") return 3;
   if (verb == "reload") return 0;
   if (verb == "wait-change") return 0;
+  if (verb == "camera") return 6;
+  if (verb == "sun") return 2;
   return size_t(-1);
 }
 
@@ -117,7 +121,7 @@ ScriptCommand parse_line(const std::string& path, int number, const std::string&
   in >> c.verb;
   const size_t expected = words_for(c.verb);
   if (expected == size_t(-1)) {
-    script_error(path, number, "unknown command \"" + c.verb + "\"; expected frames, variant, param, ab, reload, screenshot or wait-change");
+    script_error(path, number, "unknown command \"" + c.verb + "\"; expected frames, variant, param, ab, reload, screenshot, wait-change, camera or sun");
   }
   std::string word;
   for (size_t i = 0; i < (c.verb == "param" ? 2 : expected) && in >> word; ++i) c.args.push_back(word);
@@ -129,12 +133,19 @@ ScriptCommand parse_line(const std::string& path, int number, const std::string&
     c.args.push_back(word);
   }
   if (c.args.size() != expected) {
-    script_error(path, number, c.verb + " takes " + std::to_string(expected) + " word(s): frames N | variant PASS VARIANT | param PASS NAME JSON | ab PASS A B | reload | screenshot FILE.png | wait-change");
+    script_error(path, number, c.verb + " takes " + std::to_string(expected) + " word(s): frames N | variant PASS VARIANT | param PASS NAME JSON | ab PASS A B | reload | screenshot FILE.png | wait-change | camera X Y Z TX TY TZ | sun AZ EL");
   }
   if (c.verb == "frames") {
     const std::string& n = c.args[0];
     if (n.empty() || n.size() > 6 || n.find_first_not_of("0123456789") != std::string::npos || std::stoi(n) < 1) {
       script_error(path, number, "frames " + n + ": expected a whole number from 1 to 999999");
+    }
+  }
+  if (c.verb == "camera" || c.verb == "sun") {
+    for (const std::string& w : c.args) {
+      char* end = nullptr;
+      const double v = std::strtod(w.c_str(), &end);
+      if (end == w.c_str() || *end != '\0' || !std::isfinite(v)) script_error(path, number, c.verb + " " + w + ": expected a number");
     }
   }
   if (c.verb == "screenshot" && std::filesystem::path(c.args[0]).extension() != ".png") {

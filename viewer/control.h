@@ -49,7 +49,7 @@ class GraphSource {
 
 // One line of a --script file: a verb and its words.
 struct ScriptCommand {
-  std::string verb;               // frames, variant, param, reload, ab, screenshot, wait-change
+  std::string verb;               // frames, variant, param, reload, ab, screenshot, wait-change, camera, sun
   std::vector<std::string> args;  // param: PASS NAME JSON (the JSON is the rest of the line)
   int line = 0;
 };

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -34,7 +35,16 @@ class Presenter {
   // presents it; when `presented` is given, the image as presented is also read back into
   // it (RGBA8; ignored unless readable()). Returns false,
   // presenting nothing, when the swapchain is out of date.
-  bool present(const std::vector<uint8_t>& rgba8, std::vector<uint8_t>* presented);
+  // `overlay`, when given, records draws into the viewer's render pass (render_pass()) on
+  // the image after the copy, before the read-back: a screenshot holds what it drew.
+  bool present(const std::vector<uint8_t>& rgba8, std::vector<uint8_t>* presented,
+               const std::function<void(VkCommandBuffer)>& overlay = {});
+  // The viewer's render pass over a swapchain image (LOAD: drawn over the copied frame),
+  // the overlay's; not part of the graph, as the present copy is not.
+  VkRenderPass render_pass() const { return render_pass_; }
+  uint32_t image_count() const { return uint32_t(images_.size()); }
+  // Records `record` in a one-time submission and waits for it (the overlay's font upload).
+  void submit_now(const std::function<void(VkCommandBuffer)>& record);
   // The last present found the swapchain suboptimal or out of date: recreate it.
   bool stale() const { return stale_; }
 
@@ -48,7 +58,8 @@ class Presenter {
   void destroy_swapchain();
   HostBuffer make_buffer(VkDeviceSize size, VkBufferUsageFlags usage, const char* label);
   void destroy_buffer(HostBuffer& b);
-  void record_copy(VkImage image, bool read_back);
+  void record_copy(uint32_t index, bool read_back, const std::function<void(VkCommandBuffer)>& overlay);
+  void create_render_pass();
 
   vulkan::Context& context_;
   VkSurfaceKHR surface_;
@@ -56,6 +67,9 @@ class Presenter {
   VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
   VkExtent2D extent_{};
   std::vector<VkImage> images_;
+  std::vector<VkImageView> views_;           // per swapchain image, for framebuffers_
+  std::vector<VkFramebuffer> framebuffers_;  // render_pass_ on each swapchain image
+  VkRenderPass render_pass_ = VK_NULL_HANDLE;
   std::vector<VkSemaphore> rendered_;  // per swapchain image: the copy done, present may start
   VkSemaphore acquired_ = VK_NULL_HANDLE;
   VkFence done_ = VK_NULL_HANDLE;

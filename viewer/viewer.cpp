@@ -5,20 +5,29 @@
 #include <cstdlib>
 #include <iostream>
 #include <chrono>
+#include <map>
 #include <memory>
+#include <functional>
+#include <array>
 #include <thread>
 #include <vector>
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include "graph/execute/executor.h"
+#include "graph/plan_report.h"
 #include "graph/rhi/vulkan/context.h"
 #include "graph/rhi/vulkan/vulkan_device.h"
 #include "physics/srgb.h"
 #include "tools/image_io.h"
 #include "tools/output_files.h"
+#include "viewer/overlay.h"
 #include "viewer/presenter.h"
+#include <iomanip>
+#include <optional>
+#include <sstream>
 
 namespace volgraph::viewer {
 namespace {
@@ -37,6 +46,8 @@ struct WindowEvents {
   bool exposed = false;
   bool reload = false;  // R
   bool ab = false;      // Tab: the last `ab` pair toggled again
+  bool overlay = false;  // F1: the overlay shown or hidden
+  bool input = false;    // the mouse moved or a button or key was pressed: the overlay redraws
 };
 
 // GLFW initialised for the loop's lifetime; its failure is the user's setup (no display).
@@ -71,12 +82,18 @@ Window open_window(Extent size, const std::string& title, WindowEvents& events) 
   glfwSetWindowRefreshCallback(window.get(), [](GLFWwindow* w) { static_cast<WindowEvents*>(glfwGetWindowUserPointer(w))->exposed = true; });
   // ESC closes the window (docs/viewer.md "Keys").
   glfwSetKeyCallback(window.get(), [](GLFWwindow* w, int key, int, int action, int) {
-    if (action != GLFW_PRESS) return;
     WindowEvents& events = *static_cast<WindowEvents*>(glfwGetWindowUserPointer(w));
+    events.input = true;
+    if (action != GLFW_PRESS) return;
     if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
     if (key == GLFW_KEY_R) events.reload = true;
     if (key == GLFW_KEY_TAB) events.ab = true;
+    if (key == GLFW_KEY_F1) events.overlay = true;
   });
+  // Any mouse input redraws (the overlay's widgets answer it; ImGui chains these callbacks).
+  glfwSetCursorPosCallback(window.get(), [](GLFWwindow* w, double, double) { static_cast<WindowEvents*>(glfwGetWindowUserPointer(w))->input = true; });
+  glfwSetMouseButtonCallback(window.get(), [](GLFWwindow* w, int, int, int) { static_cast<WindowEvents*>(glfwGetWindowUserPointer(w))->input = true; });
+  glfwSetScrollCallback(window.get(), [](GLFWwindow* w, double, double) { static_cast<WindowEvents*>(glfwGetWindowUserPointer(w))->input = true; });
   return window;
 }
 
@@ -121,6 +138,37 @@ void write_screenshot(const std::string& path, VkExtent2D extent, const std::vec
   files.commit();
 }
 
+// A JSON number as the loader reads it back (the control API takes JSON text).
+std::string json_number(double v) {
+  std::ostringstream out;
+  out << std::setprecision(9) << v;
+  return out.str();
+}
+
+Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Vec3 operator*(const Vec3& a, double k) { return {a[0] * k, a[1] * k, a[2] * k}; }
+double length(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+Vec3 normalized(const Vec3& a) { return a * (1.0 / std::max(length(a), 1e-12)); }
+Vec3 cross(const Vec3& a, const Vec3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+
+constexpr double kPi = 3.14159265358979323846;
+// The direction a sun light travels for a sun at azimuth `az` (degrees from +z toward +x)
+// and elevation `el` (degrees above the y = 0 plane): the opposite of the way to the sun.
+Vec3 sun_travel(double az, double el) {
+  const double a = az * kPi / 180, e = el * kPi / 180;
+  return {-std::cos(e) * std::sin(a), -std::sin(e), -std::cos(e) * std::cos(a)};
+}
+
+// The scene's sun: the atmosphere's sun light, else its first directional light (-1: none).
+int sun_index(const Scene& scene) {
+  if (scene.atmosphere && scene.atmosphere->sun_light >= 0) return scene.atmosphere->sun_light;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    if (scene.lights[i].type == LightType::directional) return int(i);
+  }
+  return -1;
+}
+
 // The loop: one frame of the graph, its output copied into the swapchain and presented;
 // a resize recompiles the graph at the new size (resize(), no config reload); idle
 // (glfwWaitEventsTimeout) once a static scene has settled.
@@ -131,6 +179,8 @@ class Loop {
         source_(options.config, *options.registry, options.overrides, options.compile, std::move(loaded)),
         options_(options), events_(events), device_(context),
         presenter_(context, create_surface(context, window), framebuffer_extent(window)) {
+    if (options.overlay) overlay_ = std::make_unique<Overlay>(context, window, presenter_);
+    overlay_shown_ = options.overlay;
     restart();
   }
 
@@ -145,6 +195,17 @@ class Loop {
   std::string toggle_ab(const std::string& pass, const std::string& a, const std::string& b) {
     ab_ = {pass, a, b};
     return applied(source_.toggle_ab(pass, a, b));
+  }
+  // The fly camera: the scene's camera moved in place (passes read the scene every frame;
+  // their cache keys hash it), kept over reloads.
+  void set_camera(const Vec3& position, const Vec3& target) {
+    camera_ = std::make_pair(position, target);
+    apply_view_state();
+  }
+  // The sun (the scene's first directional light) at azimuth/elevation in degrees, kept over reloads.
+  void set_sun(double azimuth, double elevation) {
+    sun_ = std::make_pair(azimuth, elevation);
+    apply_view_state();
   }
   // The last presented image (one frame first when none was presented yet).
   void screenshot(const std::string& path) {
@@ -162,15 +223,19 @@ class Loop {
  private:
   void run_interactive() {
     WindowEvents& events = events_;
+    auto last = std::chrono::steady_clock::now();
     while (!glfwWindowShouldClose(window_)) {
+      const auto now = std::chrono::steady_clock::now();
+      fly(std::min(std::chrono::duration<double>(now - last).count(), 0.1));
+      last = now;
       handle_keys();
       poll_files();
       if (events.resized || presenter_.stale()) {
         events.resized = false;
         if (!resize_to_window()) continue;
       }
-      if (events.exposed) settled_ = std::min(settled_, kSettleFrames - 1);  // present again
-      events.exposed = false;
+      if (events.exposed || (events.input && overlay_shown_)) settled_ = std::min(settled_, kSettleFrames - 1);  // present again
+      events.exposed = events.input = false;
       if (options_.frames == 0 && settled_ >= kSettleFrames) {
         glfwWaitEventsTimeout(kIdleWait);
         continue;
@@ -205,6 +270,13 @@ class Loop {
     if (c.verb == "ab") toggle_ab(a[0], a[1], a[2]);
     if (c.verb == "reload") reload();
     if (c.verb == "screenshot") screenshot(a[0]);
+    if (c.verb == "camera" || c.verb == "sun") {
+      std::vector<double> v;
+      for (const std::string& w : a) v.push_back(std::stod(w));
+      if (c.verb == "camera") set_camera({v[0], v[1], v[2]}, {v[3], v[4], v[5]});
+      if (c.verb == "sun") set_sun(v[0], v[1]);
+      restart();  // a fresh frame history: the script's next frames are `render`'s of that camera
+    }
     if (c.verb == "wait-change" && !wait_change()) {
       std::cerr << "view: --script line " << c.line << ": wait-change: the config and its includes did not change in "
                 << int(kWaitChange) << " s\n";
@@ -245,7 +317,211 @@ class Loop {
   void handle_keys() {
     if (events_.reload) reload();
     if (events_.ab && !ab_.pass.empty()) toggle_ab(ab_.pass, ab_.a, ab_.b);
-    events_.reload = events_.ab = false;
+    if (events_.overlay && overlay_) {
+      overlay_shown_ = !overlay_shown_;
+      executor_->set_gpu_timing(overlay_shown_);
+      settled_ = std::min(settled_, kSettleFrames - 1);
+    }
+    events_.reload = events_.ab = events_.overlay = false;
+    if (pending_) {  // an edit made in the overlay, applied between frames
+      auto edit = std::move(pending_);
+      pending_ = nullptr;
+      edit();
+    }
+  }
+
+  // WASD moves the camera along its view and right axes; a right-button drag turns it.
+  void fly(double dt) {
+    if (overlay_ && overlay_shown_ && (overlay_->wants_keyboard() || overlay_->wants_mouse())) {
+      glfwGetCursorPos(window_, &cursor_[0], &cursor_[1]);
+      return;
+    }
+    const Camera& c = source_.current().config.scene.camera;
+    const Vec3 forward = normalized(c.target - c.position), right = normalized(cross(forward, c.up));
+    const double distance = std::max(length(c.target - c.position), 1e-3);
+    const double step = std::max(distance, 1.0) * dt;  // about the target's distance a second
+    Vec3 move{0, 0, 0};
+    if (glfwGetKey(window_, GLFW_KEY_W) == GLFW_PRESS) move = move + forward * step;
+    if (glfwGetKey(window_, GLFW_KEY_S) == GLFW_PRESS) move = move - forward * step;
+    if (glfwGetKey(window_, GLFW_KEY_D) == GLFW_PRESS) move = move + right * step;
+    if (glfwGetKey(window_, GLFW_KEY_A) == GLFW_PRESS) move = move - right * step;
+    double x = 0, y = 0;
+    glfwGetCursorPos(window_, &x, &y);
+    const double dx = x - cursor_[0], dy = y - cursor_[1];
+    cursor_ = {x, y};
+    Vec3 look = forward;
+    if (glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS && (dx != 0 || dy != 0)) {
+      const double yaw = -dx * 0.005, pitch = -dy * 0.005;  // radians per pixel
+      const Vec3 up = normalized(cross(right, forward));
+      look = normalized(forward * std::cos(yaw) + right * std::sin(yaw));
+      look = normalized(look * std::cos(pitch) + up * std::sin(pitch));
+      if (std::abs(look[0] * c.up[0] + look[1] * c.up[1] + look[2] * c.up[2]) > 0.99) look = forward;  // not through the pole
+    }
+    if (length(move) == 0 && look == forward) return;
+    set_camera(c.position + move, c.position + move + look * distance);
+  }
+
+  // The viewer's camera and sun on the current scene (after every reload).
+  void apply_view_state() {
+    Scene& scene = source_.current().config.scene;
+    if (camera_) {
+      scene.camera.position = camera_->first;
+      scene.camera.target = camera_->second;
+    }
+    const int sun = sun_index(scene);
+    if (sun_ && sun >= 0) scene.lights[size_t(sun)].direction = sun_travel(sun_->first, sun_->second);
+    settled_ = std::min(settled_, 0);
+  }
+
+  // The overlay's panel: times, the plan's figures, the last error, the passes' variants
+  // and parameters (edits go through set_variant / set_param, checked as before), the
+  // A/B pair and the sun.
+  void draw_panel() {
+    const VkExtent2D e = presenter_.extent();
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::min(380.0f, 0.5f * float(e.width)), float(e.height)), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("volgraph", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    if (!last_error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", last_error_.c_str());
+    draw_times();
+    draw_plan();
+    draw_ab();
+    draw_sun();
+    draw_passes();
+    ImGui::End();
+  }
+
+  double total_gpu_ms() const {
+    double sum = 0;
+    for (const PassTiming& t : executor_->timings()) sum += t.gpu_ms;
+    return sum;
+  }
+
+  void draw_times() {
+    if (!ImGui::CollapsingHeader("GPU times", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::Text("frame %.3f ms (passes), %.3f ms (submit to done)", total_gpu_ms(), executor_->frame_wall_ms());
+    for (const PassTiming& t : executor_->timings()) {
+      ImGui::Text("%8.3f ms  %s%s", t.gpu_ms, t.pass.c_str(), t.cached ? " (cached)" : "");
+    }
+  }
+
+  void draw_plan() {
+    if (!ImGui::CollapsingHeader("Plan", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const Plan& plan = executor_->plan();
+    ImGui::Text("transient: %s aliased, %s unaliased", bytes_text(plan.memory.aliased_bytes).c_str(),
+                bytes_text(plan.memory.unaliased_bytes).c_str());
+    ImGui::Text("lower bound %s, persistent %s", bytes_text(plan.memory.lower_bound_bytes).c_str(),
+                bytes_text(plan.memory.persistent_bytes).c_str());
+    ImGui::Text("%zu passes, %zu culled, %zu barriers", plan.order.size(), plan.culled.size(), plan.barriers.size());
+  }
+
+  void draw_ab() {
+    if (!ImGui::CollapsingHeader("A/B (Tab)")) return;
+    const Graph& graph = source_.current().graph;
+    if (ImGui::BeginCombo("pass", ab_.pass.c_str())) {
+      for (const GraphPass& p : graph.passes) {
+        if (p.step != 0 || p.decl->variants.size() < 2) continue;
+        if (ImGui::Selectable(p.name.c_str(), p.name == ab_.pass)) {
+          ab_ = {p.name, p.decl->variants[0].name, p.decl->variants[1].name};
+        }
+      }
+      ImGui::EndCombo();
+    }
+    const GraphPass* pass = find_pass(ab_.pass);
+    if (!pass) return;
+    variant_combo("A", *pass, ab_.a);
+    variant_combo("B", *pass, ab_.b);
+    const std::string now = pass->decl->variants[pass->variant].name;
+    ab_times_[now] = total_gpu_ms();
+    if (ImGui::Button("toggle (Tab)")) events_.ab = true;
+    ImGui::Text("A %s: %.3f ms   B %s: %.3f ms   (showing %s)", ab_.a.c_str(), ab_times_[ab_.a], ab_.b.c_str(), ab_times_[ab_.b],
+                now.c_str());
+  }
+
+  void variant_combo(const char* label, const GraphPass& pass, std::string& chosen) {
+    if (!ImGui::BeginCombo(label, chosen.c_str())) return;
+    for (const VariantDecl& v : pass.decl->variants) {
+      if (ImGui::Selectable(v.name.c_str(), v.name == chosen)) chosen = v.name;
+    }
+    ImGui::EndCombo();
+  }
+
+  const GraphPass* find_pass(const std::string& name) {
+    for (const GraphPass& p : source_.current().graph.passes) {
+      if (p.name == name && p.step == 0) return &p;
+    }
+    return nullptr;
+  }
+
+  void draw_sun() {
+    Scene& scene = source_.current().config.scene;
+    const int sun = sun_index(scene);
+    if (sun < 0 || !ImGui::CollapsingHeader("Sun", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const Vec3 to_sun = normalized(scene.lights[size_t(sun)].direction * -1.0);
+    float az = float(std::atan2(to_sun[0], to_sun[2]) * 180 / kPi), el = float(std::asin(std::clamp(to_sun[1], -1.0, 1.0)) * 180 / kPi);
+    bool changed = ImGui::SliderFloat("azimuth", &az, -180, 180, "%.1f deg");
+    changed |= ImGui::SliderFloat("elevation", &el, -10, 90, "%.1f deg");
+    if (changed) set_sun(az, el);
+  }
+
+  void draw_passes() {
+    if (!ImGui::CollapsingHeader("Passes", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    for (const GraphPass& p : source_.current().graph.passes) {
+      if (p.step != 0 || !ImGui::TreeNode(p.name.c_str(), "%s (%s)", p.name.c_str(), p.decl->name.c_str())) continue;
+      std::string variant = p.decl->variants[p.variant].name;
+      if (p.decl->variants.size() > 1) {
+        const std::string before = variant;
+        variant_combo("variant", p, variant);
+        if (variant != before) pending_ = [this, pass = p.name, variant] { set_variant(pass, variant); };
+      }
+      for (size_t i = 0; i < p.decl->params.size(); ++i) {
+        const ParamValue value = i < p.params.size() ? p.params[i] : p.decl->params[i].default_value;
+        param_widget(p.name, p.decl->params[i], value);
+      }
+      ImGui::TreePop();
+    }
+  }
+
+  // One parameter's widget, with the declaration's range and unit; a finished edit goes
+  // through set_param (the loader checks it as `render --set` does).
+  void param_widget(const std::string& pass, const ParamDecl& d, const ParamValue& value) {
+    std::string json;
+    const std::string format = "%.4g" + (d.unit.empty() ? "" : " " + d.unit);
+    ImGui::PushID(d.name.c_str());
+    if (const bool* b = std::get_if<bool>(&value)) {
+      bool v = *b;
+      if (ImGui::Checkbox(d.name.c_str(), &v)) json = v ? "true" : "false";
+    } else if (const int64_t* n = std::get_if<int64_t>(&value)) {
+      int v = int(*n);
+      if (d.min < d.max) {
+        ImGui::SliderInt(d.name.c_str(), &v, int(d.min), int(d.max), ("%d" + (d.unit.empty() ? "" : " " + d.unit)).c_str());
+      } else {  // no declared range: a plain input
+        ImGui::InputInt(d.name.c_str(), &v);
+      }
+      if (ImGui::IsItemDeactivatedAfterEdit()) json = std::to_string(v);
+    } else if (const double* x = std::get_if<double>(&value)) {
+      float v = float(*x);
+      if (d.min < d.max) {
+        ImGui::SliderFloat(d.name.c_str(), &v, float(d.min), float(d.max), format.c_str());
+      } else {  // no declared range: a plain input
+        ImGui::InputFloat(d.name.c_str(), &v, 0, 0, format.c_str());
+      }
+      if (ImGui::IsItemDeactivatedAfterEdit()) json = json_number(v);
+    } else if (const auto* a = std::get_if<std::array<double, 3>>(&value)) {
+      float v[3] = {float((*a)[0]), float((*a)[1]), float((*a)[2])};
+      ImGui::SliderFloat3(d.name.c_str(), v, float(d.min), float(d.max), format.c_str());
+      if (ImGui::IsItemDeactivatedAfterEdit()) json = "[" + json_number(v[0]) + "," + json_number(v[1]) + "," + json_number(v[2]) + "]";
+    } else if (const std::string* c = std::get_if<std::string>(&value)) {
+      if (ImGui::BeginCombo(d.name.c_str(), c->c_str())) {
+        for (const std::string& choice : d.choices) {
+          if (ImGui::Selectable(choice.c_str(), choice == *c)) json = "\"" + choice + "\"";
+        }
+        ImGui::EndCombo();
+      }
+    }
+    if (!d.doc.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", d.doc.c_str());
+    ImGui::PopID();
+    if (!json.empty()) pending_ = [this, pass, name = d.name, json] { set_param(pass, name, json); };
   }
 
   // Hot reload: the config or an include changed on disk.
@@ -257,7 +533,9 @@ class Loop {
 
   // After a change: the new graph runs, or the refusal is shown (title) and printed once.
   std::string applied(const std::string& error) {
+    last_error_ = error;
     if (error.empty()) {
+      apply_view_state();
       restart();
       glfwSetWindowTitle(window_, options_.title.c_str());
     } else {
@@ -280,7 +558,7 @@ class Loop {
       resize(loaded.graph, size);
     }
     executor_ = std::make_unique<Executor>(device_, loaded.graph, &loaded.config.scene, options_.compile);
-    executor_->set_gpu_timing(false);  // nothing shows pass times yet (no overlay): frames without time stamps
+    executor_->set_gpu_timing(overlay_shown_);  // time stamps only while the overlay shows the pass times
     settled_ = 0;
   }
 
@@ -300,7 +578,14 @@ class Loop {
     executor_->run_frame();
     const std::vector<uint8_t> texels = srgb8(executor_->read_output(0));
     std::vector<uint8_t>* read_back = screenshot && presenter_.readable() ? &shot_ : nullptr;
-    if (!presenter_.present(texels, read_back)) return false;
+    std::function<void(VkCommandBuffer)> draw;
+    if (overlay_ && overlay_shown_) {
+      overlay_->begin_frame();
+      draw_panel();
+      overlay_->end_frame();
+      draw = [this](VkCommandBuffer cmd) { overlay_->draw(cmd); };
+    }
+    if (!presenter_.present(texels, read_back, draw)) return false;
     if (screenshot) shot_extent_ = presenter_.extent();
     if (screenshot && !read_back) shot_ = texels;  // swapchain images not copyable from: the bytes presented
     ++rendered_;
@@ -315,6 +600,14 @@ class Loop {
   WindowEvents& events_;
   vulkan::VulkanDevice device_;
   Presenter presenter_;
+  std::unique_ptr<Overlay> overlay_;  // null with --no-overlay
+  bool overlay_shown_ = false;        // F1
+  std::function<void()> pending_;     // an overlay edit, applied between frames
+  std::string last_error_;            // the last refused change's message, shown in the overlay
+  std::optional<std::pair<Vec3, Vec3>> camera_;      // set_camera's position and target
+  std::optional<std::pair<double, double>> sun_;     // set_sun's azimuth and elevation (degrees)
+  std::array<double, 2> cursor_{};                   // the mouse at the last fly() (pixels)
+  std::map<std::string, double> ab_times_;           // the frame's GPU ms per variant of the A/B pass
   std::unique_ptr<Executor> executor_;
   int rendered_ = 0;
   int settled_ = 0;

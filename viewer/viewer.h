@@ -12,6 +12,7 @@ namespace volgraph::viewer {
 struct ViewOptions {
   int frames = 0;            // --frames N: render N frames, then exit; 0: until ESC or the window closes
   std::string screenshot;    // --screenshot FILE.png: the last presented image ("" for none)
+  bool overlay = true;       // the Dear ImGui overlay (F1 toggles; --no-overlay: off and never drawn)
   bool validation = false;   // the Khronos validation layer, as `render --validation`
   int device = -1;           // --device N (vulkan::ContextOptions::device_index)
   CompileOptions compile;

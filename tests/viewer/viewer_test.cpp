@@ -127,7 +127,7 @@ TEST(Viewer, ScreenshotMatchesTheHeadlessRender) {
   const std::string common = config("demo_fog.json") + " --size 160x90 --frames 3 --validation";
   const CommandRun render = volgraph("render " + common + " -o " + rendered.string());
   ASSERT_EQ(render.exit_code, 0) << render.errors;
-  const CommandRun view = volgraph("view " + common + " --screenshot " + shown.string());
+  const CommandRun view = volgraph("view " + common + " --no-overlay --screenshot " + shown.string());
   ASSERT_EQ(view.exit_code, 0) << view.errors;
   EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
   int w = 0, h = 0, rw = 0, rh = 0;
@@ -186,7 +186,7 @@ TEST(Viewer, ScriptVariantMatchesRenderVariant) {
   std::ofstream(script) << "frames 3\nscreenshot " << before.string() << "\nvariant final reinhard\n"
                         << "param final exposure 99\nframes 3\nscreenshot " << shown.string() << "\n";
   const std::string common = config("demo_fog.json") + " --size 160x90 --validation";
-  const CommandRun view = volgraph("view " + common + " --script " + script.string());
+  const CommandRun view = volgraph("view " + common + " --no-overlay --script " + script.string());
   ASSERT_EQ(view.exit_code, 0) << view.errors;
   EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
   EXPECT_EQ(count_of(view.errors, "parameter \"exposure\" expects a number in [-20, 20], got 99"), 1u) << view.errors;
@@ -205,7 +205,7 @@ TEST(Viewer, EditedIncludeIsReloaded) {
   std::ofstream(script) << "frames 2\nscreenshot " << before.string() << "\nwait-change\nframes 2\nscreenshot " << after.string() << "\n";
   const std::filesystem::path include = dir / "graphs" / "analytic_fog.json";
   const std::string args = (dir / "demo_analytic_fog.json").string() + " --size 160x90 --validation";
-  const CommandRun view = view_with_edit("view " + args + " --script " + script.string(), before, [&] {
+  const CommandRun view = view_with_edit("view " + args + " --no-overlay --script " + script.string(), before, [&] {
     std::string text = read_text(include);
     text.replace(text.find("\"aces\""), 6, "\"reinhard\"");
     replace_file(include, text);
@@ -224,7 +224,7 @@ TEST(Viewer, BadEditKeepsTheLastGoodFrame) {
   const std::filesystem::path before = dir / "before.png", after = dir / "after.png";
   std::ofstream(script) << "frames 2\nscreenshot " << before.string() << "\nwait-change\nframes 2\nscreenshot " << after.string() << "\n";
   const std::filesystem::path include = dir / "graphs" / "analytic_fog.json";
-  const CommandRun view = view_with_edit("view " + (dir / "demo_analytic_fog.json").string() + " --size 160x90 --validation --script " + script.string(),
+  const CommandRun view = view_with_edit("view " + (dir / "demo_analytic_fog.json").string() + " --size 160x90 --validation --no-overlay --script " + script.string(),
                                          before, [&] {
                                            std::string text = read_text(include);
                                            text.replace(text.find("\"aces\""), 6, "\"nope\"");
@@ -246,6 +246,98 @@ TEST(Viewer, BadScriptExitsTwoBeforeAnyWindow) {
   EXPECT_NE(view.errors.find("bad_script.txt"), std::string::npos) << view.errors;
   EXPECT_NE(view.errors.find("unknown command \"zoom\""), std::string::npos) << view.errors;
   EXPECT_EQ(view.errors.find("display"), std::string::npos) << view.errors;
+}
+
+// A region of two same-sized PNGs (columns [x0, x1)) as RGBA floats, for the golden metric.
+std::vector<float> columns(const std::filesystem::path& file, int x0, int x1) {
+  int w = 0, h = 0;
+  const std::vector<float> all = png_texels(file, w, h);
+  std::vector<float> out;
+  for (int y = 0; y < h && !all.empty(); ++y) {
+    for (int x = std::max(x0, 0); x < std::min(x1, w); ++x) out.insert(out.end(), &all[(size_t(y) * w + x) * 4], &all[(size_t(y) * w + x) * 4 + 4]);
+  }
+  return out;
+}
+
+// The overlay (on by default) is drawn over the frame's left part (its panel is at most
+// half the window wide): there the screenshot differs from --no-overlay's, to its right
+// it is the same frame.
+TEST(Viewer, OverlayDrawsOverTheLeftOfTheFrame) {
+  const std::filesystem::path dir = scratch() / "overlay", with = dir / "with.png", without = dir / "without.png";
+  std::filesystem::create_directories(dir);
+  const std::string common = "view " + config("demo_fog.json") + " --size 320x180 --frames 3 --validation --screenshot ";
+  const CommandRun shown = volgraph(common + with.string());
+  ASSERT_EQ(shown.exit_code, 0) << shown.errors;
+  EXPECT_EQ(shown.errors.find("validation"), std::string::npos) << shown.errors;
+  const CommandRun plain = volgraph(common + without.string() + " --no-overlay");
+  ASSERT_EQ(plain.exit_code, 0) << plain.errors;
+  const std::vector<float> left_with = columns(with, 0, 160), left_without = columns(without, 0, 160);
+  const std::vector<float> right_with = columns(with, 170, 320), right_without = columns(without, 170, 320);
+  ASSERT_FALSE(left_with.empty());
+  ASSERT_EQ(left_with.size(), left_without.size());
+  ASSERT_EQ(right_with.size(), right_without.size());
+  EXPECT_GT(testing::compare_images(left_with, left_without).relative_mean_error, 0.05);
+  const testing::ImageDifference right = testing::compare_images(right_with, right_without);
+  EXPECT_LE(right.relative_mean_error, 0.01) << right.describe();
+  EXPECT_LE(right.outlier_fraction, 0.005) << right.describe();
+}
+
+// demo_fog and its graph copied to a folder of their own, `edit` applied to the config's text.
+std::filesystem::path edited_demo_fog(const std::string& folder, const std::function<void(std::string&)>& edit) {
+  const std::filesystem::path dir = scratch() / folder;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "graphs");
+  std::filesystem::copy_file(config("graphs/froxel_fog.json"), dir / "graphs" / "froxel_fog.json");
+  std::string text = read_text(config("demo_fog.json"));
+  edit(text);
+  std::ofstream(dir / "demo_fog.json") << text;
+  return dir / "demo_fog.json";
+}
+
+void replace_once(std::string& text, const std::string& what, const std::string& with) {
+  const size_t at = text.find(what);
+  ASSERT_NE(at, std::string::npos) << what;
+  text.replace(at, what.size(), with);
+}
+
+// The script's `camera` (set_camera, as WASD and the mouse move it) gives `render` of the
+// config with that camera; `sun AZ EL` gives the config with the sun light's direction
+// pointing away from azimuth AZ (from +z toward +x), elevation EL.
+TEST(Viewer, ScriptCameraAndSunMatchRenderOfThatScene) {
+  const std::filesystem::path dir = scratch() / "camera", script = dir / "script.txt";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path shown = dir / "view.png", rendered = dir / "render.png", plain = dir / "plain.png";
+  std::ofstream(script) << "camera 2 2.5 6 0.5 0.8 0\nsun 30 20\nframes 3\nscreenshot " << shown.string() << "\n";
+  const std::string common = " --size 160x90 --validation";
+  const CommandRun view = volgraph("view " + config("demo_fog.json") + common + " --no-overlay --script " + script.string());
+  ASSERT_EQ(view.exit_code, 0) << view.errors;
+  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  // sun 30 20: travelling along -(cos 20 sin 30, sin 20, cos 20 cos 30).
+  const std::filesystem::path moved = edited_demo_fog("camera_config", [](std::string& text) {
+    replace_once(text, "\"position\": [0, 1.6, 7], \"target\": [0, 1.0, 0]", "\"position\": [2, 2.5, 6], \"target\": [0.5, 0.8, 0]");
+    replace_once(text, "\"direction\": [0.15, -0.3, 0.94]", "\"direction\": [-0.4698463104, -0.3420201433, -0.8137976617]");
+  });
+  ASSERT_EQ(volgraph("render " + moved.string() + common + " --frames 3 -o " + rendered.string()).exit_code, 0);
+  ASSERT_EQ(volgraph("render " + config("demo_fog.json") + common + " --frames 3 -o " + plain.string()).exit_code, 0);
+  expect_golden_match(shown, rendered);
+  expect_different(shown, plain);
+}
+
+// camera and sun take numbers, six and two: checked before any window, file and line named.
+TEST(Viewer, BadCameraOrSunLineExitsTwoBeforeAnyWindow) {
+  const std::filesystem::path short_camera = scratch() / "short_camera.txt", word_sun = scratch() / "word_sun.txt";
+  std::ofstream(short_camera) << "camera 1 2 3\n";
+  std::ofstream(word_sun) << "frames 1\nsun 30 high\n";
+  const std::string no_display = "env -u DISPLAY -u WAYLAND_DISPLAY";
+  const CommandRun a = volgraph("view " + config("demo_fog.json") + " --script " + short_camera.string(), no_display);
+  EXPECT_EQ(a.exit_code, 2);
+  EXPECT_NE(a.errors.find("short_camera.txt"), std::string::npos) << a.errors;
+  EXPECT_NE(a.errors.find("camera takes 6 word(s)"), std::string::npos) << a.errors;
+  const CommandRun b = volgraph("view " + config("demo_fog.json") + " --script " + word_sun.string(), no_display);
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.errors.find("word_sun.txt"), std::string::npos) << b.errors;
+  EXPECT_NE(b.errors.find("sun high: expected a number"), std::string::npos) << b.errors;
+  EXPECT_EQ(b.errors.find("display"), std::string::npos) << b.errors;
 }
 
 TEST(Viewer, WebGpuSurfaceIsNotWrittenYet) {
