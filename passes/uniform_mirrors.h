@@ -3,7 +3,7 @@
 // tests/unit/uniform_mirrors_test.cpp can check each against the shaders that declare it.
 // Each lists its members' offsets in offsets() (passes/plumbing/programs.h), which the
 // pass's check at setup uses. The blocks several passes share are next to their packing:
-// fog::GpuFogFrame (fog/fog_frame.h), plumbing::GpuLightList (plumbing/light_list.h),
+// gpu::FogFrame (fog/fog_frame.h), gpu::LightList (plumbing/light_list.h),
 // plumbing::ShadowViewBlock (plumbing/shadow_view.h) and plumbing::GpuObjectBlock
 // (plumbing/scene_geometry.h). The structs written once for GLSL and C++ are in
 // shaders/include/ (GPU_STRUCT, gpu_struct.h).
@@ -27,8 +27,8 @@ namespace volgraph {
 struct GpuSceneFrame {
   float view_projection[16];
   float ambient_irradiance[4];
-  plumbing::GpuLightList light_list;
-  physics::GpuMediaField media;  // the global and height fog (no volumes): they dim the light toward each surface
+  gpu::LightList light_list;
+  gpu::MediaField media;  // the global and height fog (no volumes): they dim the light toward each surface
   static constexpr std::array<uint64_t, 4> offsets() {
     return {offsetof(GpuSceneFrame, view_projection), offsetof(GpuSceneFrame, ambient_irradiance),
             offsetof(GpuSceneFrame, light_list), offsetof(GpuSceneFrame, media)};

@@ -1,5 +1,7 @@
 #include "physics/media_field.h"
 
+#include <cstring>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -21,8 +23,8 @@ int shape_code(Shape shape) {
   }
 }
 
-GpuMediumCoefficients gpu_coefficients(const Medium& m) {
-  GpuMediumCoefficients c{};
+gpu::MediumCoefficients gpu_coefficients(const Medium& m) {
+  gpu::MediumCoefficients c{};
   for (size_t i = 0; i < 3; ++i) {
     c.sigma_s_g[i] = float(m.sigma_s[i]);
     c.sigma_a[i] = float(m.sigma_a[i]);
@@ -96,11 +98,11 @@ MediaSample MediaField::sample(const Vec3& p) const {
   return sum.result();
 }
 
-GpuMediaField pack_media(const Media& media) {
+gpu::MediaField pack_media(const Media& media) {
   if (media.volumes.size() > size_t(kMaxMediumVolumes)) {
     throw std::logic_error("at most " + std::to_string(kMaxMediumVolumes) + " medium volumes");
   }
-  GpuMediaField f{};
+  gpu::MediaField f{};
   f.counts[0] = int32_t(media.volumes.size());
   f.counts[1] = media.fog ? 1 : 0;
   f.counts[2] = media.height_fog ? 1 : 0;
@@ -112,8 +114,10 @@ GpuMediaField pack_media(const Media& media) {
   }
   for (size_t i = 0; i < media.volumes.size(); ++i) {
     const MediumVolume& v = media.volumes[i];
-    GpuMediumVolume& g = f.volumes[i];
-    to_floats(inverse_affine(model_matrix(v.transform)), g.world_to_local);
+    gpu::MediumVolume& g = f.volumes[i];
+    float world_to_local[16];
+    to_floats(inverse_affine(model_matrix(v.transform)), world_to_local);
+    std::memcpy(&g.world_to_local, world_to_local, sizeof(world_to_local));
     for (size_t k = 0; k < 3; ++k) g.size_shape[k] = float(v.size[k]);
     g.size_shape[3] = float(shape_code(v.shape));
     g.fade[0] = float(v.noise.edge_fade);

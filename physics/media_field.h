@@ -13,6 +13,7 @@
 
 #include "graph/scene/scene.h"
 #include "physics/camera.h"
+#include "shaders/include/media_field.h"
 
 namespace volgraph::physics {
 
@@ -73,37 +74,12 @@ constexpr int kMaxMediumVolumes = 8;  // MAX_MEDIUM_VOLUMES in media_field.glsl
 
 // std140 mirror of MediaField in media_field.glsl.
 // Each lists its members' offsets (offsets(): passes/plumbing/programs.h).
-struct GpuMediumCoefficients {
-  float sigma_s_g[4], sigma_a[4], emission[4];
-  static constexpr std::array<uint64_t, 3> offsets() {
-    return {offsetof(GpuMediumCoefficients, sigma_s_g), offsetof(GpuMediumCoefficients, sigma_a),
-            offsetof(GpuMediumCoefficients, emission)};
-  }
-};
-struct GpuMediumVolume {
-  float world_to_local[16];
-  float size_shape[4];
-  float fade[4];
-  float noise[4];
-  GpuMediumCoefficients medium;
-  static constexpr std::array<uint64_t, 5> offsets() {
-    return {offsetof(GpuMediumVolume, world_to_local), offsetof(GpuMediumVolume, size_shape), offsetof(GpuMediumVolume, fade),
-            offsetof(GpuMediumVolume, noise), offsetof(GpuMediumVolume, medium)};
-  }
-};
-struct GpuMediaField {
-  int32_t counts[4];
-  GpuMediumCoefficients fog, height_fog;
-  float height[4];
-  GpuMediumVolume volumes[kMaxMediumVolumes];
-  static constexpr std::array<uint64_t, 5> offsets() {
-    return {offsetof(GpuMediaField, counts), offsetof(GpuMediaField, fog), offsetof(GpuMediaField, height_fog),
-            offsetof(GpuMediaField, height), offsetof(GpuMediaField, volumes)};
-  }
-};
-static_assert(sizeof(GpuMediaField) == 16 + 2 * 48 + 16 + kMaxMediumVolumes * 160);
+// The packed media: gpu::MediaField, gpu::MediumVolume, gpu::MediumCoefficients, written once
+// for GLSL and C++ (shaders/include/media_field.h).
+static_assert(GPU_MAX_MEDIUM_VOLUMES == kMaxMediumVolumes, "shaders/include/media_field.h and physics name one limit");
+static_assert(sizeof(gpu::MediaField) == 16 + 2 * 48 + 16 + kMaxMediumVolumes * 160);
 
 // Throws std::logic_error past kMaxMediumVolumes volumes (passes refuse such scenes at validate time: fog_frame.h).
-GpuMediaField pack_media(const Media& media);
+gpu::MediaField pack_media(const Media& media);
 
 }  // namespace volgraph::physics

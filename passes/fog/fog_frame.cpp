@@ -36,9 +36,9 @@ gpu::ViewRays pack_view_rays(const Camera& camera, Extent output) {
   return v;
 }
 
-GpuFogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs, plumbing::SceneLighting& lighting) {
+gpu::FogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs, plumbing::SceneLighting& lighting) {
   const Scene& scene = *s.scene;
-  GpuFogFrame f{};
+  gpu::FogFrame f{};
   f.view = pack_view_rays(scene.camera, s.frame_size());
   f.grid.size[0] = inputs.grid.width;
   f.grid.size[1] = inputs.grid.height;

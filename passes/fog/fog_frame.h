@@ -15,29 +15,17 @@
 #include "passes/plumbing/light_list.h"
 #include "passes/plumbing/scene_lighting.h"
 #include "physics/media_field.h"
+#include "shaders/include/fog_frame.h"
 #include "shaders/include/froxel_grid.h"
 #include "shaders/include/view_rays.h"
 
 namespace volgraph::fog {
 
-// The std140 mirror of FogFrame (fog_frame.glsl); the shaders hold a FogFrame as the one
-// member of their Frame block (plumbing::check_wrapped_uniform_mirror). Its ViewRays and
-// FroxelGrid are written once for GLSL and C++ (shaders/include/view_rays.h, froxel_grid.h).
-struct GpuFogFrame {
-  gpu::ViewRays view;
-  gpu::FroxelGrid grid;
-  float jitter[4];
-  float ambient[4];
-  plumbing::GpuLightList light_list;
-  physics::GpuMediaField media;
-  static constexpr std::array<uint64_t, 6> offsets() {
-    return {offsetof(GpuFogFrame, view),    offsetof(GpuFogFrame, grid),       offsetof(GpuFogFrame, jitter),
-            offsetof(GpuFogFrame, ambient), offsetof(GpuFogFrame, light_list), offsetof(GpuFogFrame, media)};
-  }
-};
+// The frame block the fog passes share: gpu::FogFrame, written once for GLSL and C++
+// (shaders/include/fog_frame.h), the one member of their Frame block.
 
 // Bytes of the `frame` buffer slot (the block rounded up to 256).
-constexpr uint64_t kFogFrameBytes = (sizeof(GpuFogFrame) + 255) / 256 * 256;
+constexpr uint64_t kFogFrameBytes = (sizeof(gpu::FogFrame) + 255) / 256 * 256;
 
 struct FogFrameInputs {
   Extent grid;                  // froxels
@@ -52,7 +40,7 @@ gpu::ViewRays pack_view_rays(const Camera& camera, Extent output);
 
 // The frame block of frame `frame` (its jitter) for the scene and frame size `s` sees: its
 // lights and the ambient radiance (the inputs' plus the sky's) as `lighting` gives them.
-GpuFogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs, plumbing::SceneLighting& lighting);
+gpu::FogFrame make_fog_frame(const PassSetup& s, uint64_t frame, const FogFrameInputs& inputs, plumbing::SceneLighting& lighting);
 
 // The scene's media must fit the frame block (at most kMaxMediumVolumes local volumes):
 // the problems of a pass that packs them (`what`: how the pass uses them, "voxelized").

@@ -38,7 +38,7 @@ class FroxelApplyExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     draws_.prepare(s, t_.color, "froxel_apply_transmittance.frag", "froxel_apply_scattering.frag");
     for (const plumbing::RenderProgram* p : draws_.programs()) {
-      plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(*p, 0, 0, s.name() + " frame");  // froxel_voxelize's
+      plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(*p, 0, 0, s.name() + " frame");  // froxel_voxelize's
     }
   }
 

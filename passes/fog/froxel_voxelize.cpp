@@ -77,8 +77,8 @@ class FroxelVoxelizeExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "froxel_voxelize.comp");
     // Written every frame, here and to `frame` for the fog passes after it: checked once.
-    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");
-    own_frame_ = s.device.create_buffer({s.name() + " frame", sizeof(fog::GpuFogFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(program_, 0, 0, s.name() + " frame");
+    own_frame_ = s.device.create_buffer({s.name() + " frame", sizeof(gpu::FogFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
     inputs_.grid = s.extent(t_.media_scattering);
     inputs_.range.near = s.param(t_.near);
     inputs_.range.far = s.param(t_.far);
@@ -88,7 +88,7 @@ class FroxelVoxelizeExecution final : public PassExecution {
   }
 
   void record(PassContext& c) override {
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, inputs_, lighting_);
+    const gpu::FogFrame frame = fog::make_fog_frame(c, c.frame, inputs_, lighting_);
     const auto bytes = std::as_bytes(std::span(&frame, 1));
     c.device.write_buffer(own_frame_, 0, bytes);               // for this pass's shader
     c.encoder.update_buffer(c.buffer(t_.frame), 0, bytes);  // for the fog passes after it

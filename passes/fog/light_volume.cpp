@@ -221,7 +221,7 @@ class LightVolumeExecution final : public PassExecution {
     frame_inputs.range = {s.scene->camera.near, s.scene->camera.far, physics::FroxelDistribution::linear};
     frame_inputs.ambient_radiance = s.param(t_.ambient);
     frame_inputs.jitter = false;
-    const fog::GpuFogFrame frame = fog::make_fog_frame(s, 0, frame_inputs, lighting_);
+    const gpu::FogFrame frame = fog::make_fog_frame(s, 0, frame_inputs, lighting_);
     frame_ = buffer(s, "frame", std::as_bytes(std::span(&frame, 1)));
     if (!shadowed_) {
       plumbing::ShadowViewBlock none{};
@@ -276,16 +276,16 @@ class LightVolumeExecution final : public PassExecution {
     using plumbing::check_wrapped_uniform_mirror;
     const std::string params = s.pass_name() + " params", frame = s.pass_name() + " frame",
                       view = s.pass_name() + " shadow view";
-    check_wrapped_uniform_mirror<fog::GpuFogFrame>(ends_program_, light_volume_ends_shader::frame, frame);
+    check_wrapped_uniform_mirror<gpu::FogFrame>(ends_program_, light_volume_ends_shader::frame, frame);
     check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(ends_program_, light_volume_ends_shader::shadow, view);
     check_wrapped_uniform_mirror<gpu::LightVolumeParams>(ends_program_, light_volume_ends_shader::params, params);
-    check_wrapped_uniform_mirror<fog::GpuFogFrame>(resolve_, light_volume_resolve_shader::frame, frame);
+    check_wrapped_uniform_mirror<gpu::FogFrame>(resolve_, light_volume_resolve_shader::frame, frame);
     if (!shadowed_) return;
     check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(unproject_, light_volume_unproject_shader::shadow, view);
     check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(cells_program_, light_volume_cells_shader::shadow, view);
     check_wrapped_uniform_mirror<gpu::LightVolumeParams>(cells_program_, light_volume_cells_shader::params, params);
     check_wrapped_uniform_mirror<gpu::LightVolumeParams>(faces_, light_volume_faces_frag_shader::params, params);
-    check_wrapped_uniform_mirror<fog::GpuFogFrame>(faces_, light_volume_faces_frag_shader::frame, frame);
+    check_wrapped_uniform_mirror<gpu::FogFrame>(faces_, light_volume_faces_frag_shader::frame, frame);
   }
 
   static void fullscreen(PassContext& c, std::vector<rhi::TextureViewId> targets, const plumbing::RenderProgram& program,

@@ -64,9 +64,9 @@ class OpacityShadowMapExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "opacity_shadow_map.comp");
     // The frame block is written when the pass runs, the view by shadow_map: checked once.
-    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");
+    plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(program_, 0, 0, s.name() + " frame");
     plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, 0, 1, s.name() + " light_view");
-    frame_ = s.device.create_buffer({s.name() + " frame", sizeof(fog::GpuFogFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    frame_ = s.device.create_buffer({s.name() + " frame", sizeof(gpu::FogFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
     const gpu::OpacityParams params{{int32_t(s.param(t_.steps_per_layer)), int32_t(s.param(t_.light_steps)), 0, 0},
                                   {float(s.param(t_.distance)), 0, 0, 0}};
     params_ = plumbing::create_shared_uniform_block(s.device, program_, opacity_shadow_map_shader::params, s.name() + " params", params);
@@ -78,7 +78,7 @@ class OpacityShadowMapExecution final : public PassExecution {
     fog::FogFrameInputs frame_inputs;  // the lights and media; no froxel grid
     frame_inputs.range = {c.scene->camera.near, c.scene->camera.far, physics::FroxelDistribution::linear};
     frame_inputs.jitter = false;
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, 0, frame_inputs, lighting_);  // frame 0: the map is frame invariant
+    const gpu::FogFrame frame = fog::make_fog_frame(c, 0, frame_inputs, lighting_);  // frame 0: the map is frame invariant
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     const rhi::BindGroupId group = c.bind_group(program_, {bind(opacity_shadow_map_shader::frame, frame_), bind(opacity_shadow_map_shader::shadow, c.buffer(t_.light_view)),
                                                            bind(opacity_shadow_map_shader::optical_depth, c.view(t_.optical_depth)), bind(opacity_shadow_map_shader::params, params_)});

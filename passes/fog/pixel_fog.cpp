@@ -19,8 +19,8 @@ void PixelFogExecution::setup(PassSetup& s) {
   frame_inputs.range = {s.scene->camera.near, s.scene->camera.far, physics::FroxelDistribution::linear};
   frame_inputs.ambient_radiance = in.ambient;
   frame_inputs.jitter = false;
-  const GpuFogFrame frame = make_fog_frame(s, 0, frame_inputs, lighting_);
-  plumbing::check_wrapped_uniform_mirror<GpuFogFrame>(program_, 0, 0, s.name() + " frame");
+  const gpu::FogFrame frame = make_fog_frame(s, 0, frame_inputs, lighting_);
+  plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(program_, 0, 0, s.name() + " frame");
   frame_ = plumbing::create_uniform_block(s.device, s.name() + " frame", frame);
   if (!in.params.empty()) {
     rhi::check_uniform_block(plumbing::uniform_block_at(program_.uniform_blocks, 0, 5), in.params.size(), in.params_offsets,

@@ -46,7 +46,7 @@ class PixelTemporalExecution final : public fog::TemporalExecution {
 
  private:
   void setup_blocks(PassSetup& s) override {
-    frame_ = s.device.create_buffer({"pixel_temporal frame", sizeof(fog::GpuFogFrame),
+    frame_ = s.device.create_buffer({"pixel_temporal frame", sizeof(gpu::FogFrame),
                                      rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
 
@@ -56,7 +56,7 @@ class PixelTemporalExecution final : public fog::TemporalExecution {
     in.grid = c.extent(t_.scattering);
     in.range = {c.scene->camera.near, c.scene->camera.far, physics::FroxelDistribution::linear};
     in.jitter = false;
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, in, lighting_);
+    const gpu::FogFrame frame = fog::make_fog_frame(c, c.frame, in, lighting_);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
   }
 

@@ -83,14 +83,14 @@ class RaymarchFogExecution final : public PassExecution {
     shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
     program_ = plumbing::create_compute_program(s.device, shadowed_ ? "raymarch_fog_shadowed.comp" : "raymarch_fog.comp");
     plumbing::check_wrapped_uniform_mirror<gpu::RaymarchParams>(program_, raymarch_fog_shadowed_shader::params, s.name() + " params");
-    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");
+    plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(program_, 0, 0, s.name() + " frame");
     phase_ = {s.variant().shader_code, float(s.param(t_.g_back)), float(s.param(t_.w_forward))};
-    frame_ = s.device.create_buffer({"raymarch_fog frame", sizeof(fog::GpuFogFrame), buffer_usage::uniform | buffer_usage::copy_dst});
+    frame_ = s.device.create_buffer({"raymarch_fog frame", sizeof(gpu::FogFrame), buffer_usage::uniform | buffer_usage::copy_dst});
     params_ = s.device.create_buffer({"raymarch_fog params", sizeof(gpu::RaymarchParams), buffer_usage::uniform | buffer_usage::copy_dst});
   }
 
   void record(PassContext& c) override {
-    const fog::GpuFogFrame frame = fog::make_fog_frame(c, c.frame, frame_inputs(c), lighting_);
+    const gpu::FogFrame frame = fog::make_fog_frame(c, c.frame, frame_inputs(c), lighting_);
     c.device.write_buffer(frame_, 0, std::as_bytes(std::span(&frame, 1)));
     const gpu::RaymarchParams params = march_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));

@@ -44,7 +44,7 @@ class ScatterIntegrateExecution final : public PassExecution {
 
   void setup(PassSetup& s) override {
     program_ = plumbing::create_compute_program(s.device, "scatter_integrate.comp");
-    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(program_, 0, 0, s.name() + " frame");  // froxel_voxelize's
+    plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(program_, 0, 0, s.name() + " frame");  // froxel_voxelize's
     const gpu::IntegrateParams params{{s.variant().shader_code, 0, 0, 0}};
     params_ = plumbing::create_shared_uniform_block(s.device, program_, scatter_integrate_shader::params, s.name() + " params", params);
   }

@@ -8,7 +8,7 @@ void TemporalExecution::setup(PassSetup& s) {
   program_ = plumbing::create_compute_program(s.device, shader_);
   // The Params are written every frame, the frame block by froxel_voxelize or the pass: checked once.
   plumbing::check_wrapped_uniform_mirror<gpu::TemporalParams>(program_, 0, params_binding_, s.name() + " params");
-  plumbing::check_wrapped_uniform_mirror<GpuFogFrame>(program_, 0, 0, s.name() + " frame");
+  plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(program_, 0, 0, s.name() + " frame");
   params_ = s.device.create_buffer({s.name() + " params", sizeof(gpu::TemporalParams),
                                     rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   setup_blocks(s);

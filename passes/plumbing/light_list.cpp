@@ -11,8 +11,8 @@ namespace volgraph::plumbing {
 using namespace physics;  // the CPU maths these helpers are written in
 namespace {
 
-GpuLight gpu_light(const Light& l) {
-  GpuLight g{};
+gpu::Light gpu_light(const Light& l) {
+  gpu::Light g{};
   const bool directional = l.type == LightType::directional;
   const Vec3 dir = normalize(l.direction);
   const Vec3& power = directional ? l.irradiance : l.intensity;
@@ -30,11 +30,11 @@ GpuLight gpu_light(const Light& l) {
 
 }  // namespace
 
-GpuLightList pack_lights(const std::vector<Light>& lights) {
+gpu::LightList pack_lights(const std::vector<Light>& lights) {
   if (lights.size() > size_t(kMaxLights)) {
     throw std::logic_error("at most " + std::to_string(kMaxLights) + " lights");
   }
-  GpuLightList list{};
+  gpu::LightList list{};
   list.counts[0] = int32_t(lights.size());
   for (size_t i = 0; i < lights.size(); ++i) list.lights[i] = gpu_light(lights[i]);
   return list;

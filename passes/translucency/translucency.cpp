@@ -243,7 +243,7 @@ class TranslucencyExecution final : public PassExecution {
     namespace shader = translucency_surface_shader;
     plumbing::check_uniform_mirror<GpuSceneFrame>(*like, shader::frame, s.name() + " frame (the scene pass's)");
     plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(*like, shader::shadow, s.name() + " light_view");
-    plumbing::check_wrapped_uniform_mirror<fog::GpuFogFrame>(*like, shader::fog, s.name() + " fog_frame");
+    plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(*like, shader::fog, s.name() + " fog_frame");
     plumbing::check_wrapped_uniform_mirror<gpu::AerialLookup>(*like, shader::air, s.name() + " aerial_lookup");
     block_ = plumbing::create_checked_uniform_block(s.device, *like, shader::translucency, s.name() + " translucency", GpuTranslucencyBlock{});
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, *like);
@@ -276,7 +276,7 @@ class TranslucencyExecution final : public PassExecution {
     plumbing::ShadowViewBlock no_shadow{};
     no_shadow.params[3] = -1;
     no_shadow_view_ = plumbing::create_uniform_buffer(s.device, s.name() + " no shadow view", std::as_bytes(std::span(&no_shadow, 1)));
-    const fog::GpuFogFrame no_fog{};
+    const gpu::FogFrame no_fog{};
     no_fog_frame_ = plumbing::create_uniform_buffer(s.device, s.name() + " no froxel frame", std::as_bytes(std::span(&no_fog, 1)));
     rhi::TextureDesc volume;
     volume.label = s.name() + " no froxel volume";

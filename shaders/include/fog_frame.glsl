@@ -9,14 +9,7 @@
 #include "media_field.glsl"
 #include "view_rays.glsl"
 
-struct FogFrame {
-  ViewRays view;       // position.w: the camera's near plane, forward.w: its far plane (m)
-  FroxelGrid grid;
-  vec4 jitter;         // xyz: this frame's sample offset inside each froxel (froxel units, within ±0.5); w: frame
-  vec4 ambient;        // rgb: ambient radiance (W/(m²·sr)) scattered by the media
-  LightList light_list;
-  MediaField media;
-};
+#include "fog_frame.h"  // struct FogFrame
 
 // View depth of a depth-buffer value of the scene pass's camera.
 float view_depth(FogFrame f, float depth) { return linear_view_depth(depth, f.view.position.w, f.view.forward.w); }

@@ -4,11 +4,8 @@
 #define VOLGRAPH_LIGHT_LIST_GLSL
 #include "lighting.glsl"
 
-const int MAX_LIGHTS = 16;
+#include "light_list.h"  // struct LightList, GPU_MAX_LIGHTS
 
-struct LightList {
-  ivec4 counts;  // x: lights
-  Light lights[MAX_LIGHTS];
-};
+const int MAX_LIGHTS = GPU_MAX_LIGHTS;
 
 #endif

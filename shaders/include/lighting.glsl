@@ -7,11 +7,7 @@ const int LIGHT_DIRECTIONAL = 0;
 const int LIGHT_POINT = 1;
 const int LIGHT_SPOT = 2;
 
-struct Light {
-  vec4 position_type;        // xyz position (point, spot), w type
-  vec4 direction_cos_outer;  // xyz direction the light travels (directional, spot), w cos(outer cone)
-  vec4 power_cos_inner;      // rgb irradiance (directional, W/m²) or intensity (point, spot, W/sr); w cos(inner cone)
-};
+#include "light.h"  // struct Light
 
 // A spot light's smooth falloff between its outer and inner cones for light leaving it
 // along `travel` (unit); 1 for other lights.

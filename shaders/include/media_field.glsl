@@ -8,32 +8,13 @@
 #include "media.glsl"
 #include "noise.glsl"
 
-const int MAX_MEDIUM_VOLUMES = 8;
 const int SHAPE_BOX = 1;
 const int SHAPE_SPHERE = 2;
 const int SHAPE_ELLIPSOID = 3;
 
-struct MediumCoefficients {
-  vec4 sigma_s_g;  // rgb σs (1/m), w g
-  vec4 sigma_a;    // rgb σa (1/m)
-  vec4 emission;   // rgb radiance per metre
-};
+#include "media_field.h"  // structs MediumCoefficients, MediumVolume, MediaField; GPU_MAX_MEDIUM_VOLUMES
 
-struct MediumVolume {
-  mat4 world_to_local;
-  vec4 size_shape;  // xyz size (box edges, sphere radius in x, ellipsoid radii), w shape
-  vec4 fade;        // x edge fade (m)
-  vec4 noise;       // x octaves (0: none), y 1 / scale (per local unit), z coverage
-  MediumCoefficients medium;
-};
-
-struct MediaField {
-  ivec4 counts;                    // x volumes, y global fog present, z height fog present
-  MediumCoefficients fog;
-  MediumCoefficients height_fog;   // at base height
-  vec4 height;                     // x base height (m), y falloff (1/m)
-  MediumVolume volumes[MAX_MEDIUM_VOLUMES];
-};
+const int MAX_MEDIUM_VOLUMES = GPU_MAX_MEDIUM_VOLUMES;
 
 struct MediaSample {
   vec3 sigma_s;

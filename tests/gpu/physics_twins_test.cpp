@@ -178,7 +178,7 @@ Media noisy_media() {
 // fBm's slope, ~octaves / (scale · coverage), turns that into density); |Δg| ≤ 1e-4.
 TEST_P(PhysicsTwins, NoiseAndMediaFieldMatchTheirCpuTwins) {
   const Media media = noisy_media();
-  const physics::GpuMediaField packed = physics::pack_media(media);
+  const gpu::MediaField packed = physics::pack_media(media);
   const physics::MediaField field(media);
   test::Rng rng(5);
   std::vector<NoisePoint> points;
@@ -353,7 +353,7 @@ TEST_P(PhysicsTwins, InScatteringMatchesItsCpuTwin) {
   double worst = 0;
   size_t lit = 0;
   for (const Vec3& ambient : {Vec3{0, 0, 0}, Vec3{0.05, 0.1, 0.2}}) {
-    fog::GpuFogFrame frame{};
+    gpu::FogFrame frame{};
     frame.light_list = plumbing::pack_lights(lights);
     frame.media = physics::pack_media(media);
     for (size_t k = 0; k < 3; ++k) frame.ambient[k] = float(ambient[k]);
@@ -495,7 +495,7 @@ struct AverageSegment {
 TEST_P(PhysicsTwins, MediaAverageMatchesItsCpuTwin) {
   Media media = noisy_media();
   media.volumes[3].noise = {};
-  const physics::GpuMediaField packed = physics::pack_media(media);
+  const gpu::MediaField packed = physics::pack_media(media);
   const physics::MediaField field(media);
   std::vector<AverageSegment> segments;
   const float jitters[] = {0.0f, 0.3f, -0.3f, 0.49f};

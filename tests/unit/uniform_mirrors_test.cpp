@@ -228,7 +228,7 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
            {"analytic_fog.comp", 0}, {"raymarch_fog.comp", 0}, {"raymarch_fog_shadowed.comp", 0},
            {"froxel_apply_transmittance.frag", 0}, {"froxel_apply_scattering.frag", 0}, {"light_volume_ends.frag", 0},
            {"light_volume_faces.frag", 4}, {"light_volume_resolve.frag", 3}}) {
-    EXPECT_EQ(wrapped_error<fog::GpuFogFrame>(at.shader, 0, at.binding, "GpuFogFrame"), "") << at.shader;
+    EXPECT_EQ(wrapped_error<gpu::FogFrame>(at.shader, 0, at.binding, "gpu::FogFrame"), "") << at.shader;
   }
 }
 
@@ -263,12 +263,6 @@ TEST(UniformMirrors, ShadowViewBlocksMatch) {
 // ---- The structs inside blocks, member by member ----------------------------------------
 
 TEST(UniformMirrors, NestedStructsMatchTheirGlsl) {
-  EXPECT_NESTED_MATCH(fog::GpuFogFrame, "FogFrame");
-  EXPECT_NESTED_MATCH(plumbing::GpuLightList, "LightList");
-  EXPECT_NESTED_MATCH(plumbing::GpuLight, "Light");
-  EXPECT_NESTED_MATCH(physics::GpuMediaField, "MediaField");
-  EXPECT_NESTED_MATCH(physics::GpuMediumVolume, "MediumVolume");
-  EXPECT_NESTED_MATCH(physics::GpuMediumCoefficients, "MediumCoefficients");
   EXPECT_NESTED_MATCH(plumbing::ShadowViewBlock, "ShadowView");
 }
 
@@ -287,9 +281,9 @@ TEST(UniformMirrors, NestedLayoutsAgreeWithReflection) {
 // GpuSceneFrame with its ambient irradiance moved after the lights.
 struct MovedAmbientSceneFrame {
   float view_projection[16];
-  plumbing::GpuLightList light_list;
+  gpu::LightList light_list;
   float ambient_irradiance[4];
-  physics::GpuMediaField media;
+  gpu::MediaField media;
   static constexpr std::array<uint64_t, 4> offsets() {
     return {offsetof(MovedAmbientSceneFrame, view_projection), offsetof(MovedAmbientSceneFrame, ambient_irradiance),
             offsetof(MovedAmbientSceneFrame, light_list), offsetof(MovedAmbientSceneFrame, media)};
@@ -303,7 +297,7 @@ struct SwappedMediumVolume {
   float size_shape[4];
   float noise[4];
   float fade[4];
-  physics::GpuMediumCoefficients medium;
+  gpu::MediumCoefficients medium;
   static constexpr std::array<uint64_t, 5> offsets() {
     return {offsetof(SwappedMediumVolume, world_to_local), offsetof(SwappedMediumVolume, size_shape),
             offsetof(SwappedMediumVolume, fade), offsetof(SwappedMediumVolume, noise), offsetof(SwappedMediumVolume, medium)};
@@ -330,12 +324,12 @@ TEST(UniformMirrors, WrappedBlockOfAnotherSizeFails) {
     gpu::ViewRays view;
     gpu::FroxelGrid grid;
     float jitter[4];
-    plumbing::GpuLightList light_list;
-    physics::GpuMediaField media;
+    gpu::LightList light_list;
+    gpu::MediaField media;
   };
   EXPECT_EQ(wrapped_error<ShortFrame>("froxel_voxelize.comp", 0, 0, "ShortFrame"),
             "host struct ShortFrame does not match uniform block Frame (set 0, binding 0): the block is " +
-                std::to_string(sizeof(fog::GpuFogFrame)) + " bytes, the host struct " + std::to_string(sizeof(ShortFrame)) +
+                std::to_string(sizeof(gpu::FogFrame)) + " bytes, the host struct " + std::to_string(sizeof(ShortFrame)) +
                 " (the sizes must be equal)");
 }
 
