@@ -7,6 +7,7 @@
 //   two fp16 steps; every other pixel is bit for bit as without the sheet;
 // - an opaque box above the sheet still shadows fully (black, no ambient), and the sheet
 //   behind it is not in the transmittance map (1 there);
+// - a receiver between the sheet and the sun (casting no shadow itself) is not tinted;
 // - no translucent caster: the map is 1 everywhere and the floor is as without the pass;
 // - stress (IOR 1 and 4, transmission 0 and 1): every value finite, transmission 0 black;
 // - against the CPU reference with translucent shadows on: relative mean error Σ|gpu − ref| / Σ ref.
@@ -127,6 +128,31 @@ TEST_P(TranslucentShadow, AnOpaqueCasterAboveTheGlassStillShadowsFully) {
   EXPECT_TRUE(all_one(map)) << "the sheet lies behind the box: not in the transmittance map";
 }
 
+// A receiver between the sheet and the sun (a box that casts no shadow, so the opaque map does
+// not hide the sheet behind it) is not tinted: only what lies behind the nearest caster is.
+// The sheet here is in the view (the scene pass does not draw it): every pixel the sheet
+// changes with the box there is one it changes on the bare floor (its shadow), none on the box.
+TEST_P(TranslucentShadow, AReceiverInFrontOfTheGlassIsNotTinted) {
+  const std::string low_glass =
+      R"(, { "shape": "plane", "size": [1, 1, 1], "material": "red_glass", "transform": { "translate": [0, 0.5, 0] } })";
+  const std::string box_in_front = R"(, { "shape": "box", "size": [0.6, 0.6, 0.6], "material": "white", "cast_shadows": false,
+                                          "transform": { "translate": [-1.3, 1.5, 0] } })";
+  const Texels floor = render(floor_and("")).first;
+  const Texels floor_glass = render(floor_and(low_glass)).first;
+  const Texels box = render(floor_and(box_in_front)).first;
+  const Texels box_glass = render(floor_and(low_glass + box_in_front)).first;
+  auto differs = [](const Texels& a, const Texels& b, size_t p) {
+    return a.rgba[p] != b.rgba[p] || a.rgba[p + 1] != b.rgba[p + 1] || a.rgba[p + 2] != b.rgba[p + 2];
+  };
+  int box_pixels = 0, tinted_elsewhere = 0;
+  for (size_t p = 0; p < floor.rgba.size(); p += 4) {
+    box_pixels += differs(floor, box, p) ? 1 : 0;
+    tinted_elsewhere += differs(box, box_glass, p) && !differs(floor, floor_glass, p) ? 1 : 0;
+  }
+  EXPECT_GT(box_pixels, 4) << "the box in the view";
+  EXPECT_EQ(tinted_elsewhere, 0) << "pixels tinted off the floor's shadow (the box)";
+}
+
 // No translucent caster: the map stays at 1 (the pass is not culled while the scene reads it)
 // and the floor is bit for bit as the shadow map alone shades it.
 TEST_P(TranslucentShadow, NoTranslucentCasterLeavesTheMapAtOne) {
@@ -179,7 +205,7 @@ TEST_P(TranslucentShadow, MatchesTheReference) {
   }
   std::printf("red glass shadow against the reference: relative mean error %.2e, %d of %u texels off by more than 1%%\n",
               error / total, off, image.width * image.height);
-  EXPECT_LT(error / total, 2e-2);
+  EXPECT_LT(error / total, 2e-3);  // measured 6.4e-4 on lavapipe, both backends
   settings.translucent_shadows = false;  // the metric can fail: without them the reference's floor is black there
   const reference::ReferenceImage opaque = reference::render_image(reference::Renderer(scene_, settings), {image.width, image.height});
   double error_opaque = 0;
