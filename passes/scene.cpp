@@ -1,7 +1,8 @@
 // Opaque scene: Lambertian surfaces lit by the scene's lights (DESIGN.md units:
 // ρ/π · E · cos θ · V, V the shadow map's visibility times the media's transmittance
 // toward the light — the global and height fog's in closed form always, the local volumes'
-// through an opacity shadow map when one is wired, as the CPU reference dims surfaces),
+// through an opacity shadow map when one is wired, as the CPU reference dims surfaces, and
+// the translucent casters' coloured transmittance through a translucent_shadow_map when one is),
 // emissive surfaces and the background radiance.
 #include <cstring>
 
@@ -19,14 +20,14 @@
 #include "passes/plumbing/textures.h"
 #include "passes/uniform_mirrors.h"
 #include "shaders/bindings/scene.vert.h"
-#include "shaders/bindings/scene_media_shadowed.frag.h"
+#include "shaders/bindings/scene_media_translucent_shadowed.frag.h"
 
 namespace volgraph {
 namespace {
 
 namespace scene_vert_shader = shaders::scene_vert;
-// The shadowed fragment shaders share set 2; the media-shadowed one declares all of it.
-namespace scene_shadow_shader = shaders::scene_media_shadowed_frag;
+// The shadowed fragment shaders share set 2; the media- and translucent-shadowed one declares all of it.
+namespace scene_shadow_shader = shaders::scene_media_translucent_shadowed_frag;
 
 // The media the surfaces' lighting sees in closed form: the global and height fog (the
 // local volumes only through an opacity shadow map, media_shadow).
@@ -94,6 +95,12 @@ struct SceneTable : PassTable {
   SlotHandle light_view = optional_input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view");
   SlotHandle media_shadow = optional_input("media_shadow", ResourceKind::texture3d, Usage::sampled,
                                            "opacity_shadow_map's optical depth over the same light view: the media dim that light");
+  SlotHandle translucent_shadow = optional_input("translucent_shadow", ResourceKind::texture2d, Usage::sampled,
+                                                 "translucent_shadow_map's transmittance over the same light view: translucent casters tint that light",
+                                                 {.format = Format::rgba16_float});
+  SlotHandle translucent_shadow_depth = optional_input("translucent_shadow_depth", ResourceKind::texture2d, Usage::sampled,
+                                                       "translucent_shadow_map's depth: only receivers behind its casters are tinted",
+                                                       {.format = Format::d32_float});
   SlotHandle color = output("color", ResourceKind::texture2d, Usage::color_attachment, Format::rgba16_float, SizeSpec::of_output(),
                             "linear radiance", {.format_overridable = true, .size_overridable = true});
   SlotHandle depth = output("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float, SizeSpec::of_output(),
@@ -113,16 +120,14 @@ class SceneExecution final : public PassExecution {
     // With a shadow map wired (and shadows on), its light is shadowed (set 2).
     shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
     media_shadowed_ = shadowed_ && s.bound(t_.media_shadow);
+    translucent_shadowed_ = shadowed_ && s.bound(t_.translucent_shadow) && s.bound(t_.translucent_shadow_depth);
     RenderPipelineDesc pd;
     pd.label = "scene";
     pd.vertex_buffers = {plumbing::SceneGeometry::vertex_layout()};
     pd.colors = {{s.desc(t_.color).format, BlendMode::replace}};
     pd.depth = {Format::d32_float, true, CompareFunction::less};
     pd.cull = CullMode::none;  // planes are seen from both sides
-    program_ = plumbing::create_render_program(s.device, pd, "scene.vert",
-                                              media_shadowed_ ? "scene_media_shadowed.frag"
-                                              : shadowed_     ? "scene_shadowed.frag"
-                                                              : "scene.frag");
+    program_ = plumbing::create_render_program(s.device, pd, "scene.vert", fragment_shader());
     // The blocks it fills (the frame every frame; the objects' in SceneGeometry) and the
     // shadow map's view it reads match the shaders'.
     plumbing::check_uniform_mirror<GpuSceneFrame>(program_, scene_vert_shader::frame, "scene frame");
@@ -153,6 +158,10 @@ class SceneExecution final : public PassExecution {
         shadow.push_back(bind(shader::media_shadow, c.view(t_.media_shadow)));
         shadow.push_back(bind(shader::media_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)));
       }
+      if (translucent_shadowed_) {
+        shadow.push_back(bind(shader::translucent_shadow, c.view(t_.translucent_shadow)));
+        shadow.push_back(bind(shader::translucent_shadow_depth, c.view(t_.translucent_shadow_depth)));
+      }
       c.encoder.set_bind_group(2, c.bind_group(program_, shadow));
     }
     geometry_->draw(c.encoder, 1);
@@ -160,6 +169,13 @@ class SceneExecution final : public PassExecution {
   }
 
  private:
+  // Set 2 as wired: the shadow map, with the media's opacity map and the translucent casters' map.
+  const char* fragment_shader() const {
+    if (!shadowed_) return "scene.frag";
+    if (media_shadowed_) return translucent_shadowed_ ? "scene_media_translucent_shadowed.frag" : "scene_media_shadowed.frag";
+    return translucent_shadowed_ ? "scene_translucent_shadowed.frag" : "scene_shadowed.frag";
+  }
+
   GpuSceneFrame frame_of(PassContext& c) {
     const Scene& scene = *c.scene;
     const Extent size = c.extent(t_.color);
@@ -175,7 +191,7 @@ class SceneExecution final : public PassExecution {
   }
 
   const SceneTable& t_;
-  bool shadowed_ = false, media_shadowed_ = false;
+  bool shadowed_ = false, media_shadowed_ = false, translucent_shadowed_ = false;
   plumbing::RenderProgram program_;
   rhi::BufferId frame_;
   std::unique_ptr<plumbing::SceneGeometry> geometry_;

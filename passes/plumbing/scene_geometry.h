@@ -46,9 +46,10 @@ struct GpuObjectBlock {
 
 // Which of the scene's surfaces a pass draws: the opaque ones (alpha mode opaque or mask,
 // no transmission), the translucent ones (Translucency::translucent), or the opaque ones
-// whose object casts shadows (Object::cast_shadows; translucent surfaces cast none yet),
-// without or with an alpha mask (the shadow map's depth-only and alpha-tested draws).
-enum class Surfaces : uint8_t { opaque, translucent, solid_shadow_casters, masked_shadow_casters };
+// whose object casts shadows (Object::cast_shadows), without or with an alpha mask (the
+// shadow map's depth-only and alpha-tested draws), or the translucent ones whose object casts
+// shadows (translucent_shadow_map's coloured transmittance).
+enum class Surfaces : uint8_t { opaque, translucent, solid_shadow_casters, masked_shadow_casters, translucent_shadow_casters };
 
 struct GpuObject {
   rhi::BufferId vertices, indices, uniforms;
@@ -65,6 +66,7 @@ struct GpuObject {
       case Surfaces::translucent: return translucent;
       case Surfaces::solid_shadow_casters: return !translucent && casts_shadows && !masked;
       case Surfaces::masked_shadow_casters: return !translucent && casts_shadows && masked;
+      case Surfaces::translucent_shadow_casters: return translucent && casts_shadows;
     }
     return false;
   }

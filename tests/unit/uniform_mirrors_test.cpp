@@ -255,7 +255,9 @@ TEST(UniformMirrors, ShadowViewBlocksMatch) {
            {"shadow.vert", 0, 0}, {"scene_shadowed.frag", 2, 2}, {"scene_media_shadowed.frag", 2, 2},
            {"froxel_scatter_shadowed.comp", 1, 2}, {"froxel_scatter_media_shadowed.comp", 1, 2},
            {"raymarch_fog_shadowed.comp", 1, 2}, {"opacity_shadow_map.comp", 0, 1}, {"light_volume_unproject.frag", 0, 0},
-           {"light_volume_cells.frag", 0, 2}, {"light_volume_ends.frag", 0, 3}}) {
+           {"light_volume_cells.frag", 0, 2}, {"light_volume_ends.frag", 0, 3}, {"translucent_shadow.vert", 0, 0},
+           {"translucent_shadow.frag", 0, 0}, {"translucent_shadow_depth.frag", 0, 0}, {"scene_translucent_shadowed.frag", 2, 2},
+           {"scene_media_translucent_shadowed.frag", 2, 2}}) {
     EXPECT_EQ(wrapped_error<plumbing::ShadowViewBlock>(at.shader, at.set, at.binding, "ShadowViewBlock"), "") << at.shader;
   }
 }
