@@ -48,4 +48,14 @@ Vec3 sky_ambient_radiance(const Scene& scene) {
   return times(sun->light->irradiance, multiscattering(*scene.atmosphere, sun->r, sun->mu_s));
 }
 
+LightAtAltitude atmosphere_light_at_altitude(const Scene& scene, double altitude) {
+  const std::optional<SunAtOrigin> sun = sun_at_origin(scene);
+  if (!sun) return {};
+  const Atmosphere& a = *scene.atmosphere;
+  // Inside the air: the tables' radii run from the ground to the top of the atmosphere.
+  const double r = std::clamp(a.bottom_radius + std::max(altitude, 0.0), a.bottom_radius, a.top_radius);
+  const Vec3& e = sun->light->irradiance;
+  return {true, times(e, sun_transmittance(a, r, sun->mu_s)), times(e, multiscattering(a, r, sun->mu_s))};
+}
+
 }  // namespace volgraph::physics

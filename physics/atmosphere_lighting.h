@@ -27,4 +27,19 @@ std::vector<Light> lights_through_atmosphere(const Scene& scene);
 // an atmosphere or its sun.
 Vec3 sky_ambient_radiance(const Scene& scene);
 
+// The light at `altitude` metres above the ground (a cloud layer's: kilometres up, where
+// the scene-origin values above would not hold), the sun's zenith cosine taken at the
+// origin's zenith (+y): the sun's irradiance E × T_sun(r, mu_s) and the sky's isotropic
+// radiance E × Ψ_ms(r, mu_s). Without an atmosphere or its sun: has_sun false, both 0.
+struct LightAtAltitude {
+  bool has_sun = false;
+  Vec3 sun_irradiance{0, 0, 0};
+  Vec3 sky_radiance{0, 0, 0};
+};
+LightAtAltitude atmosphere_light_at_altitude(const Scene& scene, double altitude);
+
+// Where a cloud layer takes the atmosphere's light: its middle altitude (one value for the
+// whole layer, as the scene takes its origin's), for cloud_march and its reference alike.
+inline double cloud_light_altitude(const CloudLayer& layer) { return 0.5 * (layer.bottom_altitude + layer.top_altitude); }
+
 }  // namespace volgraph::physics

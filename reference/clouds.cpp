@@ -8,6 +8,7 @@
 #include <thread>
 #include <type_traits>
 
+#include "physics/atmosphere_lighting.h"
 #include "physics/cloud_density.h"
 #include "physics/cloud_lighting.h"
 #include "physics/cloud_noise.h"
@@ -181,6 +182,11 @@ CloudReference::CloudReference(const Scene& scene, const CloudReferenceSettings&
     to_sun_ = scaled(physics::normalize(light.direction), -1);
     sun_irradiance_ = light.irradiance;
   }
+  // With an atmosphere: its sun through the air above the layer, its sky added to the
+  // ambient, by cloud_march's functions (physics/atmosphere_lighting.h).
+  const physics::LightAtAltitude air = physics::atmosphere_light_at_altitude(scene, physics::cloud_light_altitude(layer_));
+  if (air.has_sun) sun_irradiance_ = air.sun_irradiance;
+  settings_.ambient = add(settings_.ambient, air.sky_radiance);
 }
 
 double CloudReference::altitude(const Vec3& p) const {

@@ -138,10 +138,23 @@ void integrate(inout vec3 radiance, inout float transmittance, vec3 s, float sig
   transmittance *= step_t;
 }
 
+// Interleaved gradient noise (Jimenez 2014), scrolled by 5.588238 pixels a frame: in [0, 1)
+// (raymarch_fog_body.glsl's): banding at cloud edges becomes noise a temporal pass averages.
+float interleaved_gradient_noise(vec2 pixel, float frame_index) {
+  const vec2 p = pixel + 5.588238 * mod(frame_index, 64.0);
+  return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
+}
+
+// Where inside each fine step this pixel samples, in [0, 1): its midpoint without jitter.
+float step_jitter(ivec2 texel) {
+  if (params.steps.w == 0) return 0.5;
+  return interleaved_gradient_noise(vec2(texel), params.wind.w);
+}
+
 // The march over [t_in, t_out]: coarse steps (2 × dt) on the base density until it is
 // non-zero, then one coarse step back and fine steps; back to coarse after
 // EMPTY_FINE_STEPS empty fine samples. Stops when the transmittance is negligible.
-void march(vec3 o, vec3 d, float t_in, float t_out, inout vec3 radiance, inout float transmittance) {
+void march(vec3 o, vec3 d, float t_in, float t_out, float jitter, inout vec3 radiance, inout float transmittance) {
   const int steps = max(params.steps.x, 1);
   const float dt = (t_out - t_in) / float(steps);
   const float cos_theta = dot(params.sun.xyz, d);  // the light's travel −sun against the scattered −d
@@ -160,7 +173,7 @@ void march(vec3 o, vec3 d, float t_in, float t_out, inout vec3 radiance, inout f
       continue;
     }
     const float h = min(dt, t_out - t);
-    const vec3 p = o + (t + 0.5 * h) * d;
+    const vec3 p = o + (t + jitter * h) * d;
     const float rho = density(p);
     if (rho > 0.0) {
       empty = 0;
@@ -193,7 +206,7 @@ void main() {
     const float depth = covered_depth(scene_depth, nearest, texel, size);
     const float surface = depth < 1.0 ? linear_view_depth(depth, params.view_position.w, params.view_forward.w) * ray_length : 3.0e38;
     t_out = min(t_out, min(surface, params.cloud.w));
-    if (t_out > t_in) march(o, d, t_in, t_out, radiance, transmittance);
+    if (t_out > t_in) march(o, d, t_in, t_out, step_jitter(texel), radiance, transmittance);
   }
   const float tr = finite_transmittance(transmittance);
   imageStore(clouds, texel, vec4(finite_radiance(radiance), tr));

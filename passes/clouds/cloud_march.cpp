@@ -10,6 +10,7 @@
 // transmittance in rgb), the pair fog_apply composites (fog_scattering ← clouds,
 // fog_transmittance ← transmittance). Shader: shaders/cloud_march.comp.
 #include <array>
+#include <optional>
 #include <cmath>
 #include <cstddef>
 #include <sstream>
@@ -22,6 +23,7 @@
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
 #include "passes/register_pass.h"
+#include "physics/atmosphere_lighting.h"
 #include "shaders/bindings/cloud_march.comp.h"
 
 namespace volgraph {
@@ -54,7 +56,7 @@ struct CloudMarchTable : PassTable {
   VariantHandle march = variant("march", "the sun's visibility by a secondary march of light_steps toward it");
   // Parameters.
   ParamHandle<int64_t> steps = integer("steps", 64, 1, 1024, "", "equal steps over the ray's segment inside the layer");
-  ParamHandle<int64_t> light_steps = integer("light_steps", 6, 1, 64, "", "samples of the density toward the sun per step");
+  ParamHandle<int64_t> light_steps = integer("light_steps", 16, 1, 64, "", "samples of the density toward the sun per step");
   ParamHandle<double> light_distance = number("light_distance", 2000, 1, 1e5, "m", "how far toward the sun the light march reaches");
   ParamHandle<int64_t> octaves = integer("octaves", 3, 1, 8, "", "Wrenninge's multiple-scattering octaves (1: single scattering)");
   ParamHandle<double> a = number("a", 0.5, 0, 1, "", "each octave's optical-depth scale (a ≤ b)");
@@ -66,7 +68,10 @@ struct CloudMarchTable : PassTable {
   ParamHandle<bool> powder = flag("powder", false, "Schneider & Vos's powder term (not physical: darkens sunlit edges, adds energy inside)");
   ParamHandle<double> max_distance = number("max_distance", 60000, 1, 1e7, "m", "how far along the view ray the march reaches");
   ParamHandle<double> curl_strength = number("curl_strength", 0.1, 0, 1, "detail tiles", "how far the curl noise shifts the detail");
-  ParamHandle<std::array<double, 3>> ambient = vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the cloud scatters");
+  ParamHandle<std::array<double, 3>> ambient =
+      vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the cloud scatters (with an atmosphere: the sky's, added)");
+  ParamHandle<bool> jitter = flag("jitter", true,
+                                  "sample each fine step at a per-pixel, per-frame point (interleaved gradient noise); off: its midpoint");
   // Slots.
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
   SlotHandle shape = input("shape", ResourceKind::texture3d, Usage::sampled, "cloud_noise.shape");
@@ -102,7 +107,7 @@ class CloudMarchExecution final : public PassExecution {
 
   void record(PassContext& c) override {
     namespace shader = cloud_march_shader;
-    const gpu::CloudMarchParams params = march_params(c);
+    const gpu::CloudMarchParams params = march_params(c, layer_light(*c.scene));
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const rhi::BindGroupId group = c.bind_group(
         program_, {bind(shader::params, params_), bind(shader::scene_depth, c.view(t_.depth)),
@@ -114,7 +119,18 @@ class CloudMarchExecution final : public PassExecution {
   }
 
  private:
-  gpu::CloudMarchParams march_params(const PassContext& c) const {
+  // The atmosphere's light at the layer's middle altitude (physics/atmosphere_lighting.h),
+  // kept until the atmosphere, its sun or the layer changes: Ψ_ms costs the CPU ~10 ms.
+  const physics::LightAtAltitude& layer_light(const Scene& scene) {
+    const uint64_t hash = scene.hash(part_bit(ScenePart::atmosphere) | part_bit(ScenePart::lights) | part_bit(ScenePart::clouds));
+    if (light_hash_ != hash) {
+      light_ = physics::atmosphere_light_at_altitude(scene, physics::cloud_light_altitude(*scene.clouds));
+      light_hash_ = hash;
+    }
+    return light_;
+  }
+
+  gpu::CloudMarchParams march_params(const PassContext& c, const physics::LightAtAltitude& air) const {
     const Scene& scene = *c.scene;
     const CloudLayer& layer = *scene.clouds;
     gpu::CloudMarchParams p{};
@@ -129,11 +145,12 @@ class CloudMarchExecution final : public PassExecution {
                                  light.direction[2] * light.direction[2]);
       p.sun[0] = float(-light.direction[0] / n), p.sun[1] = float(-light.direction[1] / n), p.sun[2] = float(-light.direction[2] / n);
       p.sun[3] = 1;
-      p.sun_irradiance[0] = float(light.irradiance[0]), p.sun_irradiance[1] = float(light.irradiance[1]);
-      p.sun_irradiance[2] = float(light.irradiance[2]);
+      // With an atmosphere its sun arrives through the air above the layer, else as given.
+      const Vec3& e = air.has_sun ? air.sun_irradiance : light.irradiance;
+      for (int i = 0; i < 3; ++i) p.sun_irradiance[i] = float(e[size_t(i)]);
     }
     const std::array<double, 3> ambient = c.param(t_.ambient);
-    for (int i = 0; i < 3; ++i) p.ambient[i] = float(ambient[size_t(i)]);
+    for (int i = 0; i < 3; ++i) p.ambient[i] = float(ambient[size_t(i)] + air.sky_radiance[size_t(i)]);  // the sky's, added
     const double radius = scene.atmosphere ? scene.atmosphere->bottom_radius : kEarthRadius;
     const double origin_altitude = scene.atmosphere ? scene.atmosphere->origin_altitude : 0;
     p.layer[0] = float(layer.bottom_altitude), p.layer[1] = float(layer.top_altitude);
@@ -144,7 +161,9 @@ class CloudMarchExecution final : public PassExecution {
     p.scales[2] = float(c.param(t_.curl_strength)), p.scales[3] = float(c.param(t_.light_distance));
     const double seconds = double(c.frame) / kFramesPerSecond;
     p.wind[0] = float(layer.wind[0] * seconds), p.wind[1] = float(layer.wind[1] * seconds), p.wind[2] = float(layer.wind[2] * seconds);
+    p.wind[3] = float(c.frame % 64);  // the jitter's frame: interleaved gradient noise scrolls over 64 frames
     p.steps[0] = int32_t(c.param(t_.steps)), p.steps[1] = int32_t(c.param(t_.light_steps)), p.steps[2] = int32_t(c.param(t_.octaves));
+    p.steps[3] = c.param(t_.jitter) ? 1 : 0;
     p.octave[0] = float(c.param(t_.a)), p.octave[1] = float(c.param(t_.b)), p.octave[2] = float(c.param(t_.c));
     p.octave[3] = c.param(t_.powder) ? 1.0f : 0.0f;
     p.lobes[0] = float(c.param(t_.g_forward)), p.lobes[1] = float(c.param(t_.g_back)), p.lobes[2] = float(c.param(t_.back_weight));
@@ -152,6 +171,8 @@ class CloudMarchExecution final : public PassExecution {
   }
 
   const CloudMarchTable& t_;
+  std::optional<uint64_t> light_hash_;
+  physics::LightAtAltitude light_;
   plumbing::ComputeProgram program_;
   rhi::BufferId params_;
 };

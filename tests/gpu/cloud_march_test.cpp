@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "graph/config/config.h"
@@ -27,6 +28,7 @@ struct Case {
   std::string irradiance = "[3, 3, 3]";
   std::string clouds = R"("coverage": 0.6)";
   std::string params = "{}";
+  std::string atmosphere;  // a scene.atmosphere object, or none
 };
 
 // A 24 × 24 frame: the scene pass (one box behind the camera, for its depth), small noise
@@ -37,7 +39,7 @@ std::string config_text(const Case& k) {
     "materials": { "grey": { "albedo": [0.5, 0.5, 0.5] } },
     "objects": [ { "name": "box", "shape": "box", "material": "grey", "size": [1, 1, 1], "transform": { "translate": [0, 0, 6000] } } ],
     "lights": [ { "name": "sun", "type": "directional", "direction": )" + k.sun + R"(, "irradiance": )" + k.irradiance + R"( } ],
-    "clouds": { )" + k.clouds + R"( } },
+    "clouds": { )" + k.clouds + R"( })" + (k.atmosphere.empty() ? "" : R"(, "atmosphere": )" + k.atmosphere) + R"( },
   "graph": { "passes": [
       { "name": "lit", "type": "scene" },
       { "name": "noise", "type": "cloud_noise", "params": { "shape_size": 32, "detail_size": 16, "curl_size": 32 } },
@@ -82,6 +84,47 @@ TEST_P(CloudMarch, TheCaseSeesCloud) {  // so the identities below could fail
   const Texels t = run({});
   EXPECT_LT(mean_channel(t, 3), 0.9);
   EXPECT_GT(mean_channel(t, 0), 0.0);
+}
+
+// With an atmosphere the sun reaches the layer through the air (its transmittance) and the
+// sky lights it (its multiple-scattering radiance): a low sun is reddened by the long path,
+// so the cloud's red over blue rises from the sun high to the sun 3° up (measured 0.706 →
+// 0.763 on lavapipe; the sky's blue ambient holds it down) where a white sun
+// without the air gives 1 for both). Finite everywhere.
+TEST_P(CloudMarch, CloudLitThroughTheAtmosphereIsRedderWithTheSunLow) {
+  const auto red_over_blue = [&](const char* sun) {
+    Case k;
+    k.sun = sun;
+    k.atmosphere = R"({ "preset": "earth", "sun": { "light": "sun" } })";
+    const Texels t = run(k);
+    for (float v : t.rgba) EXPECT_TRUE(std::isfinite(v)) << sun;
+    EXPECT_GT(mean_channel(t, 2), 0.0) << sun;
+    return mean_channel(t, 0) / mean_channel(t, 2);
+  };
+  const double high = red_over_blue("[0.3, -0.8, -0.5]"), low = red_over_blue("[0.3, -0.052, -0.95]");
+  EXPECT_GT(low, 1.04 * high) << "red/blue: sun high " << high << ", sun 3° up " << low;
+}
+
+// The jitter moves each fine sample within its step per pixel and frame: with no wind, the
+// second frame differs from the first where there is cloud; without jitter the two are the
+// same image (the midpoints).
+TEST_P(CloudMarch, JitterMovesTheSamplesFromFrameToFrameAndOffKeepsTheMidpoints) {
+  const auto two_frames = [&](const char* params) {
+    Case k;
+    k.clouds = R"("coverage": 0.6, "wind": [0, 0, 0])";
+    k.params = params;
+    const LoadedConfig config = load_config_text("cloud_march.json", config_text(k), registry_);
+    Executor executor(device(), config.graph, &config.config.scene, {});
+    executor.run_frame();
+    const Texels first = executor.read_output(0);
+    executor.run_frame();
+    return std::make_pair(first, executor.read_output(0));
+  };
+  const auto [on0, on1] = two_frames(R"({ "jitter": true })");
+  const auto [off0, off1] = two_frames(R"({ "jitter": false })");
+  EXPECT_NE(on0.rgba, on1.rgba) << "jitter on: frames 0 and 1 alike";
+  EXPECT_EQ(off0.rgba, off1.rgba) << "jitter off: frames 0 and 1 differ";
+  EXPECT_NE(on0.rgba, off0.rgba) << "jitter on and off alike at frame 0";
 }
 
 TEST_P(CloudMarch, CoverageZeroIsTheIdentity) {
