@@ -18,6 +18,7 @@
 
 #include "graph/scene/scene.h"
 #include "physics/vec3.h"
+#include "shaders/include/gpu_struct.h"
 
 namespace volgraph::physics {
 
@@ -36,6 +37,14 @@ inline glm::dvec3 unit(const glm::dvec3& v) { return v / glm::length(v); }
 inline void to_floats(const Mat4& m, float* out) {
   const double* column_major = glm::value_ptr(m);
   for (size_t i = 0; i < 16; ++i) out[i] = float(column_major[i]);
+}
+
+// The same into a mat4 of a struct written once for GLSL and C++ (shaders/include/gpu_struct.h).
+inline void to_floats(const Mat4& m, gpu::mat4& out) {
+  const double* column_major = glm::value_ptr(m);
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) out.columns[c][r] = float(column_major[c * 4 + r]);
+  }
 }
 
 // (x, y, z, 1) → the transformed point divided by w.

@@ -133,7 +133,7 @@ SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, const Rend
     : textured_(declares_textures(program.layout_descs.at(1))),
       textures_(std::make_unique<TextureCache>(device)),
       layout_(program.layouts.at(1)) {
-  check_uniform_mirror<GpuObjectBlock>(program, scene_geometry_object_set::object, "GpuObjectBlock");
+  check_wrapped_uniform_mirror<GpuObjectBlock>(program, scene_geometry_object_set::object, "gpu::ObjectUniforms");
   for (const Object& object : scene.objects) {
     const Mat4 model = model_matrix(object.transform);
     if (object.shape == Shape::gltf) {

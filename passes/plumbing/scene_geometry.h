@@ -17,6 +17,7 @@
 #include "physics/camera.h"
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/textures.h"
+#include "shaders/include/object_uniforms.h"
 
 namespace volgraph::plumbing {
 
@@ -28,21 +29,8 @@ namespace volgraph::plumbing {
 // the frame; the scene pass refuses more at validate time.
 constexpr size_t kMaxSceneDraws = 4096;
 
-// std140 mirror of the Object block (shaders/include/object_uniforms.glsl).
-struct GpuObjectBlock {
-  float model[16];
-  float normal_matrix[16];
-  float albedo[4];
-  float emissive[4];
-  float translucency[4];  // coverage α, transmission, IOR, shell or solid thickness (m, world)
-  float attenuation[4];   // σt per channel (1/m, world), volume kind (kVolume* codes)
-  float alpha_test[4];    // alpha mode (kAlpha* codes), cutoff
-  static constexpr std::array<uint64_t, 7> offsets() {
-    return {offsetof(GpuObjectBlock, model),        offsetof(GpuObjectBlock, normal_matrix), offsetof(GpuObjectBlock, albedo),
-            offsetof(GpuObjectBlock, emissive),     offsetof(GpuObjectBlock, translucency),  offsetof(GpuObjectBlock, attenuation),
-            offsetof(GpuObjectBlock, alpha_test)};
-  }
-};
+// The Object block (set 1): written once for GLSL and C++ (shaders/include/object_uniforms.h).
+using GpuObjectBlock = gpu::ObjectUniforms;
 
 // Which of the scene's surfaces a pass draws: the opaque ones (alpha mode opaque or mask,
 // no transmission), the translucent ones (Translucency::translucent), or the opaque ones

@@ -1,23 +1,15 @@
-// The shadow_map pass's light_view buffer: the std140 mirror of ShadowView
-// (shaders/include/shadow_view.glsl), the one member of the shaders' ShadowBlock.
+// The shadow_map pass's light_view buffer: gpu::ShadowView, written once for GLSL and C++
+// (shaders/include/shadow_view.h), the one member of its readers' shadow block.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include "shaders/include/shadow_view.h"
 
 namespace volgraph::plumbing {
 
-struct ShadowViewBlock {
-  float light_view_projection[16];  // world → the shadow map's clip space
-  float clip_to_world[16];          // its inverse: NDC (x, y, depth in [0, 1], 1) → world
-  float params[4];                  // x depth bias, y PCF radius (texels), w shadowed light index
-  int32_t mode[4];                  // x: 1 PCF, 0 one tap
-  static constexpr std::array<uint64_t, 4> offsets() {
-    return {offsetof(ShadowViewBlock, light_view_projection), offsetof(ShadowViewBlock, clip_to_world),
-            offsetof(ShadowViewBlock, params), offsetof(ShadowViewBlock, mode)};
-  }
-};
+using ShadowViewBlock = gpu::ShadowView;  // written once for GLSL and C++: shaders/include/shadow_view.h
 static_assert(sizeof(ShadowViewBlock) == 160);
 
 }  // namespace volgraph::plumbing

@@ -216,7 +216,9 @@ class LightVolume : public OnEachBackend<> {
   // The CPU evaluation of every pixel (red channel; the fog is grey), row-major.
   std::vector<double> exact(const Frame& f) const {
     ShadowMap map;
-    map.view_projection = physics::Mat4(glm::make_mat4(f.view.light_view_projection));
+    float light_view_projection[16];
+    std::memcpy(light_view_projection, &f.view.light_view_projection, sizeof(light_view_projection));
+    map.view_projection = physics::Mat4(glm::make_mat4(light_view_projection));
     map.bias = f.view.params[0];
     map.depth = &f.shadow_depth;
     const Light& l = scene_.lights[0];
