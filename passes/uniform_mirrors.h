@@ -1,12 +1,9 @@
-// The std140 mirrors of the passes' own uniform blocks (a pass's Params or frame block,
-// filled by that pass alone), here rather than in the pass files so that
-// tests/unit/uniform_mirrors_test.cpp can check each against the shaders that declare it.
-// Each lists its members' offsets in offsets() (passes/plumbing/programs.h), which the
-// pass's check at setup uses. The blocks several passes share are next to their packing:
-// gpu::FogFrame (fog/fog_frame.h), gpu::LightList (plumbing/light_list.h),
-// plumbing::ShadowViewBlock (plumbing/shadow_view.h) and plumbing::GpuObjectBlock
-// (plumbing/scene_geometry.h). The structs written once for GLSL and C++ are in
-// shaders/include/ (GPU_STRUCT, gpu_struct.h).
+// The std140 mirrors left of the passes' own uniform blocks: the scene pass's frame (and
+// the aerial-lookup and light-volume sizes derived from shared structs). Each lists its
+// members' offsets in offsets() (passes/plumbing/programs.h), which the pass's check at setup
+// uses, and tests/unit/uniform_mirrors_test.cpp checks it against every shader that declares
+// it. Every other block holds a struct written once for GLSL and C++ under shaders/include/
+// (GPU_STRUCT, gpu_struct.h), its layout asserted at compile time.
 #pragma once
 
 #include <array>
