@@ -11,13 +11,7 @@
 #ifndef VOLGRAPH_CLOUD_DENSITY_H
 #define VOLGRAPH_CLOUD_DENSITY_H
 
-#ifndef CLOUD_FN
-#ifdef __cplusplus
-#define CLOUD_FN inline
-#else
-#define CLOUD_FN
-#endif
-#endif
+#include "cloud_fn.h"
 
 // Schneider & Vos 2015's remap: v's place in [lo, hi] carried to [new_lo, new_hi], not
 // clamped (hi ≠ lo).

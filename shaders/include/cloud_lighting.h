@@ -11,13 +11,7 @@
 #ifndef VOLGRAPH_CLOUD_LIGHTING_H
 #define VOLGRAPH_CLOUD_LIGHTING_H
 
-#ifndef CLOUD_FN
-#ifdef __cplusplus
-#define CLOUD_FN inline
-#else
-#define CLOUD_FN
-#endif
-#endif
+#include "cloud_fn.h"
 
 #ifndef __cplusplus
 #include "phase.glsl"

@@ -11,11 +11,7 @@
 #ifndef VOLGRAPH_CLOUD_NOISE_H
 #define VOLGRAPH_CLOUD_NOISE_H
 
-#ifdef __cplusplus
-#define CLOUD_FN inline
-#else
-#define CLOUD_FN
-#endif
+#include "cloud_fn.h"
 
 // Periods of the shape texture's channels (cells across the tile): Perlin-Worley at 4,
 // then Worley sums at 4, 8 and 16; the detail texture's Worley sums at 2, 4 and 8; the
