@@ -408,7 +408,6 @@ int run_view(const Args& args, const PassRegistry& registry) {
     std::cerr << "volgraph: " << message << "\n";
     return kBadInput;
   };
-  if (args.backend == "webgpu") return setup_missing("view: the WebGPU backend's window surface is not written yet; use --backend vulkan");
   if (!args.screenshot.empty()) {
     if (image_format_for(args.screenshot) != ImageFormat::png) {
       throw UsageError("--screenshot " + args.screenshot + ": expected a .png file name");
@@ -426,6 +425,7 @@ int run_view(const Args& args, const PassRegistry& registry) {
   options.frames = args.view_frames;
   options.screenshot = args.screenshot;
   options.validation = args.validation;
+  options.backend = args.backend;
   options.overlay = !args.no_overlay;
   options.device = args.device;
   options.compile = args.compile;

@@ -12,19 +12,16 @@
 #include <thread>
 #include <vector>
 
-#define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include "graph/execute/executor.h"
 #include "graph/plan_report.h"
-#include "graph/rhi/vulkan/context.h"
-#include "graph/rhi/vulkan/vulkan_device.h"
 #include "physics/srgb.h"
 #include "tools/image_io.h"
 #include "tools/output_files.h"
 #include "viewer/overlay.h"
-#include "viewer/presenter.h"
+#include "viewer/window_backend.h"
 #include <iomanip>
 #include <optional>
 #include <sstream>
@@ -71,7 +68,7 @@ struct WindowDeleter {
 using Window = std::unique_ptr<GLFWwindow, WindowDeleter>;
 
 Window open_window(Extent size, const std::string& title, WindowEvents& events) {
-  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);  // Vulkan draws, not OpenGL
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);  // Vulkan or WebGPU presents, not OpenGL
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
   Window window(glfwCreateWindow(int(size.width), int(size.height), title.c_str(), nullptr, nullptr));
   if (!window) throw NoDisplay("view: the display refused a " + std::to_string(size.width) + "x" + std::to_string(size.height) + " window");
@@ -97,10 +94,10 @@ Window open_window(Extent size, const std::string& title, WindowEvents& events) 
   return window;
 }
 
-VkExtent2D framebuffer_extent(GLFWwindow* window) {
+Extent framebuffer_extent(GLFWwindow* window) {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window, &w, &h);
-  return {uint32_t(std::max(w, 0)), uint32_t(std::max(h, 0))};
+  return {uint32_t(std::max(w, 0)), uint32_t(std::max(h, 0)), 1};
 }
 
 // The frame's output as `render` writes it to a PNG (tools/image_io.cpp encode_png):
@@ -114,25 +111,7 @@ std::vector<uint8_t> srgb8(const Texels& t) {
   return out;
 }
 
-std::unique_ptr<vulkan::Context> create_context(const ViewOptions& options) {
-  uint32_t count = 0;
-  const char** names = glfwGetRequiredInstanceExtensions(&count);
-  if (!names) throw DeviceError(DeviceError::Kind::unsupported, "GLFW found no Vulkan window-surface support (glfwGetRequiredInstanceExtensions)");
-  vulkan::ContextOptions context;
-  context.validation = options.validation;
-  context.device_index = options.device;
-  context.instance_extensions.assign(names, names + count);
-  context.device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
-  return vulkan::Context::create(context);
-}
-
-VkSurfaceKHR create_surface(vulkan::Context& context, GLFWwindow* window) {
-  VkSurfaceKHR surface = VK_NULL_HANDLE;
-  vulkan::check(glfwCreateWindowSurface(context.instance(), window, nullptr, &surface), "glfwCreateWindowSurface");
-  return surface;
-}
-
-void write_screenshot(const std::string& path, VkExtent2D extent, const std::vector<uint8_t>& rgba8) {
+void write_screenshot(const std::string& path, Extent extent, const std::vector<uint8_t>& rgba8) {
   OutputFiles files;
   files.stage(path, "--screenshot", encode_png_rgba8(extent.width, extent.height, rgba8));
   files.commit();
@@ -174,13 +153,13 @@ int sun_index(const Scene& scene) {
 // (glfwWaitEventsTimeout) once a static scene has settled.
 class Loop {
  public:
-  Loop(vulkan::Context& context, GLFWwindow* window, LoadedConfig loaded, const ViewOptions& options, WindowEvents& events)
-      : context_(context), window_(window),
+  Loop(WindowBackend& backend, GLFWwindow* window, LoadedConfig loaded, const ViewOptions& options, WindowEvents& events)
+      : backend_(backend), window_(window),
         source_(options.config, *options.registry, options.overrides, options.compile, std::move(loaded)),
-        options_(options), events_(events), device_(context),
-        presenter_(context, create_surface(context, window), framebuffer_extent(window)) {
-    if (options.overlay) overlay_ = std::make_unique<Overlay>(context, window, presenter_);
-    overlay_shown_ = options.overlay;
+        options_(options), events_(events) {
+    if (options.overlay) overlay_ = backend.make_overlay(window);
+    if (options.overlay && !overlay_) std::cerr << "view: no overlay: " << backend.overlay_missing() << "\n";
+    overlay_shown_ = overlay_ != nullptr;
     restart();
   }
 
@@ -230,7 +209,7 @@ class Loop {
       last = now;
       handle_keys();
       poll_files();
-      if (events.resized || presenter_.stale()) {
+      if (events.resized || backend_.stale()) {
         events.resized = false;
         if (!resize_to_window()) continue;
       }
@@ -291,7 +270,7 @@ class Loop {
       glfwPollEvents();
       handle_keys();
       poll_files();
-      if ((events_.resized || presenter_.stale()) && !resize_to_window()) continue;
+      if ((events_.resized || backend_.stale()) && !resize_to_window()) continue;
       events_.resized = false;
       if (frame(true)) {
         ++done;
@@ -377,7 +356,7 @@ class Loop {
   // and parameters (edits go through set_variant / set_param, checked as before), the
   // A/B pair and the sun.
   void draw_panel() {
-    const VkExtent2D e = presenter_.extent();
+    const Extent e = backend_.extent();
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(std::min(380.0f, 0.5f * float(e.width)), float(e.height)), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.85f);
@@ -550,26 +529,25 @@ class Loop {
   // The executor for the swapchain's size: the graph resized when it differs.
   void restart() {
     executor_.reset();
-    const VkExtent2D e = presenter_.extent();
-    const Extent size{e.width, e.height, 1};
+    const Extent size = backend_.extent();
     LoadedConfig& loaded = source_.current();
     if (size.width != loaded.config.output_size.width || size.height != loaded.config.output_size.height) {
       loaded.config.output_size = size;
       resize(loaded.graph, size);
     }
-    executor_ = std::make_unique<Executor>(device_, loaded.graph, &loaded.config.scene, options_.compile);
+    executor_ = std::make_unique<Executor>(backend_.device(), loaded.graph, &loaded.config.scene, options_.compile);
     executor_->set_gpu_timing(overlay_shown_);  // time stamps only while the overlay shows the pass times
     settled_ = 0;
   }
 
   // False while the window is minimised (nothing to present to).
   bool resize_to_window() {
-    const VkExtent2D window = framebuffer_extent(window_);
+    const Extent window = framebuffer_extent(window_);
     if (window.width == 0 || window.height == 0) {
       glfwWaitEvents();
       return false;
     }
-    presenter_.recreate(window);
+    backend_.recreate(window);
     restart();
     return true;
   }
@@ -577,29 +555,27 @@ class Loop {
   bool frame(bool screenshot) {
     executor_->run_frame();
     const std::vector<uint8_t> texels = srgb8(executor_->read_output(0));
-    std::vector<uint8_t>* read_back = screenshot && presenter_.readable() ? &shot_ : nullptr;
-    std::function<void(VkCommandBuffer)> draw;
+    std::vector<uint8_t>* read_back = screenshot && backend_.readable() ? &shot_ : nullptr;
+    const Overlay* drawn = nullptr;
     if (overlay_ && overlay_shown_) {
       overlay_->begin_frame();
       draw_panel();
       overlay_->end_frame();
-      draw = [this](VkCommandBuffer cmd) { overlay_->draw(cmd); };
+      drawn = overlay_.get();
     }
-    if (!presenter_.present(texels, read_back, draw)) return false;
-    if (screenshot) shot_extent_ = presenter_.extent();
+    if (!backend_.present(texels, read_back, drawn)) return false;
+    if (screenshot) shot_extent_ = backend_.extent();
     if (screenshot && !read_back) shot_ = texels;  // swapchain images not copyable from: the bytes presented
     ++rendered_;
     ++settled_;
     return true;
   }
 
-  vulkan::Context& context_;
+  WindowBackend& backend_;
   GLFWwindow* window_;
   GraphSource source_;
   const ViewOptions& options_;
   WindowEvents& events_;
-  vulkan::VulkanDevice device_;
-  Presenter presenter_;
   std::unique_ptr<Overlay> overlay_;  // null with --no-overlay
   bool overlay_shown_ = false;        // F1
   std::function<void()> pending_;     // an overlay edit, applied between frames
@@ -612,7 +588,7 @@ class Loop {
   int rendered_ = 0;
   int settled_ = 0;
   std::vector<uint8_t> shot_;  // the last presented image, for --screenshot
-  VkExtent2D shot_extent_{};
+  Extent shot_extent_{};
   int disk_changes_ = 0;    // changes the hot reload saw
   int waited_changes_ = 0;  // of which the script's wait-change consumed
   struct AbPair {
@@ -631,14 +607,15 @@ int run(LoadedConfig loaded, const ViewOptions& options) {
   GlfwSession glfw;
   WindowEvents events;
   Window window = open_window(loaded.config.output_size, options.title, events);
-  std::unique_ptr<vulkan::Context> context = create_context(options);
+  const bool webgpu = options.backend == "webgpu";
+  std::unique_ptr<WindowBackend> backend = webgpu ? make_webgpu_window(window.get(), options) : make_vulkan_window(window.get(), options);
   bool script_done = true;
   {
-    Loop loop(*context, window.get(), std::move(loaded), options, events);
+    Loop loop(*backend, window.get(), std::move(loaded), options, events);
     script_done = loop.run();
   }
-  const std::vector<std::string> messages = context->take_validation_messages();
-  for (const std::string& m : messages) std::cerr << "validation: " << m << "\n";
+  const std::vector<std::string> messages = backend->take_messages();
+  for (const std::string& m : messages) std::cerr << (webgpu ? "dawn: " : "validation: ") << m << "\n";
   return messages.empty() && script_done ? 0 : 1;
 }
 

@@ -1,4 +1,4 @@
-// volgraph view: a config's graph in a resizable GLFW window on Vulkan (docs/viewer.md).
+// volgraph view: a config's graph in a resizable GLFW window on Vulkan or WebGPU (docs/viewer.md).
 #pragma once
 
 #include <stdexcept>
@@ -13,7 +13,8 @@ struct ViewOptions {
   int frames = 0;            // --frames N: render N frames, then exit; 0: until ESC or the window closes
   std::string screenshot;    // --screenshot FILE.png: the last presented image ("" for none)
   bool overlay = true;       // the Dear ImGui overlay (F1 toggles; --no-overlay: off and never drawn)
-  bool validation = false;   // the Khronos validation layer, as `render --validation`
+  bool validation = false;   // the Khronos validation layer, as `render --validation` (Vulkan)
+  std::string backend = "vulkan";  // --backend: vulkan or webgpu (Dawn on the window's X11 surface)
   int device = -1;           // --device N (vulkan::ContextOptions::device_index)
   CompileOptions compile;
   std::string title;         // the window's title
@@ -31,7 +32,7 @@ struct NoDisplay : std::runtime_error {
 
 // Opens the window and runs frames of `loaded` (compiled already, so that its errors came
 // first) until ESC, the window's close, options.frames or the script's end. Returns the
-// exit code: 0, or 1 when validation reported messages (printed on stderr) or a script's
+// exit code: 0, or 1 when validation or Dawn reported messages (printed on stderr) or a script's
 // wait-change timed out. Throws NoDisplay, DeviceError, IoError (the screenshot).
 int run(LoadedConfig loaded, const ViewOptions& options);
 

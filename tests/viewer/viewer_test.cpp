@@ -121,15 +121,31 @@ CommandRun view_with_edit(const std::string& args, const std::filesystem::path& 
   return run;
 }
 
-TEST(Viewer, ScreenshotMatchesTheHeadlessRender) {
+// The viewer's cases run on each backend: Vulkan under the validation layer, WebGPU
+// (Dawn on the window's X11 surface) with Dawn's errors printed as "dawn: " lines.
+class ViewerOn : public ::testing::TestWithParam<std::string> {
+ protected:
+  // The backend's options for `render` and `view` alike.
+  std::string backend() const { return GetParam() == "webgpu" ? " --backend webgpu" : " --validation"; }
+  // Neither a validation message nor a Dawn error was printed.
+  static void expect_clean(const CommandRun& view) {
+    EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+    EXPECT_EQ(view.errors.find("dawn:"), std::string::npos) << view.errors;
+  }
+};
+
+INSTANTIATE_TEST_SUITE_P(Backends, ViewerOn, ::testing::Values("vulkan", "webgpu"),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+TEST_P(ViewerOn, ScreenshotMatchesTheHeadlessRender) {
   const std::filesystem::path rendered = scratch() / "render.png", shown = scratch() / "view.png";
   std::filesystem::remove(shown);
-  const std::string common = config("demo_fog.json") + " --size 160x90 --frames 3 --validation";
+  const std::string common = config("demo_fog.json") + " --size 160x90 --frames 3" + backend();
   const CommandRun render = volgraph("render " + common + " -o " + rendered.string());
   ASSERT_EQ(render.exit_code, 0) << render.errors;
   const CommandRun view = volgraph("view " + common + " --no-overlay --screenshot " + shown.string());
   ASSERT_EQ(view.exit_code, 0) << view.errors;
-  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  expect_clean(view);
   int w = 0, h = 0, rw = 0, rh = 0;
   const std::vector<float> a = png_texels(shown, w, h), b = png_texels(rendered, rw, rh);
   ASSERT_FALSE(a.empty()) << "no screenshot at " << shown;
@@ -177,18 +193,18 @@ TEST(Viewer, ScreenshotOtherThanPngExitsTwo) {
 
 // A variant changed between frames (the control API through --script) gives what
 // `render --variant` gives; a refused parameter keeps that graph, with the loader's message.
-TEST(Viewer, ScriptVariantMatchesRenderVariant) {
-  const std::filesystem::path dir = scratch() / "variant", script = dir / "script.txt";
+TEST_P(ViewerOn, ScriptVariantMatchesRenderVariant) {
+  const std::filesystem::path dir = scratch() / ("variant_" + GetParam()), script = dir / "script.txt";
   std::filesystem::create_directories(dir);
   const std::filesystem::path before = dir / "before.png", shown = dir / "view.png", rendered = dir / "render.png",
                               plain = dir / "plain.png";
   std::filesystem::remove(shown);
   std::ofstream(script) << "frames 3\nscreenshot " << before.string() << "\nvariant final reinhard\n"
                         << "param final exposure 99\nframes 3\nscreenshot " << shown.string() << "\n";
-  const std::string common = config("demo_fog.json") + " --size 160x90 --validation";
+  const std::string common = config("demo_fog.json") + " --size 160x90" + backend();
   const CommandRun view = volgraph("view " + common + " --no-overlay --script " + script.string());
   ASSERT_EQ(view.exit_code, 0) << view.errors;
-  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  expect_clean(view);
   EXPECT_EQ(count_of(view.errors, "parameter \"exposure\" expects a number in [-20, 20], got 99"), 1u) << view.errors;
   ASSERT_EQ(volgraph("render " + common + " --frames 3 --variant final=reinhard -o " + rendered.string()).exit_code, 0);
   ASSERT_EQ(volgraph("render " + common + " --frames 3 -o " + plain.string()).exit_code, 0);
@@ -199,19 +215,19 @@ TEST(Viewer, ScriptVariantMatchesRenderVariant) {
 
 // Hot reload: an include edited while the viewer runs is reloaded; the image is the
 // edited config's.
-TEST(Viewer, EditedIncludeIsReloaded) {
-  const std::filesystem::path dir = copy_analytic_fog("reload"), script = dir / "script.txt";
+TEST_P(ViewerOn, EditedIncludeIsReloaded) {
+  const std::filesystem::path dir = copy_analytic_fog("reload_" + GetParam()), script = dir / "script.txt";
   const std::filesystem::path before = dir / "before.png", after = dir / "after.png", rendered = dir / "render.png";
   std::ofstream(script) << "frames 2\nscreenshot " << before.string() << "\nwait-change\nframes 2\nscreenshot " << after.string() << "\n";
   const std::filesystem::path include = dir / "graphs" / "analytic_fog.json";
-  const std::string args = (dir / "demo_analytic_fog.json").string() + " --size 160x90 --validation";
+  const std::string args = (dir / "demo_analytic_fog.json").string() + " --size 160x90" + backend();
   const CommandRun view = view_with_edit("view " + args + " --no-overlay --script " + script.string(), before, [&] {
     std::string text = read_text(include);
     text.replace(text.find("\"aces\""), 6, "\"reinhard\"");
     replace_file(include, text);
   });
   ASSERT_EQ(view.exit_code, 0) << view.errors;
-  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  expect_clean(view);
   ASSERT_EQ(volgraph("render " + args + " --frames 2 -o " + rendered.string()).exit_code, 0);
   expect_golden_match(after, rendered);
   expect_different(after, before);
@@ -219,19 +235,19 @@ TEST(Viewer, EditedIncludeIsReloaded) {
 
 // A bad edit keeps the last good graph: the frames after it equal the ones before, and
 // the loader's message (file, JSON pointer) is printed once.
-TEST(Viewer, BadEditKeepsTheLastGoodFrame) {
-  const std::filesystem::path dir = copy_analytic_fog("bad_edit"), script = dir / "script.txt";
+TEST_P(ViewerOn, BadEditKeepsTheLastGoodFrame) {
+  const std::filesystem::path dir = copy_analytic_fog("bad_edit_" + GetParam()), script = dir / "script.txt";
   const std::filesystem::path before = dir / "before.png", after = dir / "after.png";
   std::ofstream(script) << "frames 2\nscreenshot " << before.string() << "\nwait-change\nframes 2\nscreenshot " << after.string() << "\n";
   const std::filesystem::path include = dir / "graphs" / "analytic_fog.json";
-  const CommandRun view = view_with_edit("view " + (dir / "demo_analytic_fog.json").string() + " --size 160x90 --validation --no-overlay --script " + script.string(),
+  const CommandRun view = view_with_edit("view " + (dir / "demo_analytic_fog.json").string() + " --size 160x90" + backend() + " --no-overlay --script " + script.string(),
                                          before, [&] {
                                            std::string text = read_text(include);
                                            text.replace(text.find("\"aces\""), 6, "\"nope\"");
                                            replace_file(include, text);
                                          });
   ASSERT_EQ(view.exit_code, 0) << view.errors;
-  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  expect_clean(view);
   EXPECT_EQ(count_of(view.errors, "analytic_fog.json"), 1u) << view.errors;
   EXPECT_EQ(count_of(view.errors, "/graph/passes/3/variant"), 1u) << view.errors;
   EXPECT_EQ(read_text(after), read_text(before));
@@ -340,11 +356,14 @@ TEST(Viewer, BadCameraOrSunLineExitsTwoBeforeAnyWindow) {
   EXPECT_EQ(b.errors.find("display"), std::string::npos) << b.errors;
 }
 
-TEST(Viewer, WebGpuSurfaceIsNotWrittenYet) {
-  const CommandRun view = volgraph("view " + config("demo_fog.json") + " --backend webgpu --frames 1");
-  EXPECT_EQ(view.exit_code, 2);
-  EXPECT_NE(view.errors.find("view: the WebGPU backend's window surface is not written yet"), std::string::npos) << view.errors;
-  EXPECT_EQ(std::count(view.errors.begin(), view.errors.end(), '\n'), 1) << view.errors;
+// WebGPU has no overlay (Debian's Dear ImGui has no renderer for its API revision): one
+// line says so, and the frame is still presented.
+TEST(Viewer, WebGpuSaysItHasNoOverlay) {
+  const std::filesystem::path shown = scratch() / "webgpu_overlay.png";
+  const CommandRun view = volgraph("view " + config("demo_fog.json") + " --size 160x90 --backend webgpu --frames 1 --screenshot " + shown.string());
+  EXPECT_EQ(view.exit_code, 0) << view.errors;
+  EXPECT_EQ(count_of(view.errors, "view: no overlay: "), 1u) << view.errors;
+  EXPECT_TRUE(std::filesystem::exists(shown));
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 
 # object -> methods (dawn.json names). AddRef/Release come with every object.
 OBJECTS = {
-    "instance": ["process events", "wait any", "request adapter"],
+    "instance": ["process events", "wait any", "request adapter", "create surface"],
     "adapter": ["get limits", "get info", "has feature", "get features", "request device"],
     "device": [
         "create bind group", "create bind group layout", "create buffer",
@@ -52,12 +52,14 @@ OBJECTS = {
         "set scissor rect", "set vertex buffer", "set index buffer", "end", "set label",
     ],
     "query set": ["set label", "get type", "get count", "destroy"],
+    # The viewer's window (viewer/webgpu_presenter.cpp).
+    "surface": ["configure", "get capabilities", "get current texture", "present", "unconfigure", "set label"],
 }
 
 FUNCTIONS = ["create instance"]
 
 # Structures no method names: chained extensions the backend uses.
-EXTRA_STRUCTURES = ["shader source SPIRV", "dawn toggles descriptor"]
+EXTRA_STRUCTURES = ["shader source SPIRV", "dawn toggles descriptor", "surface source xlib window"]
 
 # Enums (or values) that no listed method or structure reaches but callers compare with.
 EXTRA_ENUMS = ["s type"]

@@ -37,6 +37,8 @@ class DawnContext {
   DawnContext(const DawnContext&) = delete;
   DawnContext& operator=(const DawnContext&) = delete;
 
+  const wgpu::Instance& instance() const { return instance_; }
+  const wgpu::Adapter& adapter() const { return adapter_; }
   const wgpu::Device& device() const { return device_; }
   const wgpu::Queue& queue() const { return queue_; }
   const rhi::AdapterInfo& info() const { return info_; }

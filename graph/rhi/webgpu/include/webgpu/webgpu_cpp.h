@@ -609,8 +609,37 @@ enum class StoreOp : uint32_t {
 };
 static_assert(sizeof(StoreOp) == sizeof(WGPUStoreOp), "sizeof mismatch for StoreOp");
 
+enum class CompositeAlphaMode : uint32_t {
+    Auto = WGPUCompositeAlphaMode_Auto,
+    Opaque = WGPUCompositeAlphaMode_Opaque,
+    Premultiplied = WGPUCompositeAlphaMode_Premultiplied,
+    Unpremultiplied = WGPUCompositeAlphaMode_Unpremultiplied,
+    Inherit = WGPUCompositeAlphaMode_Inherit,
+};
+static_assert(sizeof(CompositeAlphaMode) == sizeof(WGPUCompositeAlphaMode), "sizeof mismatch for CompositeAlphaMode");
+
+enum class PresentMode : uint32_t {
+    Undefined = WGPUPresentMode_Undefined,
+    Fifo = WGPUPresentMode_Fifo,
+    FifoRelaxed = WGPUPresentMode_FifoRelaxed,
+    Immediate = WGPUPresentMode_Immediate,
+    Mailbox = WGPUPresentMode_Mailbox,
+};
+static_assert(sizeof(PresentMode) == sizeof(WGPUPresentMode), "sizeof mismatch for PresentMode");
+
+enum class SurfaceGetCurrentTextureStatus : uint32_t {
+    SuccessOptimal = WGPUSurfaceGetCurrentTextureStatus_SuccessOptimal,
+    SuccessSuboptimal = WGPUSurfaceGetCurrentTextureStatus_SuccessSuboptimal,
+    Timeout = WGPUSurfaceGetCurrentTextureStatus_Timeout,
+    Outdated = WGPUSurfaceGetCurrentTextureStatus_Outdated,
+    Lost = WGPUSurfaceGetCurrentTextureStatus_Lost,
+    Error = WGPUSurfaceGetCurrentTextureStatus_Error,
+};
+static_assert(sizeof(SurfaceGetCurrentTextureStatus) == sizeof(WGPUSurfaceGetCurrentTextureStatus), "sizeof mismatch for SurfaceGetCurrentTextureStatus");
+
 enum class SType : uint32_t {
     ShaderSourceSPIRV = WGPUSType_ShaderSourceSPIRV,
+    SurfaceSourceXlibWindow = WGPUSType_SurfaceSourceXlibWindow,
     DawnTogglesDescriptor = WGPUSType_DawnTogglesDescriptor,
 };
 static_assert(sizeof(SType) == sizeof(WGPUSType), "sizeof mismatch for SType");
@@ -716,6 +745,7 @@ struct Future;
 struct FutureWaitInfo;
 struct RequestAdapterOptions;
 struct StringView;
+struct SurfaceDescriptor;
 struct Limits;
 struct AdapterInfo;
 struct SupportedFeatures;
@@ -764,10 +794,14 @@ struct RenderPassColorAttachment;
 struct RenderPassDepthStencilAttachment;
 struct RenderPassDescriptor;
 struct TexelCopyBufferInfo;
+struct SurfaceConfiguration;
+struct SurfaceCapabilities;
+struct SurfaceTexture;
 struct InstanceCapabilities;
 struct InstanceDescriptor;
 struct ShaderSourceSPIRV;
 struct DawnTogglesDescriptor;
+struct SurfaceSourceXlibWindow;
 
 namespace detail {
 constexpr size_t ConstexprMax(size_t a, size_t b) {
@@ -974,6 +1008,7 @@ class Instance : public ObjectBase<Instance, WGPUInstance> {
     template <typename L, typename Cb = RequestAdapterCallback<>,
               typename = std::enable_if_t<std::is_convertible_v<L, Cb>>>
     Future RequestAdapter(RequestAdapterOptions const * options, CallbackMode callbackMode, L callback) const;
+    inline Surface CreateSurface(SurfaceDescriptor const * descriptor) const;
     inline WaitStatus WaitAny(Future f, uint64_t timeout) const;
 
   private:
@@ -987,6 +1022,12 @@ class Surface : public ObjectBase<Surface, WGPUSurface> {
     using ObjectBase::ObjectBase;
     using ObjectBase::operator=;
 
+    inline void Configure(SurfaceConfiguration const * config) const;
+    inline ConvertibleStatus GetCapabilities(Adapter const& adapter, SurfaceCapabilities * capabilities) const;
+    inline void GetCurrentTexture(SurfaceTexture * surfaceTexture) const;
+    inline void Present() const;
+    inline void Unconfigure() const;
+    inline void SetLabel(StringView label) const;
 
   private:
     friend ObjectBase<Surface, WGPUSurface>;
@@ -1364,6 +1405,13 @@ struct RequestAdapterOptions {
     Bool forceFallbackAdapter = false;
     BackendType backendType = BackendType::Undefined;
     Surface compatibleSurface = nullptr;
+};
+
+struct SurfaceDescriptor {
+    inline operator const WGPUSurfaceDescriptor&() const noexcept;
+
+    ChainedStruct const * nextInChain = nullptr;
+    StringView label = {};
 };
 
 struct Limits {
@@ -1886,6 +1934,52 @@ struct TexelCopyBufferInfo {
     Buffer buffer = nullptr;
 };
 
+struct SurfaceConfiguration {
+    inline operator const WGPUSurfaceConfiguration&() const noexcept;
+
+    ChainedStruct const * nextInChain = nullptr;
+    Device device = nullptr;
+    TextureFormat format = TextureFormat::Undefined;
+    TextureUsage usage = TextureUsage::RenderAttachment;
+    uint32_t width;
+    uint32_t height;
+    size_t viewFormatCount = 0;
+    TextureFormat const * viewFormats = nullptr;
+    CompositeAlphaMode alphaMode = CompositeAlphaMode::Auto;
+    PresentMode presentMode = PresentMode::Undefined;
+};
+
+struct SurfaceCapabilities {
+    inline SurfaceCapabilities();
+    inline ~SurfaceCapabilities();
+    SurfaceCapabilities(const SurfaceCapabilities&) = delete;
+    SurfaceCapabilities& operator=(const SurfaceCapabilities&) = delete;
+    inline SurfaceCapabilities(SurfaceCapabilities&&);
+    inline SurfaceCapabilities& operator=(SurfaceCapabilities&&);
+    inline operator const WGPUSurfaceCapabilities&() const noexcept;
+
+    ChainedStructOut * nextInChain = nullptr;
+    TextureUsage const usages = TextureUsage::None;
+    size_t const formatCount = {};
+    TextureFormat const * const formats = nullptr;
+    size_t const presentModeCount = {};
+    PresentMode const * const presentModes = nullptr;
+    size_t const alphaModeCount = {};
+    CompositeAlphaMode const * const alphaModes = nullptr;
+
+  private:
+    inline void FreeMembers();
+    static inline void Reset(SurfaceCapabilities& value);
+};
+
+struct SurfaceTexture {
+    inline operator const WGPUSurfaceTexture&() const noexcept;
+
+    ChainedStructOut * nextInChain = nullptr;
+    Texture texture = nullptr;
+    SurfaceGetCurrentTextureStatus status = {};
+};
+
 struct InstanceCapabilities {
     inline operator const WGPUInstanceCapabilities&() const noexcept;
 
@@ -1923,6 +2017,17 @@ struct DawnTogglesDescriptor : ChainedStruct {
     char const * const * enabledToggles = nullptr;
     size_t disabledToggleCount = 0;
     char const * const * disabledToggles = nullptr;
+};
+
+struct SurfaceSourceXlibWindow : ChainedStruct {
+    inline SurfaceSourceXlibWindow();
+    struct Init;
+    inline SurfaceSourceXlibWindow(Init&& init);
+    inline operator const WGPUSurfaceSourceXlibWindow&() const noexcept;
+
+    static constexpr size_t kFirstMemberAlignment = detail::ConstexprMax(alignof(ChainedStruct), alignof(void *));
+    alignas(kFirstMemberAlignment) void * display = nullptr;
+    uint64_t window;
 };
 
 // DeviceDescriptor keeps its callback infos to itself: set them with
@@ -1993,6 +2098,13 @@ static_assert(offsetof(RequestAdapterOptions, powerPreference) == offsetof(WGPUR
 static_assert(offsetof(RequestAdapterOptions, forceFallbackAdapter) == offsetof(WGPURequestAdapterOptions, forceFallbackAdapter), "offsetof mismatch for RequestAdapterOptions::forceFallbackAdapter");
 static_assert(offsetof(RequestAdapterOptions, backendType) == offsetof(WGPURequestAdapterOptions, backendType), "offsetof mismatch for RequestAdapterOptions::backendType");
 static_assert(offsetof(RequestAdapterOptions, compatibleSurface) == offsetof(WGPURequestAdapterOptions, compatibleSurface), "offsetof mismatch for RequestAdapterOptions::compatibleSurface");
+
+// SurfaceDescriptor
+SurfaceDescriptor::operator const WGPUSurfaceDescriptor&() const noexcept { return *reinterpret_cast<const WGPUSurfaceDescriptor*>(this); }
+static_assert(sizeof(SurfaceDescriptor) == sizeof(WGPUSurfaceDescriptor), "sizeof mismatch for SurfaceDescriptor");
+static_assert(alignof(SurfaceDescriptor) == alignof(WGPUSurfaceDescriptor), "alignof mismatch for SurfaceDescriptor");
+static_assert(offsetof(SurfaceDescriptor, nextInChain) == offsetof(WGPUSurfaceDescriptor, nextInChain), "offsetof mismatch for SurfaceDescriptor::nextInChain");
+static_assert(offsetof(SurfaceDescriptor, label) == offsetof(WGPUSurfaceDescriptor, label), "offsetof mismatch for SurfaceDescriptor::label");
 
 // Limits
 Limits::operator const WGPULimits&() const noexcept { return *reinterpret_cast<const WGPULimits*>(this); }
@@ -2562,6 +2674,79 @@ static_assert(alignof(TexelCopyBufferInfo) == alignof(WGPUTexelCopyBufferInfo), 
 static_assert(offsetof(TexelCopyBufferInfo, layout) == offsetof(WGPUTexelCopyBufferInfo, layout), "offsetof mismatch for TexelCopyBufferInfo::layout");
 static_assert(offsetof(TexelCopyBufferInfo, buffer) == offsetof(WGPUTexelCopyBufferInfo, buffer), "offsetof mismatch for TexelCopyBufferInfo::buffer");
 
+// SurfaceConfiguration
+SurfaceConfiguration::operator const WGPUSurfaceConfiguration&() const noexcept { return *reinterpret_cast<const WGPUSurfaceConfiguration*>(this); }
+static_assert(sizeof(SurfaceConfiguration) == sizeof(WGPUSurfaceConfiguration), "sizeof mismatch for SurfaceConfiguration");
+static_assert(alignof(SurfaceConfiguration) == alignof(WGPUSurfaceConfiguration), "alignof mismatch for SurfaceConfiguration");
+static_assert(offsetof(SurfaceConfiguration, nextInChain) == offsetof(WGPUSurfaceConfiguration, nextInChain), "offsetof mismatch for SurfaceConfiguration::nextInChain");
+static_assert(offsetof(SurfaceConfiguration, device) == offsetof(WGPUSurfaceConfiguration, device), "offsetof mismatch for SurfaceConfiguration::device");
+static_assert(offsetof(SurfaceConfiguration, format) == offsetof(WGPUSurfaceConfiguration, format), "offsetof mismatch for SurfaceConfiguration::format");
+static_assert(offsetof(SurfaceConfiguration, usage) == offsetof(WGPUSurfaceConfiguration, usage), "offsetof mismatch for SurfaceConfiguration::usage");
+static_assert(offsetof(SurfaceConfiguration, width) == offsetof(WGPUSurfaceConfiguration, width), "offsetof mismatch for SurfaceConfiguration::width");
+static_assert(offsetof(SurfaceConfiguration, height) == offsetof(WGPUSurfaceConfiguration, height), "offsetof mismatch for SurfaceConfiguration::height");
+static_assert(offsetof(SurfaceConfiguration, viewFormatCount) == offsetof(WGPUSurfaceConfiguration, viewFormatCount), "offsetof mismatch for SurfaceConfiguration::viewFormatCount");
+static_assert(offsetof(SurfaceConfiguration, viewFormats) == offsetof(WGPUSurfaceConfiguration, viewFormats), "offsetof mismatch for SurfaceConfiguration::viewFormats");
+static_assert(offsetof(SurfaceConfiguration, alphaMode) == offsetof(WGPUSurfaceConfiguration, alphaMode), "offsetof mismatch for SurfaceConfiguration::alphaMode");
+static_assert(offsetof(SurfaceConfiguration, presentMode) == offsetof(WGPUSurfaceConfiguration, presentMode), "offsetof mismatch for SurfaceConfiguration::presentMode");
+
+// SurfaceCapabilities
+SurfaceCapabilities::SurfaceCapabilities() = default;
+SurfaceCapabilities::~SurfaceCapabilities() { FreeMembers(); }
+SurfaceCapabilities::SurfaceCapabilities(SurfaceCapabilities&& rhs)
+    : nextInChain(rhs.nextInChain), usages(rhs.usages), formatCount(rhs.formatCount), formats(rhs.formats), presentModeCount(rhs.presentModeCount), presentModes(rhs.presentModes), alphaModeCount(rhs.alphaModeCount), alphaModes(rhs.alphaModes) {
+    Reset(rhs);
+}
+SurfaceCapabilities& SurfaceCapabilities::operator=(SurfaceCapabilities&& rhs) {
+    if (&rhs == this) return *this;
+    FreeMembers();
+    nextInChain = rhs.nextInChain;
+    detail::AsNonConstReference(usages) = rhs.usages;
+    detail::AsNonConstReference(formatCount) = rhs.formatCount;
+    detail::AsNonConstReference(formats) = rhs.formats;
+    detail::AsNonConstReference(presentModeCount) = rhs.presentModeCount;
+    detail::AsNonConstReference(presentModes) = rhs.presentModes;
+    detail::AsNonConstReference(alphaModeCount) = rhs.alphaModeCount;
+    detail::AsNonConstReference(alphaModes) = rhs.alphaModes;
+    Reset(rhs);
+    return *this;
+}
+void SurfaceCapabilities::FreeMembers() {
+    if (this->formats != nullptr || this->presentModes != nullptr || this->alphaModes != nullptr) {
+        wgpuSurfaceCapabilitiesFreeMembers(*reinterpret_cast<WGPUSurfaceCapabilities*>(this));
+    }
+}
+void SurfaceCapabilities::Reset(SurfaceCapabilities& value) {
+    SurfaceCapabilities defaults;
+    value.nextInChain = defaults.nextInChain;
+    detail::AsNonConstReference(value.usages) = defaults.usages;
+    detail::AsNonConstReference(value.formatCount) = defaults.formatCount;
+    detail::AsNonConstReference(value.formats) = defaults.formats;
+    detail::AsNonConstReference(value.presentModeCount) = defaults.presentModeCount;
+    detail::AsNonConstReference(value.presentModes) = defaults.presentModes;
+    detail::AsNonConstReference(value.alphaModeCount) = defaults.alphaModeCount;
+    detail::AsNonConstReference(value.alphaModes) = defaults.alphaModes;
+}
+
+SurfaceCapabilities::operator const WGPUSurfaceCapabilities&() const noexcept { return *reinterpret_cast<const WGPUSurfaceCapabilities*>(this); }
+static_assert(sizeof(SurfaceCapabilities) == sizeof(WGPUSurfaceCapabilities), "sizeof mismatch for SurfaceCapabilities");
+static_assert(alignof(SurfaceCapabilities) == alignof(WGPUSurfaceCapabilities), "alignof mismatch for SurfaceCapabilities");
+static_assert(offsetof(SurfaceCapabilities, nextInChain) == offsetof(WGPUSurfaceCapabilities, nextInChain), "offsetof mismatch for SurfaceCapabilities::nextInChain");
+static_assert(offsetof(SurfaceCapabilities, usages) == offsetof(WGPUSurfaceCapabilities, usages), "offsetof mismatch for SurfaceCapabilities::usages");
+static_assert(offsetof(SurfaceCapabilities, formatCount) == offsetof(WGPUSurfaceCapabilities, formatCount), "offsetof mismatch for SurfaceCapabilities::formatCount");
+static_assert(offsetof(SurfaceCapabilities, formats) == offsetof(WGPUSurfaceCapabilities, formats), "offsetof mismatch for SurfaceCapabilities::formats");
+static_assert(offsetof(SurfaceCapabilities, presentModeCount) == offsetof(WGPUSurfaceCapabilities, presentModeCount), "offsetof mismatch for SurfaceCapabilities::presentModeCount");
+static_assert(offsetof(SurfaceCapabilities, presentModes) == offsetof(WGPUSurfaceCapabilities, presentModes), "offsetof mismatch for SurfaceCapabilities::presentModes");
+static_assert(offsetof(SurfaceCapabilities, alphaModeCount) == offsetof(WGPUSurfaceCapabilities, alphaModeCount), "offsetof mismatch for SurfaceCapabilities::alphaModeCount");
+static_assert(offsetof(SurfaceCapabilities, alphaModes) == offsetof(WGPUSurfaceCapabilities, alphaModes), "offsetof mismatch for SurfaceCapabilities::alphaModes");
+
+// SurfaceTexture
+SurfaceTexture::operator const WGPUSurfaceTexture&() const noexcept { return *reinterpret_cast<const WGPUSurfaceTexture*>(this); }
+static_assert(sizeof(SurfaceTexture) == sizeof(WGPUSurfaceTexture), "sizeof mismatch for SurfaceTexture");
+static_assert(alignof(SurfaceTexture) == alignof(WGPUSurfaceTexture), "alignof mismatch for SurfaceTexture");
+static_assert(offsetof(SurfaceTexture, nextInChain) == offsetof(WGPUSurfaceTexture, nextInChain), "offsetof mismatch for SurfaceTexture::nextInChain");
+static_assert(offsetof(SurfaceTexture, texture) == offsetof(WGPUSurfaceTexture, texture), "offsetof mismatch for SurfaceTexture::texture");
+static_assert(offsetof(SurfaceTexture, status) == offsetof(WGPUSurfaceTexture, status), "offsetof mismatch for SurfaceTexture::status");
+
 // InstanceCapabilities
 InstanceCapabilities::operator const WGPUInstanceCapabilities&() const noexcept { return *reinterpret_cast<const WGPUInstanceCapabilities*>(this); }
 static_assert(sizeof(InstanceCapabilities) == sizeof(WGPUInstanceCapabilities), "sizeof mismatch for InstanceCapabilities");
@@ -2612,6 +2797,22 @@ static_assert(offsetof(DawnTogglesDescriptor, enabledToggleCount) == offsetof(WG
 static_assert(offsetof(DawnTogglesDescriptor, enabledToggles) == offsetof(WGPUDawnTogglesDescriptor, enabledToggles), "offsetof mismatch for DawnTogglesDescriptor::enabledToggles");
 static_assert(offsetof(DawnTogglesDescriptor, disabledToggleCount) == offsetof(WGPUDawnTogglesDescriptor, disabledToggleCount), "offsetof mismatch for DawnTogglesDescriptor::disabledToggleCount");
 static_assert(offsetof(DawnTogglesDescriptor, disabledToggles) == offsetof(WGPUDawnTogglesDescriptor, disabledToggles), "offsetof mismatch for DawnTogglesDescriptor::disabledToggles");
+
+// SurfaceSourceXlibWindow
+SurfaceSourceXlibWindow::SurfaceSourceXlibWindow() : ChainedStruct{nullptr, SType::SurfaceSourceXlibWindow} {}
+struct SurfaceSourceXlibWindow::Init {
+    ChainedStruct const * nextInChain;
+    void * display = nullptr;
+    uint64_t window;
+};
+SurfaceSourceXlibWindow::SurfaceSourceXlibWindow(SurfaceSourceXlibWindow::Init&& init)
+    : ChainedStruct{init.nextInChain, SType::SurfaceSourceXlibWindow}, display(std::move(init.display)), window(std::move(init.window)) {}
+
+SurfaceSourceXlibWindow::operator const WGPUSurfaceSourceXlibWindow&() const noexcept { return *reinterpret_cast<const WGPUSurfaceSourceXlibWindow*>(this); }
+static_assert(sizeof(SurfaceSourceXlibWindow) == sizeof(WGPUSurfaceSourceXlibWindow), "sizeof mismatch for SurfaceSourceXlibWindow");
+static_assert(alignof(SurfaceSourceXlibWindow) == alignof(WGPUSurfaceSourceXlibWindow), "alignof mismatch for SurfaceSourceXlibWindow");
+static_assert(offsetof(SurfaceSourceXlibWindow, display) == offsetof(WGPUSurfaceSourceXlibWindow, display), "offsetof mismatch for SurfaceSourceXlibWindow::display");
+static_assert(offsetof(SurfaceSourceXlibWindow, window) == offsetof(WGPUSurfaceSourceXlibWindow, window), "offsetof mismatch for SurfaceSourceXlibWindow::window");
 
 // DeviceDescriptor
 DeviceDescriptor::operator const WGPUDeviceDescriptor&() const noexcept {
@@ -2766,6 +2967,10 @@ Future Instance::RequestAdapter(RequestAdapterOptions const * options, CallbackM
     return Future{(wgpuInstanceRequestAdapter(Get(), reinterpret_cast<WGPURequestAdapterOptions const *>(options), info)).id};
 }
 
+Surface Instance::CreateSurface(SurfaceDescriptor const * descriptor) const {
+    return Surface::Acquire(wgpuInstanceCreateSurface(Get(), reinterpret_cast<WGPUSurfaceDescriptor const *>(descriptor)));
+}
+
 WaitStatus Instance::WaitAny(Future f, uint64_t timeout) const {
     FutureWaitInfo waitInfo{f};
     return WaitAny(1, &waitInfo, timeout);
@@ -2779,6 +2984,31 @@ void Instance::WGPURelease(WGPUInstance handle) {
 }
 
 // Surface
+void Surface::Configure(SurfaceConfiguration const * config) const {
+    wgpuSurfaceConfigure(Get(), reinterpret_cast<WGPUSurfaceConfiguration const *>(config));
+}
+
+ConvertibleStatus Surface::GetCapabilities(Adapter const& adapter, SurfaceCapabilities * capabilities) const {
+    *capabilities = SurfaceCapabilities();
+    return ConvertibleStatus(static_cast<Status>(wgpuSurfaceGetCapabilities(Get(), adapter.Get(), reinterpret_cast<WGPUSurfaceCapabilities *>(capabilities))));
+}
+
+void Surface::GetCurrentTexture(SurfaceTexture * surfaceTexture) const {
+    wgpuSurfaceGetCurrentTexture(Get(), reinterpret_cast<WGPUSurfaceTexture *>(surfaceTexture));
+}
+
+void Surface::Present() const {
+    wgpuSurfacePresent(Get());
+}
+
+void Surface::Unconfigure() const {
+    wgpuSurfaceUnconfigure(Get());
+}
+
+void Surface::SetLabel(StringView label) const {
+    wgpuSurfaceSetLabel(Get(), *reinterpret_cast<WGPUStringView const*>(&label));
+}
+
 void Surface::WGPUAddRef(WGPUSurface handle) {
     if (handle != nullptr) wgpuSurfaceAddRef(handle);
 }
