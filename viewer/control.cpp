@@ -104,7 +104,7 @@ namespace {
 
 // How many words each verb takes (param: at least three, the JSON value may hold spaces).
 size_t words_for(const std::string& verb) {
-  if (verb == "frames" || verb == "screenshot") return 1;
+  if (verb == "frames" || verb == "screenshot" || verb == "capture") return 1;
   if (verb == "variant") return 2;
   if (verb == "param" || verb == "ab") return 3;
   if (verb == "reload") return 0;
@@ -121,7 +121,7 @@ ScriptCommand parse_line(const std::string& path, int number, const std::string&
   in >> c.verb;
   const size_t expected = words_for(c.verb);
   if (expected == size_t(-1)) {
-    script_error(path, number, "unknown command \"" + c.verb + "\"; expected frames, variant, param, ab, reload, screenshot, wait-change, camera or sun");
+    script_error(path, number, "unknown command \"" + c.verb + "\"; expected frames, variant, param, ab, reload, screenshot, capture, wait-change, camera or sun");
   }
   std::string word;
   for (size_t i = 0; i < (c.verb == "param" ? 2 : expected) && in >> word; ++i) c.args.push_back(word);
@@ -133,7 +133,7 @@ ScriptCommand parse_line(const std::string& path, int number, const std::string&
     c.args.push_back(word);
   }
   if (c.args.size() != expected) {
-    script_error(path, number, c.verb + " takes " + std::to_string(expected) + " word(s): frames N | variant PASS VARIANT | param PASS NAME JSON | ab PASS A B | reload | screenshot FILE.png | wait-change | camera X Y Z TX TY TZ | sun AZ EL");
+    script_error(path, number, c.verb + " takes " + std::to_string(expected) + " word(s): frames N | variant PASS VARIANT | param PASS NAME JSON | ab PASS A B | reload | screenshot FILE.png | capture PREFIX | wait-change | camera X Y Z TX TY TZ | sun AZ EL");
   }
   if (c.verb == "frames") {
     const std::string& n = c.args[0];

@@ -19,6 +19,8 @@ class GraphSource {
   GraphSource(std::string path, const PassRegistry& registry, Overrides overrides, CompileOptions compile, LoadedConfig first);
 
   LoadedConfig& current() { return current_; }
+  // The command line's overrides with the viewer's changes on top (what current() was loaded with).
+  const Overrides& overrides() const { return overrides_; }
   // Each returns "" when the graph changed, or the loader's message when it was refused.
   std::string set_variant(const std::string& pass, const std::string& variant);
   std::string set_param(const std::string& pass, const std::string& name, const std::string& json);
@@ -49,7 +51,7 @@ class GraphSource {
 
 // One line of a --script file: a verb and its words.
 struct ScriptCommand {
-  std::string verb;               // frames, variant, param, reload, ab, screenshot, wait-change, camera, sun
+  std::string verb;               // frames, variant, param, reload, ab, screenshot, capture, wait-change, camera, sun
   std::vector<std::string> args;  // param: PASS NAME JSON (the JSON is the rest of the line)
   int line = 0;
 };

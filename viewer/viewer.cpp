@@ -7,7 +7,9 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <filesystem>
 #include <functional>
+#include <span>
 #include <array>
 #include <thread>
 #include <vector>
@@ -20,6 +22,7 @@
 #include "physics/srgb.h"
 #include "tools/image_io.h"
 #include "tools/output_files.h"
+#include "viewer/capture.h"
 #include "viewer/overlay.h"
 #include "viewer/window_backend.h"
 #include <iomanip>
@@ -44,6 +47,7 @@ struct WindowEvents {
   bool reload = false;  // R
   bool ab = false;      // Tab: the last `ab` pair toggled again
   bool overlay = false;  // F1: the overlay shown or hidden
+  bool capture = false;  // F12: PNG + EXR + config of the frame
   bool input = false;    // the mouse moved or a button or key was pressed: the overlay redraws
 };
 
@@ -86,6 +90,7 @@ Window open_window(Extent size, const std::string& title, WindowEvents& events) 
     if (key == GLFW_KEY_R) events.reload = true;
     if (key == GLFW_KEY_TAB) events.ab = true;
     if (key == GLFW_KEY_F1) events.overlay = true;
+    if (key == GLFW_KEY_F12) events.capture = true;
   });
   // Any mouse input redraws (the overlay's widgets answer it; ImGui chains these callbacks).
   glfwSetCursorPosCallback(window.get(), [](GLFWwindow* w, double, double) { static_cast<WindowEvents*>(glfwGetWindowUserPointer(w))->input = true; });
@@ -192,6 +197,31 @@ class Loop {
     write_screenshot(path, shot_extent_, shot_);
   }
 
+  // The capture (capture.h): PREFIX.png, .exr and .json, written together or not at all,
+  // of the last frame (one frame first when none was rendered since the last change).
+  void capture(const std::string& prefix) {
+    if (frames_since_restart_ == 0) frames(1);
+    CaptureState state;
+    state.config = options_.config;
+    state.overrides = source_.overrides();
+    const Scene& scene = source_.current().config.scene;
+    state.camera = scene.camera;
+    const int sun = sun_index(scene);
+    if (sun >= 0 && !scene.lights[size_t(sun)].name.empty()) state.sun = scene.lights[size_t(sun)];
+    state.size = {last_output_.width, last_output_.height, 1};
+    state.frames = frames_since_restart_;
+    const std::string json = prefix + ".json";
+    const Image linear{last_output_.width, last_output_.height, last_output_.rgba};
+    OutputFiles files;
+    files.stage(prefix + ".png", "capture", encode_png_rgba8(linear.width, linear.height, srgb8(last_output_)));
+    files.stage(prefix + ".exr", "capture", encode_image(linear, ImageFormat::exr));
+    const std::string text = capture_config(state, json);
+    files.stage(json, "capture", std::as_bytes(std::span(text.data(), text.size())));
+    files.commit();
+    std::cout << "view: captured " << prefix << ".png, .exr, .json; the same image: " << capture_render_command(json, state) << std::endl;
+    if (sun >= 0 && !state.sun && sun_) std::cerr << "view: capture: the sun has no name, so its direction is not in " << json << "\n";
+  }
+
   // Returns the exit code's part: false when a script's wait-change timed out.
   bool run() {
     if (options_.scripted) return run_script();
@@ -249,6 +279,7 @@ class Loop {
     if (c.verb == "ab") toggle_ab(a[0], a[1], a[2]);
     if (c.verb == "reload") reload();
     if (c.verb == "screenshot") screenshot(a[0]);
+    if (c.verb == "capture") capture(a[0]);
     if (c.verb == "camera" || c.verb == "sun") {
       std::vector<double> v;
       for (const std::string& w : a) v.push_back(std::stod(w));
@@ -295,13 +326,14 @@ class Loop {
 
   void handle_keys() {
     if (events_.reload) reload();
+    if (events_.capture) capture(next_capture_prefix());
     if (events_.ab && !ab_.pass.empty()) toggle_ab(ab_.pass, ab_.a, ab_.b);
     if (events_.overlay && overlay_) {
       overlay_shown_ = !overlay_shown_;
       executor_->set_gpu_timing(overlay_shown_);
       settled_ = std::min(settled_, kSettleFrames - 1);
     }
-    events_.reload = events_.ab = events_.overlay = false;
+    events_.reload = events_.ab = events_.overlay = events_.capture = false;
     if (pending_) {  // an edit made in the overlay, applied between frames
       auto edit = std::move(pending_);
       pending_ = nullptr;
@@ -503,6 +535,14 @@ class Loop {
     if (!json.empty()) pending_ = [this, pass, name = d.name, json] { set_param(pass, name, json); };
   }
 
+  // F12's files: volgraph_capture_N in the working directory, N the first number free.
+  static std::string next_capture_prefix() {
+    for (int n = 1;; ++n) {
+      const std::string prefix = "volgraph_capture_" + std::to_string(n);
+      if (!std::filesystem::exists(prefix + ".json") && !std::filesystem::exists(prefix + ".png")) return prefix;
+    }
+  }
+
   // Hot reload: the config or an include changed on disk.
   void poll_files() {
     if (!source_.files_changed()) return;
@@ -538,6 +578,7 @@ class Loop {
     executor_ = std::make_unique<Executor>(backend_.device(), loaded.graph, &loaded.config.scene, options_.compile);
     executor_->set_gpu_timing(overlay_shown_);  // time stamps only while the overlay shows the pass times
     settled_ = 0;
+    frames_since_restart_ = 0;
   }
 
   // False while the window is minimised (nothing to present to).
@@ -554,7 +595,9 @@ class Loop {
 
   bool frame(bool screenshot) {
     executor_->run_frame();
-    const std::vector<uint8_t> texels = srgb8(executor_->read_output(0));
+    ++frames_since_restart_;
+    last_output_ = executor_->read_output(0);
+    const std::vector<uint8_t> texels = srgb8(last_output_);
     std::vector<uint8_t>* read_back = screenshot && backend_.readable() ? &shot_ : nullptr;
     const Overlay* drawn = nullptr;
     if (overlay_ && overlay_shown_) {
@@ -586,6 +629,8 @@ class Loop {
   std::map<std::string, double> ab_times_;           // the frame's GPU ms per variant of the A/B pass
   std::unique_ptr<Executor> executor_;
   int rendered_ = 0;
+  int frames_since_restart_ = 0;  // frames of the current executor (a capture's --frames)
+  Texels last_output_;            // the last frame's output, linear (for a capture)
   int settled_ = 0;
   std::vector<uint8_t> shot_;  // the last presented image, for --screenshot
   Extent shot_extent_{};

@@ -683,7 +683,13 @@ void read_scene(const Node& n, Scene& scene) {
     for (size_t i = 0; i < lights->size(); ++i) {
       Light l;
       read_light(lights->element(i), l);
-      scene.lights.push_back(l);
+      // A named light replaces the light of that name read before (an include's), in place.
+      auto same = [&](const Light& x) { return !l.name.empty() && x.name == l.name; };
+      if (auto it = std::find_if(scene.lights.begin(), scene.lights.end(), same); it != scene.lights.end()) {
+        *it = l;
+      } else {
+        scene.lights.push_back(l);
+      }
     }
     if (scene.lights.size() > size_t(physics::kMaxLights)) {
       lights->error("at most " + std::to_string(physics::kMaxLights) + " lights, got " + std::to_string(scene.lights.size()));

@@ -402,6 +402,24 @@ TEST_F(LoaderFiles, IncludedPassIsAmendedByName) {
   EXPECT_EQ(std::get<int64_t>(c.params[0][1]), 256);  // the included setting stays
 }
 
+// A named light replaces the included light of that name where it stood; unnamed and new
+// names are appended (the viewer's captures move the sun this way).
+TEST_F(LoaderFiles, NamedLightReplacesTheIncludedOneInPlace) {
+  const std::string base = write("base.json", replace(kValid, R"("lights": [ { "type": "directional",)",
+                                                      R"("lights": [ { "name": "sun", "type": "directional",)"));
+  const std::string main = write("main.json", R"({
+    "include": "base.json",
+    "scene": { "lights": [ { "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1] },
+                           { "name": "sun", "type": "directional", "direction": [0, -1, -1], "irradiance": [2, 2, 2] } ] }
+  })");
+  const LoadedConfig c = load_config(main, registry_);
+  ASSERT_EQ(c.config.scene.lights.size(), 2u);
+  EXPECT_EQ(c.config.scene.lights[0].name, "sun");
+  EXPECT_EQ(c.config.scene.lights[0].irradiance[0], 2.0);
+  EXPECT_EQ(c.config.scene.lights[0].direction[2], -1.0);
+  EXPECT_EQ(c.config.scene.lights[1].type, LightType::point);
+}
+
 TEST(MissingFile, ConfigThatDoesNotExist) {
   PassRegistry registry;
   register_builtin_passes(registry);

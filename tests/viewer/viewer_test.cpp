@@ -356,6 +356,30 @@ TEST(Viewer, BadCameraOrSunLineExitsTwoBeforeAnyWindow) {
   EXPECT_EQ(b.errors.find("display"), std::string::npos) << b.errors;
 }
 
+// A capture (F12; the script's `capture PREFIX`) after a variant, a parameter, a camera
+// and a sun change writes PNG, EXR and a config; `render` of that config with the frames
+// it names gives the same PNG, byte for byte, and it differs from the unchanged config's.
+TEST_P(ViewerOn, CaptureRendersTheSameImageHeadless) {
+  const std::filesystem::path dir = scratch() / ("capture_" + GetParam()), script = dir / "script.txt";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path prefix = dir / "shot", again = dir / "again.png", plain = dir / "plain.png";
+  std::ofstream(script) << "frames 2\nvariant final reinhard\nparam final exposure 1.5\ncamera 2 2.5 6 0.5 0.8 0\nsun 30 20\n"
+                        << "frames 2\ncapture " << prefix.string() << "\n";
+  const std::string size = " --size 160x90" + backend();
+  const CommandRun view = volgraph("view " + config("demo_fog.json") + size + " --no-overlay --script " + script.string());
+  ASSERT_EQ(view.exit_code, 0) << view.errors;
+  expect_clean(view);
+  ASSERT_TRUE(std::filesystem::exists(prefix.string() + ".exr"));
+  const std::string json = prefix.string() + ".json";
+  EXPECT_NE(read_text(json).find("--frames 2"), std::string::npos) << read_text(json);
+  const CommandRun render = volgraph("render " + json + backend() + " --frames 2 -o " + again.string());
+  ASSERT_EQ(render.exit_code, 0) << render.errors;
+  EXPECT_EQ(read_text(again), read_text(prefix.string() + ".png"));
+  ASSERT_EQ(volgraph("render " + config("demo_fog.json") + size + " --frames 2 -o " + plain.string()).exit_code, 0);
+  expect_different(again, plain);
+}
+
 // WebGPU has no overlay (Debian's Dear ImGui has no renderer for its API revision): one
 // line says so, and the frame is still presented.
 TEST(Viewer, WebGpuSaysItHasNoOverlay) {
