@@ -22,6 +22,7 @@ uint32_t GraphBuilder::add_pass(std::string name, const PassDecl& decl, uint16_t
   p.variant = variant;
   p.kind = decl.kind;
   p.needs = decl.needs;
+  p.needs_any = decl.needs_any;
   p.uses.reserve(decl.slots.size());
   return static_cast<uint32_t>(graph_.passes.size() - 1);
 }

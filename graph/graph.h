@@ -36,6 +36,7 @@ struct GraphPass {
   uint16_t variant = 0;
   PassKind kind = PassKind::compute;
   SceneFeatures needs = 0;
+  SceneFeatures needs_any = 0;  // at least one of these (PassDecl::needs_any)
   std::vector<ResourceUse> uses;
   std::vector<ParamValue> params;  // as the decl's params; empty: the defaults
   // A step of a pass made of steps (PassDecl::steps): the graph pass of its first step

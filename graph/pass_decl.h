@@ -128,7 +128,8 @@ struct PassDecl {
   std::vector<VariantDecl> variants;  // first is the default; never empty
   std::vector<ParamDecl> params;
   std::vector<SlotDecl> slots;
-  SceneFeatures needs = 0;
+  SceneFeatures needs = 0;      // every one of these scene features, else the pass is culled
+  SceneFeatures needs_any = 0;  // at least one of these when not empty (needs_hold())
   SceneCheck check_scene = nullptr;      // optional
   MakeExecution make_execution = nullptr;  // none: the pass cannot run yet
   // Cached persistent outputs: when set, every output is persistent and a frame whose

@@ -44,9 +44,10 @@ struct CulledPass {
   CullReason reason;
   SceneFeatures missing = 0;  // scene_lacks: the features the scene lacks
   uint16_t slot = 0;          // input_culled: the required input whose producer was culled
+  SceneFeatures missing_any = 0;  // scene_lacks: the pass's needs_any when the scene has none of them
 };
 
-// "scene has no medium", "input 'volume' (fog.volume) comes from a culled pass", …
+// "scene has no medium", "scene has no medium or clouds", "input 'volume' (fog.volume) comes from a culled pass", …
 std::string cull_detail(const Graph& graph, const CulledPass& culled);
 
 struct Lifetime {

@@ -29,4 +29,14 @@ std::string features_text(SceneFeatures features, std::string_view none) {
   return out.empty() ? std::string(none) : out;
 }
 
+std::string features_or_text(SceneFeatures features) {
+  std::string out;
+  for (size_t i = 0; i < kNames.size(); ++i) {
+    if (!(features & (1u << i))) continue;
+    if (!out.empty()) out += " or ";
+    out += kNames[i];
+  }
+  return out;
+}
+
 }  // namespace volgraph

@@ -27,6 +27,14 @@ std::string_view feature_name(SceneFeature f);
 std::optional<SceneFeature> feature_from_name(std::string_view name);
 // "medium, clouds" for the bits set; `none` when there are none.
 std::string features_text(SceneFeatures features, std::string_view none = "nothing");
+// "medium or clouds": the alternatives of a pass's needs_any.
+std::string features_or_text(SceneFeatures features);
+
+// A pass runs when the scene has every feature of `needs` and, when `needs_any` is not
+// empty, at least one of `needs_any` (fog_apply: a medium or clouds to composite).
+constexpr bool needs_hold(SceneFeatures needs, SceneFeatures needs_any, SceneFeatures scene) {
+  return (needs & ~scene) == 0 && (needs_any == 0 || (needs_any & scene) != 0);
+}
 
 // The parts of a scene a pass's result may depend on (its cache key, PassDecl::reads_scene).
 // `atmosphere`: the planet's atmosphere and its sun light's direction and irradiance (not

@@ -115,6 +115,7 @@ int print_passes(const PassRegistry& registry) {
       }
       std::cout << "\n";
     }
+    if (d->needs_any) std::cout << "  needs: " << features_or_text(d->needs_any) << "\n";
   }
   return kOk;
 }

@@ -20,10 +20,19 @@ std::string_view placement_method_name(PlacementMethod method) {
   return "?";
 }
 
+namespace {
+// "medium", "medium or clouds", "atmosphere; medium or clouds": all of needs, then needs_any.
+std::string missing_text(const CulledPass& culled) {
+  if (!culled.missing_any) return features_text(culled.missing);
+  if (!culled.missing) return features_or_text(culled.missing_any);
+  return features_text(culled.missing) + "; " + features_or_text(culled.missing_any);
+}
+}  // namespace
+
 std::string cull_detail(const Graph& graph, const CulledPass& culled) {
   switch (culled.reason) {
     case CullReason::scene_lacks:
-      return "scene has no " + features_text(culled.missing);
+      return "scene has no " + missing_text(culled);
     case CullReason::input_culled: {
       const GraphPass& pass = graph.passes[culled.pass];
       std::string resource;

@@ -8,6 +8,7 @@ FlatGraph flatten(const Graph& graph) {
   f.use_begin.reserve(graph.passes.size() + 1);
   f.pass_kind.reserve(graph.passes.size());
   f.pass_needs.reserve(graph.passes.size());
+  f.pass_needs_any.reserve(graph.passes.size());
   f.use_begin.push_back(0);
   size_t uses = 0;
   for (const GraphPass& p : graph.passes) uses += p.uses.size();
@@ -17,6 +18,7 @@ FlatGraph flatten(const Graph& graph) {
     f.use_begin.push_back(uint32_t(f.uses.size()));
     f.pass_kind.push_back(p.kind);
     f.pass_needs.push_back(p.needs);
+    f.pass_needs_any.push_back(p.needs_any);
   }
   f.version_begin.reserve(graph.resources.size() + 1);
   f.resource_kind.reserve(graph.resources.size());

@@ -128,9 +128,10 @@ std::vector<uint8_t> cull_for_needs(const FlatGraph& g, const std::vector<uint32
   const Graph& graph = *g.graph;
   std::vector<uint8_t> dead(g.pass_count(), 0);
   for (uint32_t p : order) {
-    if (const SceneFeatures missing = g.pass_needs[p] & ~graph.scene) {
+    if (!needs_hold(g.pass_needs[p], g.pass_needs_any[p], graph.scene)) {
       dead[p] = 1;
-      culled.push_back({p, CullReason::scene_lacks, missing, 0});
+      const SceneFeatures missing_any = (g.pass_needs_any[p] & graph.scene) ? 0 : g.pass_needs_any[p];
+      culled.push_back({p, CullReason::scene_lacks, g.pass_needs[p] & ~graph.scene, 0, missing_any});
     }
     for (uint32_t k = g.use_begin[p]; k < g.use_begin[p + 1] && !dead[p]; ++k) {
       const ResourceUse& u = g.uses[k];

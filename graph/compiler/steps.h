@@ -16,7 +16,8 @@ struct FlatGraph {
   std::vector<uint32_t> version_begin;   // per resource + 1: its versions' writers in version_writer
   std::vector<uint32_t> version_writer;  // the pass that made each version
   std::vector<PassKind> pass_kind;       // per pass
-  std::vector<SceneFeatures> pass_needs;  // per pass
+  std::vector<SceneFeatures> pass_needs;      // per pass
+  std::vector<SceneFeatures> pass_needs_any;  // per pass: at least one of these (0: no condition)
   std::vector<ResourceKind> resource_kind;  // per resource
 
   uint32_t pass_count() const { return uint32_t(use_begin.size() - 1); }

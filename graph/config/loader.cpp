@@ -445,7 +445,7 @@ class Wiring {
   // (its scene needs hold); a problem points at the parameter when it names one.
   void check_against_scene(uint32_t p) {
     const PassDecl& decl = *decls_[p];
-    if (!decl.check_scene || (decl.needs & ~config_.scene.features())) return;
+    if (!decl.check_scene || !needs_hold(decl.needs, decl.needs_any, config_.scene.features())) return;
     const PassNode& node = config_.passes[p];
     for (const ParamProblem& problem : decl.check_scene(decl, config_.scene, params_[p])) {
       if (problem.where) {

@@ -24,7 +24,8 @@ struct FogApplyTable : PassTable {
   FogApplyTable()
       : PassTable("fog_apply", PassKind::graphics,
                   "Applies a per-pixel fog technique's in-scattering and transmittance images to the scene's colour.") {
-    decl.needs = feature_bit(SceneFeature::medium);
+    // It composites cloud_march's images too, so a scene with clouds and no medium keeps it.
+    decl.needs_any = feature_bit(SceneFeature::medium) | feature_bit(SceneFeature::clouds);
   }
   // Variants: how the images are read at each pixel (the first is the default).
   VariantHandle bilinear = variant("bilinear", "the images read bilinearly at each pixel's centre (upsamples a lower resolution)");

@@ -22,7 +22,11 @@ namespace pixel_temporal_shader = shaders::pixel_temporal_comp;
 struct PixelTemporalTable : fog::TemporalTable {
   PixelTemporalTable()
       : TemporalTable("pixel_temporal",
-                      "Temporal accumulation of a per-pixel fog technique's images: reprojected by the scene's depth, blended with this frame's.") {}
+                      "Temporal accumulation of a per-pixel fog technique's images: reprojected by the scene's depth, blended with this frame's.") {
+    // It averages cloud_march's jitter too, so a scene with clouds and no medium keeps it.
+    decl.needs = 0;
+    decl.needs_any = feature_bit(SceneFeature::medium) | feature_bit(SceneFeature::clouds);
+  }
   VariantHandle reprojected =
       variant("reprojected", "the last frame's results read bilinearly where the last frame's camera saw each texel's point");
   // Slots (the parameters are TemporalTable's).

@@ -319,7 +319,8 @@ bool Checker::model_culling() {
 
   for (uint32_t p : topo_) {
     const GraphPass& pass = g_.passes[p];
-    if ((pass.needs & ~g_.scene) != 0) {
+    const bool lacks_any = pass.needs_any != 0 && (pass.needs_any & g_.scene) == 0;
+    if ((pass.needs & ~g_.scene) != 0 || lacks_any) {
       need_failed_[p] = true;
       need_culled_[p] = true;
       reason_[p] = CullReason::scene_lacks;

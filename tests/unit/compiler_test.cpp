@@ -259,6 +259,38 @@ TEST(Compiler, NoAliasGivesEveryResourceItsOwnBytes) {
   EXPECT_EQ(plan.memory.aliased_bytes, plan.memory.unaliased_bytes);
 }
 
+// needs_any: a pass culled only when the scene has none of its features (fog_apply
+// composites a medium's images or the clouds', either suffices).
+TEST(Compiler, NeedsAnyCullsOnlyWhenNoneOfItsFeaturesIsPresent) {
+  Decls d;
+  PassDecl apply = make_decl("apply", PassKind::graphics, {slot_inout("color", k2D, Usage::color_attachment_load, "")});
+  apply.needs_any = feature_bit(SceneFeature::medium) | feature_bit(SceneFeature::clouds);
+  const auto plan_for = [&](SceneFeatures scene) {
+    GraphBuilder b({64, 64, 1}, scene);
+    const uint32_t draw = b.add_pass("draw", d.draw);
+    const uint32_t a = b.add_pass("apply", apply);
+    const uint32_t tonemap = b.add_pass("tonemap", d.tonemap);
+    const auto color = b.create(draw, 0, resolve_slot(d.draw, d.draw.slots[0], {64, 64, 1}, 0));
+    b.read(tonemap, 0, b.modify(a, 0, color));
+    b.mark_output(b.create(tonemap, 1, resolve_slot(d.tonemap, d.tonemap.slots[1], {64, 64, 1}, 0)));
+    Graph g = b.finish();
+    Plan p = compile(g);
+    return std::pair{std::move(g), std::move(p)};
+  };
+  const std::vector<std::string> kept = {"draw", "apply", "tonemap"};
+  for (const SceneFeatures scene : {feature_bit(SceneFeature::medium), feature_bit(SceneFeature::clouds),
+                                    feature_bit(SceneFeature::medium) | feature_bit(SceneFeature::clouds)}) {
+    const auto [g, plan] = plan_for(scene | feature_bit(SceneFeature::lights));
+    EXPECT_EQ(order_names(g, plan), kept) << features_text(scene);
+    EXPECT_TRUE(plan.culled.empty()) << features_text(scene);
+  }
+  const auto [g, plan] = plan_for(feature_bit(SceneFeature::lights) | feature_bit(SceneFeature::atmosphere));
+  EXPECT_EQ(order_names(g, plan), (std::vector<std::string>{"draw", "tonemap"}));
+  ASSERT_EQ(plan.culled.size(), 1u);
+  EXPECT_EQ(plan.culled[0].reason, CullReason::scene_lacks);
+  EXPECT_EQ(cull_detail(g, plan.culled[0]), "scene has no medium or clouds");
+}
+
 // The shipped configs, through the loader.
 class ShippedConfigs : public ::testing::Test {
  protected:
@@ -277,6 +309,17 @@ TEST_F(ShippedConfigs, PointLightsCullTheShadowMapAndLeaveItsInputsUnbound) {
   for (uint32_t r = 0; r < c.graph.resources.size(); ++r) {
     if (c.graph.resources[r].desc.name.rfind("sun_shadow.", 0) == 0) EXPECT_EQ(plan.lifetimes[r].first, kNone);
   }
+}
+
+// demo_clouds has clouds and no medium: fog_apply and pixel_temporal (needs: medium or
+// clouds) still composite and average cloud_march's images.
+TEST_F(ShippedConfigs, CloudsWithoutAMediumKeepFogApplyAndPixelTemporal) {
+  const LoadedConfig c = load("demo_clouds.json");
+  EXPECT_EQ(c.config.scene.features() & feature_bit(SceneFeature::medium), 0u) << "demo_clouds carries a medium again";
+  const Plan plan = compile_loaded(c);
+  EXPECT_TRUE(plan.culled.empty()) << cull_detail(c.graph, plan.culled[0]);
+  EXPECT_EQ(order_names(c.graph, plan),
+            (std::vector<std::string>{"lit", "noise", "clouds", "clouds_temporal", "apply", "final"}));
 }
 
 TEST_F(ShippedConfigs, UnusedUtilityPassesAreCulledAndAliasingSavesMemory) {

@@ -26,7 +26,7 @@ std::string graph_differences(const Graph& a, const Graph& b) {
   for (size_t p = 0; p < a.passes.size(); ++p) {
     const GraphPass& x = a.passes[p];
     const GraphPass& y = b.passes[p];
-    note(x.name == y.name && x.decl == y.decl && x.variant == y.variant && x.kind == y.kind && x.needs == y.needs,
+    note(x.name == y.name && x.decl == y.decl && x.variant == y.variant && x.kind == y.kind && x.needs == y.needs && x.needs_any == y.needs_any,
          "pass " + std::to_string(p) + " header");
     bool same_uses = x.uses.size() == y.uses.size();
     for (size_t k = 0; same_uses && k < x.uses.size(); ++k) {
