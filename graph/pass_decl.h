@@ -266,6 +266,13 @@ const T& param_in(const std::vector<ParamValue>& values, ParamHandle<T> handle) 
   return std::get<T>(values.at(handle.index));
 }
 
+// The name a handle's parameter is declared with, for a scene check's ParamProblem::param
+// (so the problem names the parameter the check read, never a second spelling of it).
+template <typename T>
+const std::string& param_name(const PassDecl& decl, ParamHandle<T> handle) {
+  return decl.params.at(handle.index).name;
+}
+
 std::string_view pass_kind_name(PassKind kind);
 std::string_view param_type_name(ParamType type);
 std::string param_value_text(const ParamValue& value);

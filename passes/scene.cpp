@@ -130,14 +130,14 @@ class SceneExecution final : public PassExecution {
     program_ = plumbing::create_render_program(s.device, pd, "scene.vert", fragment_shader());
     // The blocks it fills (the frame every frame; the objects' in SceneGeometry) and the
     // shadow map's view it reads match the shaders'.
-    plumbing::check_uniform_mirror<GpuSceneFrame>(program_, scene_vert_shader::frame, "scene frame");
+    plumbing::check_wrapped_uniform_mirror<gpu::SceneFrame>(program_, scene_vert_shader::frame, "scene frame");
     if (shadowed_) plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, scene_shadow_shader::shadow, s.name() + " light_view");
-    frame_ = s.device.create_buffer({"scene frame", sizeof(GpuSceneFrame), buffer_usage::uniform | buffer_usage::copy_dst});
+    frame_ = s.device.create_buffer({"scene frame", sizeof(gpu::SceneFrame), buffer_usage::uniform | buffer_usage::copy_dst});
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, program_);
   }
 
   void record(PassContext& c) override {
-    const GpuSceneFrame f = frame_of(c);
+    const gpu::SceneFrame f = frame_of(c);
     const auto bytes = std::as_bytes(std::span(&f, 1));
     c.device.write_buffer(frame_, 0, bytes);                // for this pass's shaders
     c.encoder.update_buffer(c.buffer(t_.frame), 0, bytes);  // for the passes after it
@@ -176,10 +176,10 @@ class SceneExecution final : public PassExecution {
     return translucent_shadowed_ ? "scene_translucent_shadowed.frag" : "scene_shadowed.frag";
   }
 
-  GpuSceneFrame frame_of(PassContext& c) {
+  gpu::SceneFrame frame_of(PassContext& c) {
     const Scene& scene = *c.scene;
     const Extent size = c.extent(t_.color);
-    GpuSceneFrame f{};
+    gpu::SceneFrame f{};
     physics::to_floats(physics::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
     // A surface facing any way receives π times the sky's isotropic radiance.
     const std::array<double, 3>& ambient = c.param(t_.ambient);

@@ -392,16 +392,16 @@ std::optional<Atmosphere> atmosphere_preset(const std::string& name) {
 
 namespace {
 
-void pack_vec3(const Vec3& v, float out[4], float w = 0) {
+void pack_vec3(const Vec3& v, gpu::vec4& out, float w = 0) {
   for (int i = 0; i < 3; ++i) out[i] = float(v[size_t(i)]);
   out[3] = w;
 }
 
-GpuAtmosphereLayer pack_layer(const DensityLayer& layer) {
+gpu::AtmosphereLayer pack_layer(const DensityLayer& layer) {
   return {{float(layer.exp_term), float(layer.exp_scale), float(layer.linear_term), float(layer.constant_term)}};
 }
 
-GpuAtmosphereProfile pack_profile(const DensityProfile& profile) {
+gpu::AtmosphereProfile pack_profile(const DensityProfile& profile) {
   return {pack_layer(profile.lower), pack_layer(profile.upper), {float(profile.lower.width), 0, 0, 0}};
 }
 

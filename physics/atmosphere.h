@@ -18,6 +18,7 @@
 #include <string>
 
 #include "graph/scene/scene.h"
+#include "shaders/include/atmosphere_parameters.h"
 
 namespace volgraph::physics {
 
@@ -148,35 +149,8 @@ double mu_horizon(const Atmosphere& atmosphere, double r);
 // The preset `name` ("earth", "mars"), or nullopt for an unknown name.
 std::optional<Atmosphere> atmosphere_preset(const std::string& name);
 
-// std140/std430 mirror of atmosphere.glsl's AtmosphereParameters (all vec4s, 240 bytes);
-// each lists its members' offsets (offsets(): passes/plumbing/programs.h) for the uniform
-// mirror checks of the passes that declare it. Its layout is exercised member by member
-// by tests/gpu/atmosphere_twins_test.cpp.
-struct GpuAtmosphereLayer {
-  float terms[4];  // exp_term, exp_scale, linear_term, constant_term
-  static constexpr std::array<uint64_t, 1> offsets() { return {offsetof(GpuAtmosphereLayer, terms)}; }
-};
-struct GpuAtmosphereProfile {
-  GpuAtmosphereLayer lower, upper;
-  float width[4];  // x: the lower layer's width (m)
-  static constexpr std::array<uint64_t, 3> offsets() {
-    return {offsetof(GpuAtmosphereProfile, lower), offsetof(GpuAtmosphereProfile, upper), offsetof(GpuAtmosphereProfile, width)};
-  }
-};
-struct GpuAtmosphere {
-  float radii[4];                  // bottom, top (m), sun angular radius (rad), Mie g
-  float rayleigh_scattering[4];    // 1/m
-  float mie_scattering[4];         // 1/m; w: the Mie phase (kMiePhaseHenyeyGreenstein, kMiePhaseCornetteShanks)
-  float mie_extinction[4];         // 1/m
-  float absorption_extinction[4];  // 1/m
-  float ground_albedo[4];
-  GpuAtmosphereProfile rayleigh_density, mie_density, absorption_density;
-  static constexpr std::array<uint64_t, 9> offsets() {
-    return {offsetof(GpuAtmosphere, radii), offsetof(GpuAtmosphere, rayleigh_scattering), offsetof(GpuAtmosphere, mie_scattering),
-            offsetof(GpuAtmosphere, mie_extinction), offsetof(GpuAtmosphere, absorption_extinction), offsetof(GpuAtmosphere, ground_albedo),
-            offsetof(GpuAtmosphere, rayleigh_density), offsetof(GpuAtmosphere, mie_density), offsetof(GpuAtmosphere, absorption_density)};
-  }
-};
+// The atmosphere's uniform block: written once for GLSL and C++ (shaders/include/atmosphere_parameters.h).
+using GpuAtmosphere = gpu::AtmosphereParameters;
 static_assert(sizeof(GpuAtmosphere) == 240);
 constexpr float kMiePhaseHenyeyGreenstein = 0, kMiePhaseCornetteShanks = 1;
 GpuAtmosphere pack_atmosphere(const Atmosphere& atmosphere);

@@ -43,18 +43,7 @@ namespace bruneton_multiple_scattering_shader = shaders::atmosphere_bruneton_mul
 
 constexpr int kMaxOrders = 8;
 
-std::vector<ParamProblem> check_table_shape(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& values) {
-  const int64_t nu = std::get<int64_t>(values.at(size_t(decl.param_index("nu"))));
-  const int64_t nu_mu_s = std::get<int64_t>(values.at(size_t(decl.param_index("nu_mu_s"))));
-  const int64_t mu = std::get<int64_t>(values.at(size_t(decl.param_index("mu"))));
-  std::vector<ParamProblem> problems;
-  if (nu_mu_s % nu != 0 || nu_mu_s / nu < 2) {
-    problems.push_back({"nu_mu_s", "must be a multiple of nu (" + std::to_string(nu) + ") holding at least 2 mu_s texels per nu slice; got " +
-                                       std::to_string(nu_mu_s)});
-  }
-  if (mu % 2 != 0) problems.push_back({"mu", "must be even (half the texels below the horizon, half above); got " + std::to_string(mu)});
-  return problems;
-}
+std::vector<ParamProblem> check_table_shape(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& values);
 
 struct BrunetonTablesTable : PassTable {
   BrunetonTablesTable()
@@ -150,6 +139,24 @@ struct BrunetonTablesTable : PassTable {
     return steps;
   }
 };
+
+// The tables' shape (Bruneton 2017's 4D-in-3D packing), read through the table's handles
+// so a misspelt parameter does not compile.
+std::vector<ParamProblem> check_table_shape(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& values) {
+  static const BrunetonTablesTable table;
+  const int64_t nu = param_in(values, table.nu);
+  const int64_t nu_mu_s = param_in(values, table.nu_mu_s);
+  const int64_t mu = param_in(values, table.mu);
+  std::vector<ParamProblem> problems;
+  if (nu_mu_s % nu != 0 || nu_mu_s / nu < 2) {
+    problems.push_back({param_name(decl, table.nu_mu_s), "must be a multiple of nu (" + std::to_string(nu) +
+                                                             ") holding at least 2 mu_s texels per nu slice; got " + std::to_string(nu_mu_s)});
+  }
+  if (mu % 2 != 0) {
+    problems.push_back({param_name(decl, table.mu), "must be even (half the texels below the horizon, half above); got " + std::to_string(mu)});
+  }
+  return problems;
+}
 
 class BrunetonTablesExecution final : public PassExecution {
  public:

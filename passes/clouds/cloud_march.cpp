@@ -34,16 +34,7 @@ namespace cloud_march_shader = shaders::cloud_march_comp;
 constexpr double kEarthRadius = 6360e3;  // m: the planet without an atmosphere (DESIGN.md's units)
 constexpr double kFramesPerSecond = 60;  // the wind's clock: the graph has frames, not seconds
 
-// Wrenninge et al. 2013's energy condition a ≤ b (RTR4 14.4.2): refused with one message.
-std::vector<ParamProblem> octave_problems(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& params) {
-  const double a = std::get<double>(params[size_t(decl.param_index("a"))]);
-  const double b = std::get<double>(params[size_t(decl.param_index("b"))]);
-  if (a <= b) return {};
-  std::ostringstream message;
-  message << "a (" << a << ") must not exceed b (" << b
-          << "): the octaves' extinction scale above their energy scale breaks energy conservation (Wrenninge et al. 2013)";
-  return {{"a", message.str()}};
-}
+std::vector<ParamProblem> octave_problems(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& params);
 
 struct CloudMarchTable : PassTable {
   CloudMarchTable()
@@ -82,6 +73,19 @@ struct CloudMarchTable : PassTable {
   SlotHandle transmittance = output("transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
                                     SizeSpec::of_output(), "the transmittance through the layer in rgb (fog_apply's fog_transmittance)");
 };
+
+// Wrenninge et al. 2013's energy condition a ≤ b (RTR4 14.4.2): refused with one message.
+// The parameters are read through the table's handles, so a misspelt one does not compile.
+std::vector<ParamProblem> octave_problems(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& params) {
+  static const CloudMarchTable table;
+  const double a = param_in(params, table.a);
+  const double b = param_in(params, table.b);
+  if (a <= b) return {};
+  std::ostringstream message;
+  message << "a (" << a << ") must not exceed b (" << b
+          << "): the octaves' extinction scale above their energy scale breaks energy conservation (Wrenninge et al. 2013)";
+  return {{param_name(decl, table.a), message.str()}};
+}
 
 void copy4(gpu::vec4& to, const gpu::vec4& from) {
   for (int i = 0; i < 4; ++i) to[i] = from[i];

@@ -33,6 +33,7 @@
 #include "passes/register_pass.h"
 #include "passes/uniform_mirrors.h"
 #include "physics/camera.h"
+#include "shaders/include/translucency_params.h"
 #include "shaders/bindings/translucency_oit_revealage.frag.h"
 #include "shaders/bindings/translucency_refract.frag.h"
 
@@ -49,16 +50,6 @@ constexpr int64_t kMaxPeeledLayers = 16;
 // depth_peeling's two steps per layer.
 struct PeelSteps {
   StepHandle depth, shade;
-};
-
-// std140 mirror of translucent_surface.glsl's TranslucencyBlock.
-struct GpuTranslucencyBlock {
-  float camera[4];       // xyz position, w near (m)
-  float environment[4];  // rgb radiance the specular reflection sees, w far (m)
-  float options[4];      // x: 1 where a froxel volume is wired; y: 1 where an aerial-perspective volume is
-  static constexpr std::array<uint64_t, 3> offsets() {
-    return {offsetof(GpuTranslucencyBlock, camera), offsetof(GpuTranslucencyBlock, environment), offsetof(GpuTranslucencyBlock, options)};
-  }
 };
 
 // What a solid of IOR ≠ 1 shows behind it (the `refraction` choice).
@@ -241,11 +232,11 @@ class TranslucencyExecution final : public PassExecution {
     resolve_ = {resolve_program(s, color, BlendMode::multiply, "translucency_oit_revealage.frag"),
                 resolve_program(s, color, BlendMode::additive, "translucency_oit_radiance.frag")};
     namespace shader = translucency_surface_shader;
-    plumbing::check_uniform_mirror<GpuSceneFrame>(*like, shader::frame, s.name() + " frame (the scene pass's)");
+    plumbing::check_wrapped_uniform_mirror<gpu::SceneFrame>(*like, shader::frame, s.name() + " frame (the scene pass's)");
     plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(*like, shader::shadow, s.name() + " light_view");
     plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(*like, shader::fog, s.name() + " fog_frame");
     plumbing::check_wrapped_uniform_mirror<gpu::AerialLookup>(*like, shader::air, s.name() + " aerial_lookup");
-    block_ = plumbing::create_checked_uniform_block(s.device, *like, shader::translucency, s.name() + " translucency", GpuTranslucencyBlock{});
+    block_ = plumbing::create_shared_uniform_block(s.device, *like, shader::translucency, s.name() + " translucency", gpu::TranslucencyParams{});
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, *like);
     textures_ = std::make_unique<plumbing::TextureCache>(s.device);
     make_stand_ins(s);
@@ -294,7 +285,7 @@ class TranslucencyExecution final : public PassExecution {
 
   void write_block(PassContext& c) {
     const Scene& scene = *c.scene;
-    GpuTranslucencyBlock b{};
+    gpu::TranslucencyParams b{};
     for (size_t i = 0; i < 3; ++i) b.camera[i] = float(scene.camera.position[i]);
     b.camera[3] = float(scene.camera.near);
     // The environment the reflection sees: the background, or under an atmosphere the sky's mean radiance.

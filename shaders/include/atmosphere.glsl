@@ -11,26 +11,7 @@
 const float MIE_PHASE_HENYEY_GREENSTEIN = 0.0;
 const float MIE_PHASE_CORNETTE_SHANKS = 1.0;
 
-// exp_term · e^(exp_scale · h) + linear_term · h + constant_term (Bruneton 2017, DensityProfileLayer).
-struct AtmosphereLayer {
-  vec4 terms;  // exp_term, exp_scale, linear_term, constant_term
-};
-
-struct AtmosphereProfile {
-  AtmosphereLayer lower, upper;
-  vec4 width;  // x: the lower layer's width (m)
-};
-
-// Mirror: physics::GpuAtmosphere (pack_atmosphere).
-struct AtmosphereParameters {
-  vec4 radii;                  // bottom, top (m), sun angular radius (rad), Mie g
-  vec4 rayleigh_scattering;    // 1/m
-  vec4 mie_scattering;         // 1/m; w: MIE_PHASE_*
-  vec4 mie_extinction;         // 1/m
-  vec4 absorption_extinction;  // 1/m
-  vec4 ground_albedo;
-  AtmosphereProfile rayleigh_density, mie_density, absorption_density;
-};
+#include "atmosphere_parameters.h"  // AtmosphereLayer, AtmosphereProfile, AtmosphereParameters (physics::pack_atmosphere fills them)
 
 float atmosphere_bottom(AtmosphereParameters a) { return a.radii.x; }
 float atmosphere_top(AtmosphereParameters a) { return a.radii.y; }

@@ -17,12 +17,8 @@
 #include "translucency.glsl"
 #include "surface_point.glsl"
 
-layout(set = 0, binding = 1) uniform TranslucencyBlock {
-  vec4 camera;       // xyz: the camera's position; w: its near plane (m)
-  vec4 environment;  // rgb: the radiance the specular reflection sees; w: the far plane (m)
-  vec4 options;      // x: 1 where a froxel volume is wired; y: 1 where an aerial-perspective volume is;
-                     // z: 1 where solids refract what lies behind them (refracted_color)
-} translucency;
+#include "translucency_params.h"
+layout(set = 0, binding = 1) uniform TranslucencyBlock { TranslucencyParams translucency; };
 layout(set = 0, binding = 2) uniform texture2D scene_depth;  // the opaque surfaces'
 layout(set = 0, binding = 3) uniform texture2D back_depth;   // the solid translucent objects' back faces
 layout(set = 0, binding = 4) uniform sampler nearest;

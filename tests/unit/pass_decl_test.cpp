@@ -85,6 +85,19 @@ TEST(PassDecl, ASizeReadsTheParametersItsHandlesName) {
   EXPECT_TRUE(same(sized_extent("s.image", R"({ "scale": "quarter" })"), {16, 8, 1}));
 }
 
+// A scene check reads a parameter through its table's handle (param_in) and names it in
+// its problem by the same handle (param_name), never by a second spelling.
+TEST(PassDecl, AHandleReadsItsParameterAndNamesIt) {
+  const SizedTable table;
+  std::vector<ParamValue> values;
+  for (const ParamDecl& param : table.decl.params) values.push_back(param.default_value);
+  values[size_t(table.height.index)] = int64_t{12};
+  EXPECT_EQ(param_in(values, table.height), 12);
+  EXPECT_EQ(param_in(values, table.gain), 1.0);
+  EXPECT_EQ(param_name(table.decl, table.height), "height");
+  EXPECT_EQ(param_name(table.decl, table.scale.text), "scale");
+}
+
 // Registers `decl` in a registry of its own: whether it is refused.
 bool refused_at_registration(const PassDecl& decl) {
   PassRegistry registry;

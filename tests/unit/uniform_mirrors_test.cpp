@@ -1,13 +1,13 @@
-// Every C++ mirror of a GLSL uniform block or struct (offsets() lists its members:
-// passes/plumbing/programs.h) against the SPIR-V of the shaders that declare it, no GPU
-// needed:
-// - the passes' own blocks, whose members are the mirror's (plumbing::check_uniform_mirror,
-//   as the passes check them at setup, on the blocks reflection reports);
-// - the blocks that hold one struct (`uniform Frame { FogFrame f; } frame;`:
-//   plumbing::check_wrapped_uniform_mirror — reflection sees one member, so the size);
-// - the structs inside them (FogFrame, ViewRays, LightList, MediaField, ShadowView, …),
-//   member by member, from the Offset decorations of their SPIR-V type read here;
-// and mirrors with a member moved, which must fail naming it.
+// The checks behind the uniform blocks, against the SPIR-V of the shaders, no GPU needed.
+// No hand-written C++ mirror of a GLSL block or struct is left: every one is written once
+// for GLSL and C++ (GPU_STRUCT under shaders/include/, gpu_struct.h), its members asserted
+// at compile time against each shader. What is checked here:
+// - the blocks that hold one shared struct (`uniform SceneFrameBlock { SceneFrame frame; };`):
+//   plumbing::check_wrapped_uniform_mirror, as the passes check them at setup — reflection
+//   sees one member, so the size;
+// - the SPIR-V struct reader against reflection;
+// - structs with a member moved, and a block of another size, which must fail naming it
+//   (rhi::check_uniform_block, which every check uses).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,6 +32,8 @@
 #include "passes/plumbing/scene_geometry.h"
 #include "passes/plumbing/shadow_view.h"
 #include "passes/uniform_mirrors.h"
+#include "shaders/include/scene_frame.h"
+#include "shaders/include/translucency_params.h"
 #include "physics/atmosphere.h"
 #include "physics/media_field.h"
 #include "shaders/shader_library.h"
@@ -68,12 +70,6 @@ std::string error_of(Check check) {
     return error.what();
   }
   return "";
-}
-
-// Block's members are the block's (set, binding) in `shader`.
-template <typename Block>
-std::string mirror_error(std::string_view shader, uint32_t set, uint32_t binding, std::string_view name) {
-  return error_of([&] { plumbing::check_uniform_mirror<Block>(reflected(shader), set, binding, name); });
 }
 
 // The block at (set, binding) in `shader` holds one Block.
@@ -201,17 +197,22 @@ std::vector<std::string> nested_errors(std::string_view glsl, std::string_view n
     EXPECT_GT(matched, 0) << "no shader declares " << glsl << " in a block";  \
   } while (false)
 
-// ---- The passes' own blocks: the block's members are the mirror's ----------------------
+// ---- Blocks holding one shared struct ---------------------------------------------------
 
-// (The blocks whose struct is written once for GLSL and C++, shaders/include/gpu_struct.h,
-// are checked at compile time where each shader's bindings header is included.)
-TEST(UniformMirrors, PassBlocksMatchTheirShaders) {
-  for (const char* shader : {"scene.vert", "scene.frag", "scene_shadowed.frag", "scene_media_shadowed.frag"}) {
-    EXPECT_EQ(mirror_error<GpuSceneFrame>(shader, 0, 0, "GpuSceneFrame"), "") << shader;
+// The scene pass's frame, and the translucency pass's surfaces that bind the same buffer.
+TEST(UniformMirrors, SceneFrameBlocksMatch) {
+  for (const char* shader : {"scene.vert", "scene.frag", "scene_shadowed.frag", "scene_media_shadowed.frag",
+                             "scene_translucent_shadowed.frag", "scene_media_translucent_shadowed.frag", "translucency_refract.frag"}) {
+    EXPECT_EQ(wrapped_error<gpu::SceneFrame>(shader, 0, 0, "gpu::SceneFrame"), "") << shader;
   }
 }
 
-// ---- Blocks holding one shared struct ---------------------------------------------------
+TEST(UniformMirrors, TranslucencyBlocksMatch) {
+  for (const char* shader : {"translucency_refract.frag", "translucency_transmittance.frag", "translucency_radiance.frag",
+                             "translucency_accumulate.frag"}) {
+    EXPECT_EQ(wrapped_error<gpu::TranslucencyParams>(shader, 0, 1, "gpu::TranslucencyParams"), "") << shader;
+  }
+}
 
 TEST(UniformMirrors, FogFrameBlocksMatch) {
   struct At {
@@ -259,24 +260,21 @@ TEST(UniformMirrors, ShadowViewBlocksMatch) {
   }
 }
 
-// ---- The structs inside blocks, member by member ----------------------------------------
-
-TEST(UniformMirrors, NestedStructsMatchTheirGlsl) {
-}
-
 // The reader agrees with reflection where both see a struct: FogFrame is Frame's only
-// member, LightList one of the scene frame's.
+// member, SceneFrame SceneFrameBlock's; and LightList is as the scene frame holds it.
 TEST(UniformMirrors, NestedLayoutsAgreeWithReflection) {
   const rhi::UniformBlockLayout frame = plumbing::uniform_block_at(reflected("froxel_voxelize.comp").uniform_blocks, 0, 0);
   EXPECT_EQ(SpirvStructs(spirv("froxel_voxelize.comp")).laid_out("FogFrame")->size, frame.members.at(0).size);
   const rhi::UniformBlockLayout scene = plumbing::uniform_block_at(reflected("scene.frag").uniform_blocks, 0, 0);
-  EXPECT_EQ(SpirvStructs(spirv("scene.frag")).laid_out("LightList")->size, scene.members.at(2).size);
+  const SpirvStructs scene_structs(spirv("scene.frag"));
+  EXPECT_EQ(scene_structs.laid_out("SceneFrame")->size, scene.members.at(0).size);
+  EXPECT_EQ(scene_structs.laid_out("LightList")->size, scene_structs.laid_out("SceneFrame")->members.at(2).size);
   EXPECT_FALSE(SpirvStructs(spirv("composite.comp")).laid_out("FogFrame"));
 }
 
 // ---- Deliberate mismatches --------------------------------------------------------------
 
-// GpuSceneFrame with its ambient irradiance moved after the lights.
+// gpu::SceneFrame with its ambient irradiance moved after the lights.
 struct MovedAmbientSceneFrame {
   float view_projection[16];
   gpu::LightList light_list;
@@ -287,7 +285,7 @@ struct MovedAmbientSceneFrame {
             offsetof(MovedAmbientSceneFrame, light_list), offsetof(MovedAmbientSceneFrame, media)};
   }
 };
-static_assert(sizeof(MovedAmbientSceneFrame) == sizeof(GpuSceneFrame));
+static_assert(sizeof(MovedAmbientSceneFrame) == sizeof(gpu::SceneFrame));
 
 // GpuMediumVolume with its fade and noise swapped.
 struct SwappedMediumVolume {
@@ -303,10 +301,13 @@ struct SwappedMediumVolume {
 };
 
 TEST(UniformMirrors, MovedMemberFailsNamingIt) {
-  EXPECT_EQ(mirror_error<MovedAmbientSceneFrame>("scene.frag", 0, 0, "MovedAmbientSceneFrame"),
-            "host struct MovedAmbientSceneFrame does not match uniform block Frame (set 0, binding 0): member 1 "
-            "(ambient_irradiance, 16 bytes) is at offset 64 in the block, 848 in the host struct");
+  // Against the SceneFrame struct as scene.frag lays it out (its block holds one SceneFrame).
   int matched = 0;
+  const std::vector<std::string> scene_errors = nested_errors<MovedAmbientSceneFrame>("SceneFrame", "MovedAmbientSceneFrame", matched);
+  EXPECT_EQ(matched, 0);
+  const std::string scene = "scene.frag: host struct MovedAmbientSceneFrame does not match uniform block SceneFrame (set 0, binding 0): "
+                            "member 1 (ambient_irradiance, 16 bytes) is at offset 64 in the block, 848 in the host struct";
+  EXPECT_NE(std::find(scene_errors.begin(), scene_errors.end(), scene), scene_errors.end()) << scene_errors.at(0);
   const std::vector<std::string> errors = nested_errors<SwappedMediumVolume>("MediumVolume", "SwappedMediumVolume", matched);
   EXPECT_EQ(matched, 0);
   ASSERT_FALSE(errors.empty());

@@ -1,0 +1,15 @@
+// The translucency pass's own block (passes/translucency/translucency.cpp writes it each frame), one text for GLSL and C++ (gpu_struct.h).
+#ifndef VOLGRAPH_TRANSLUCENCY_PARAMS_H
+#define VOLGRAPH_TRANSLUCENCY_PARAMS_H
+#include "gpu_struct.h"
+
+GPU_BEGIN
+GPU_STRUCT(TranslucencyParams) {
+  vec4 camera;       // xyz: the camera's position; w: its near plane (m)
+  vec4 environment;  // rgb: the radiance the specular reflection sees; w: the far plane (m)
+  vec4 options;      // x: 1 where a froxel volume is wired; y: 1 where an aerial-perspective volume is;
+                     // z: 1 where solids refract what lies behind them (refracted_color)
+};
+GPU_END
+
+#endif  // VOLGRAPH_TRANSLUCENCY_PARAMS_H
