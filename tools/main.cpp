@@ -29,6 +29,7 @@
 #include "tools/simulated_fault.h"
 #include "tools/webgpu_backend.h"
 #include "graph/plan_report.h"
+#include "graph/probe.h"
 #include "graph/pooling.h"
 #include "graph/rhi/device_error.h"
 #include "graph/rhi/vulkan/context.h"
@@ -177,26 +178,6 @@ struct Dump {
   std::string file;
 };
 
-// --dump PASS.SLOT=FILE: the resource that slot holds at the end of the pass, kept alive
-// to the end of the frame (a graph output) so that no aliasing overwrites it first.
-// The last use of slot `slot` by pass `pass`, or by any of its steps when its type has
-// steps (graph passes "pass/step", in step order): what the pass leaves in it.
-// Throws ConfigError (at `where`) when no pass has that name.
-const ResourceUse* last_use_of(const Graph& graph, const std::string& pass, const std::string& slot, const Where& where) {
-  const ResourceUse* last = nullptr;
-  bool named = false;
-  for (const GraphPass& g : graph.passes) {
-    if (g.name != pass && g.name.rfind(pass + "/", 0) != 0) continue;
-    named = true;
-    const int s = g.decl->slot_index(slot);
-    for (const ResourceUse& u : g.uses) {
-      if (int(u.slot) == s) last = &u;
-    }
-  }
-  if (!named) throw ConfigError({{where, "no pass named \"" + pass + "\""}});
-  return last;
-}
-
 std::vector<Dump> add_dumps(const std::vector<std::string>& requests, Graph& graph) {
   std::vector<Dump> dumps;
   for (const std::string& request : requests) {
@@ -204,23 +185,16 @@ std::vector<Dump> add_dumps(const std::vector<std::string>& requests, Graph& gra
     auto fail = [&](const std::string& message) { throw ConfigError({{where, message}}); };
     const size_t dot = request.find('.'), eq = request.find('=');
     if (dot == std::string::npos || eq == std::string::npos || eq < dot) fail("expected --dump PASS.SLOT=FILE");
-    const std::string pass = request.substr(0, dot), slot = request.substr(dot + 1, eq - dot - 1), file = request.substr(eq + 1);
-    const ResourceUse* use = last_use_of(graph, pass, slot, where);
-    if (!use) fail("pass \"" + pass + "\" has no bound slot \"" + slot + "\"");
-    const uint32_t version = use->direction == SlotDirection::inout ? use->version + 1 : use->version;
-    const GraphResource& r = graph.resources[use->resource];
-    if (version + 1 != r.version_writers.size()) {
-      fail(pass + "." + slot + " is modified later by pass \"" + graph.passes[r.version_writers[version + 1]].name +
-           "\"; dump that pass's slot");
-    }
-    const bool buffer = r.desc.kind == ResourceKind::buffer;
+    const std::string file = request.substr(eq + 1);
+    // --dump PASS.SLOT=FILE: what the pass leaves in the slot, kept to the end of the frame (graph/probe.h).
+    Graph probed = graph;
+    const uint32_t resource = probe_slot(probed, request, where);
+    const bool buffer = graph.resources[resource].desc.kind == ResourceKind::buffer;
     if (buffer ? file.size() < 4 || file.compare(file.size() - 4, 4, ".bin") != 0 : !image_format_for(file)) {
       fail(buffer ? "a buffer dumps to a .bin file" : "a texture dumps to a .png, .exr or .pfm file");
     }
-    if (std::find(graph.outputs.begin(), graph.outputs.end(), ResourceVersion{use->resource, version}) == graph.outputs.end()) {
-      graph.outputs.push_back({use->resource, version});
-    }
-    dumps.push_back({use->resource, file});
+    graph = std::move(probed);
+    dumps.push_back({resource, file});
   }
   return dumps;
 }

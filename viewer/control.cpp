@@ -104,7 +104,7 @@ namespace {
 
 // How many words each verb takes (param: at least three, the JSON value may hold spaces).
 size_t words_for(const std::string& verb) {
-  if (verb == "frames" || verb == "screenshot" || verb == "capture") return 1;
+  if (verb == "frames" || verb == "screenshot" || verb == "capture" || verb == "show" || verb == "exposure" || verb == "slice") return 1;
   if (verb == "variant") return 2;
   if (verb == "param" || verb == "ab") return 3;
   if (verb == "reload") return 0;
@@ -121,7 +121,7 @@ ScriptCommand parse_line(const std::string& path, int number, const std::string&
   in >> c.verb;
   const size_t expected = words_for(c.verb);
   if (expected == size_t(-1)) {
-    script_error(path, number, "unknown command \"" + c.verb + "\"; expected frames, variant, param, ab, reload, screenshot, capture, wait-change, camera or sun");
+    script_error(path, number, "unknown command \"" + c.verb + "\"; expected frames, variant, param, ab, reload, screenshot, capture, show, exposure, slice, wait-change, camera or sun");
   }
   std::string word;
   for (size_t i = 0; i < (c.verb == "param" ? 2 : expected) && in >> word; ++i) c.args.push_back(word);
@@ -133,12 +133,19 @@ ScriptCommand parse_line(const std::string& path, int number, const std::string&
     c.args.push_back(word);
   }
   if (c.args.size() != expected) {
-    script_error(path, number, c.verb + " takes " + std::to_string(expected) + " word(s): frames N | variant PASS VARIANT | param PASS NAME JSON | ab PASS A B | reload | screenshot FILE.png | capture PREFIX | wait-change | camera X Y Z TX TY TZ | sun AZ EL");
+    script_error(path, number, c.verb + " takes " + std::to_string(expected) + " word(s): frames N | variant PASS VARIANT | param PASS NAME JSON | ab PASS A B | reload | screenshot FILE.png | capture PREFIX | show PASS.SLOT | exposure EV | slice N | wait-change | camera X Y Z TX TY TZ | sun AZ EL");
   }
   if (c.verb == "frames") {
     const std::string& n = c.args[0];
     if (n.empty() || n.size() > 6 || n.find_first_not_of("0123456789") != std::string::npos || std::stoi(n) < 1) {
       script_error(path, number, "frames " + n + ": expected a whole number from 1 to 999999");
+    }
+  }
+  if (c.verb == "exposure" || c.verb == "slice") {
+    char* end = nullptr;
+    const double v = std::strtod(c.args[0].c_str(), &end);
+    if (end == c.args[0].c_str() || *end != '\0' || !std::isfinite(v) || (c.verb == "slice" && (v < 0 || v != std::floor(v) || v > 1e6))) {
+      script_error(path, number, c.verb + " " + c.args[0] + (c.verb == "slice" ? ": expected a whole number from 0" : ": expected a number"));
     }
   }
   if (c.verb == "camera" || c.verb == "sun") {

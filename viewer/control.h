@@ -51,7 +51,7 @@ class GraphSource {
 
 // One line of a --script file: a verb and its words.
 struct ScriptCommand {
-  std::string verb;               // frames, variant, param, reload, ab, screenshot, capture, wait-change, camera, sun
+  std::string verb;               // frames, variant, param, reload, ab, screenshot, capture, show, exposure, slice, wait-change, camera, sun
   std::vector<std::string> args;  // param: PASS NAME JSON (the JSON is the rest of the line)
   int line = 0;
 };

@@ -19,6 +19,7 @@
 
 #include "graph/execute/executor.h"
 #include "graph/plan_report.h"
+#include "graph/probe.h"
 #include "physics/srgb.h"
 #include "tools/image_io.h"
 #include "tools/output_files.h"
@@ -105,6 +106,29 @@ Extent framebuffer_extent(GLFWwindow* window) {
   return {uint32_t(std::max(w, 0)), uint32_t(std::max(h, 0)), 1};
 }
 
+// A texture as the resource view shows it: slice `slice` of a 3D one, scaled by 2^exposure,
+// sampled at the nearest texel for each of `size`'s pixels, sRGB-encoded to 8 bits, opaque;
+// NaN and infinities magenta, so a pass that leaks them shows where.
+std::vector<uint8_t> resource_view(const Texels& t, Extent size, int slice, double exposure) {
+  std::vector<uint8_t> out(size_t(size.width) * size.height * 4, 255);
+  if (t.width == 0 || t.height == 0) return out;
+  const size_t z = size_t(std::clamp(slice, 0, int(t.depth) - 1));
+  const float scale = float(std::exp2(exposure));
+  for (uint32_t y = 0; y < size.height; ++y) {
+    const size_t ty = size_t(y) * t.height / size.height;
+    for (uint32_t x = 0; x < size.width; ++x) {
+      const size_t tx = size_t(x) * t.width / size.width;
+      const float* texel = &t.rgba[((z * t.height + ty) * t.width + tx) * 4];
+      uint8_t* pixel = &out[(size_t(y) * size.width + x) * 4];
+      const bool finite = std::isfinite(texel[0]) && std::isfinite(texel[1]) && std::isfinite(texel[2]);
+      for (int c = 0; c < 3; ++c) {
+        pixel[c] = finite ? uint8_t(std::lround(physics::srgb_encode(texel[c] * scale) * 255.0f)) : (c == 1 ? 0 : 255);
+      }
+    }
+  }
+  return out;
+}
+
 // The frame's output as `render` writes it to a PNG (tools/image_io.cpp encode_png):
 // colour sRGB-encoded, alpha clamped, each rounded to 8 bits.
 std::vector<uint8_t> srgb8(const Texels& t) {
@@ -180,6 +204,32 @@ class Loop {
     ab_ = {pass, a, b};
     return applied(source_.toggle_ab(pass, a, b));
   }
+  // The resource view: "PASS.SLOT" (graph/probe.h, what `render --dump` reads) shown in
+  // place of the output, or "output" for the output again. A new executor keeps that
+  // version to the frame's end; a name the graph refuses keeps the current view.
+  std::string show(const std::string& name) {
+    const std::string next = name == "output" ? "" : name;
+    if (!next.empty()) {
+      Graph trial = source_.current().graph;
+      try {
+        probe_slot(trial, next, {"<view>", "show " + next, 0});
+      } catch (const ConfigError& e) {
+        return applied(e.what());
+      }
+    }
+    shown_ = next;
+    return applied("");
+  }
+  // The resource view's exposure (EV: the texels times 2^EV) and 3D slice.
+  void set_view_exposure(double ev) {
+    view_exposure_ = ev;
+    settled_ = std::min(settled_, kSettleFrames - 1);
+  }
+  void set_view_slice(int slice) {
+    view_slice_ = slice;
+    settled_ = std::min(settled_, kSettleFrames - 1);
+  }
+
   // The fly camera: the scene's camera moved in place (passes read the scene every frame;
   // their cache keys hash it), kept over reloads.
   void set_camera(const Vec3& position, const Vec3& target) {
@@ -280,6 +330,9 @@ class Loop {
     if (c.verb == "reload") reload();
     if (c.verb == "screenshot") screenshot(a[0]);
     if (c.verb == "capture") capture(a[0]);
+    if (c.verb == "show") show(a[0]);
+    if (c.verb == "exposure") set_view_exposure(std::stod(a[0]));
+    if (c.verb == "slice") set_view_slice(std::stoi(a[0]));
     if (c.verb == "camera" || c.verb == "sun") {
       std::vector<double> v;
       for (const std::string& w : a) v.push_back(std::stod(w));
@@ -397,6 +450,7 @@ class Loop {
     draw_times();
     draw_plan();
     draw_ab();
+    draw_resource_view();
     draw_sun();
     draw_passes();
     ImGui::End();
@@ -447,6 +501,25 @@ class Loop {
     if (ImGui::Button("toggle (Tab)")) events_.ab = true;
     ImGui::Text("A %s: %.3f ms   B %s: %.3f ms   (showing %s)", ab_.a.c_str(), ab_times_[ab_.a], ab_.b.c_str(), ab_times_[ab_.b],
                 now.c_str());
+  }
+
+  // Any texture a pass writes, shown in place of the output (3D ones by slice), with exposure.
+  void draw_resource_view() {
+    if (!ImGui::CollapsingHeader("Resources")) return;
+    const std::string current = shown_.empty() ? "output" : shown_;
+    if (ImGui::BeginCombo("show", current.c_str())) {
+      if (ImGui::Selectable("output", shown_.empty())) pending_ = [this] { show("output"); };
+      for (const std::string& name : probe_names_) {
+        if (ImGui::Selectable(name.c_str(), name == shown_)) pending_ = [this, name] { show(name); };
+      }
+      ImGui::EndCombo();
+    }
+    if (shown_.empty()) return;
+    ImGui::Text("%u x %u x %u", shown_size_.width, shown_size_.height, shown_size_.depth);
+    float ev = float(view_exposure_);
+    if (ImGui::SliderFloat("exposure", &ev, -16, 16, "%.1f EV")) set_view_exposure(ev);
+    int slice = view_slice_;
+    if (shown_size_.depth > 1 && ImGui::SliderInt("slice", &slice, 0, int(shown_size_.depth) - 1)) set_view_slice(slice);
   }
 
   void variant_combo(const char* label, const GraphPass& pass, std::string& chosen) {
@@ -575,7 +648,19 @@ class Loop {
       loaded.config.output_size = size;
       resize(loaded.graph, size);
     }
-    executor_ = std::make_unique<Executor>(backend_.device(), loaded.graph, &loaded.config.scene, options_.compile);
+    const Graph* graph = &loaded.graph;
+    probe_names_ = probe_names(loaded.graph);
+    if (!shown_.empty()) {
+      probed_graph_ = loaded.graph;
+      try {
+        shown_resource_ = probe_slot(probed_graph_, shown_, {"<view>", "show " + shown_, 0});
+        graph = &probed_graph_;
+      } catch (const ConfigError& e) {  // a reload took the pass or slot away: the output again
+        std::cerr << e.what() << "\n";
+        shown_.clear();
+      }
+    }
+    executor_ = std::make_unique<Executor>(backend_.device(), *graph, &loaded.config.scene, options_.compile);
     executor_->set_gpu_timing(overlay_shown_);  // time stamps only while the overlay shows the pass times
     settled_ = 0;
     frames_since_restart_ = 0;
@@ -597,7 +682,14 @@ class Loop {
     executor_->run_frame();
     ++frames_since_restart_;
     last_output_ = executor_->read_output(0);
-    const std::vector<uint8_t> texels = srgb8(last_output_);
+    std::vector<uint8_t> texels;
+    if (shown_.empty()) {
+      texels = srgb8(last_output_);
+    } else {
+      const Texels shown = executor_->read_texture(shown_resource_);
+      shown_size_ = {shown.width, shown.height, shown.depth};
+      texels = resource_view(shown, {last_output_.width, last_output_.height, 1}, view_slice_, view_exposure_);
+    }
     std::vector<uint8_t>* read_back = screenshot && backend_.readable() ? &shot_ : nullptr;
     const Overlay* drawn = nullptr;
     if (overlay_ && overlay_shown_) {
@@ -631,6 +723,13 @@ class Loop {
   int rendered_ = 0;
   int frames_since_restart_ = 0;  // frames of the current executor (a capture's --frames)
   Texels last_output_;            // the last frame's output, linear (for a capture)
+  std::string shown_;             // the resource view's PASS.SLOT ("" for the output)
+  uint32_t shown_resource_ = 0;   // its graph resource in probed_graph_
+  Extent shown_size_{};           // its size at the last frame
+  Graph probed_graph_;            // the graph with the shown slot kept to the frame's end (the executor's)
+  std::vector<std::string> probe_names_;  // what the view can show (graph/probe.h)
+  double view_exposure_ = 0;      // EV
+  int view_slice_ = 0;            // of a 3D texture
   int settled_ = 0;
   std::vector<uint8_t> shot_;  // the last presented image, for --screenshot
   Extent shot_extent_{};

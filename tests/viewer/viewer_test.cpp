@@ -380,6 +380,47 @@ TEST_P(ViewerOn, CaptureRendersTheSameImageHeadless) {
   expect_different(again, plain);
 }
 
+// The resource view (`show PASS.SLOT`, the overlay's "Resources"): a texture a pass writes,
+// shown in place of the output, is what `render --dump PASS.SLOT=FILE.png` writes.
+TEST_P(ViewerOn, ShownResourceEqualsItsDump) {
+  const std::filesystem::path dir = scratch() / ("show_" + GetParam()), script = dir / "script.txt";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path shown = dir / "shown.png", dumped = dir / "dumped.png";
+  std::ofstream(script) << "frames 1\nshow fog_apply.color\nframes 2\nscreenshot " << shown.string() << "\n";
+  const std::string common = config("demo_fog.json") + " --size 160x90" + backend();
+  const CommandRun view = volgraph("view " + common + " --no-overlay --script " + script.string());
+  ASSERT_EQ(view.exit_code, 0) << view.errors;
+  expect_clean(view);
+  ASSERT_EQ(volgraph("render " + common + " --frames 2 --dump fog_apply.color=" + dumped.string() + " -o " + (dir / "out.png").string()).exit_code, 0);
+  EXPECT_EQ(difference(shown, dumped).relative_mean_error, 0.0);
+  expect_different(shown, dir / "out.png");  // the view showed the slot, not the output
+}
+
+// A 3D resource is shown a slice at a time, scaled by 2^exposure; a name the graph does not
+// have is one message and the view stays as it was.
+TEST(Viewer, ResourceViewSlicesAndExposesA3DTexture) {
+  const std::filesystem::path dir = scratch() / "show_3d", script = dir / "script.txt";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  auto shot = [&](const std::string& name) { return (dir / (name + ".png")).string(); };
+  std::ofstream(script) << "show fog_integral.integrated_scattering\nslice 4\nexposure 2\nframes 1\nscreenshot " << shot("near") << "\n"
+                        << "slice 40\nframes 1\nscreenshot " << shot("far") << "\n"
+                        << "exposure 4\nframes 1\nscreenshot " << shot("brighter") << "\n"
+                        << "show nope.slot\nframes 1\nscreenshot " << shot("kept") << "\n";
+  const CommandRun view = volgraph("view " + config("demo_fog.json") + " --size 160x90 --validation --no-overlay --script " + script.string());
+  ASSERT_EQ(view.exit_code, 0) << view.errors;
+  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  EXPECT_EQ(count_of(view.errors, "no pass named \"nope\""), 1u) << view.errors;
+  expect_different(shot("near"), shot("far"));
+  int w = 0, h = 0;
+  double far_sum = 0, brighter_sum = 0;
+  for (const float v : png_texels(shot("far"), w, h)) far_sum += v;
+  for (const float v : png_texels(shot("brighter"), w, h)) brighter_sum += v;
+  EXPECT_GT(brighter_sum, far_sum * 1.1);
+  expect_golden_match(shot("kept"), shot("brighter"));  // the same slot a frame later (the fog's history moves on)
+}
+
 // WebGPU has no overlay (Debian's Dear ImGui has no renderer for its API revision): one
 // line says so, and the frame is still presented.
 TEST(Viewer, WebGpuSaysItHasNoOverlay) {
