@@ -209,6 +209,7 @@ void view_options(CLI::App& app, Args& args) {
   value_option(app, "--screenshot", [&](const std::string& v) { once(args.screenshot, "--screenshot", v); });
   value_option(app, "--script", [&](const std::string& v) { once(args.script, "--script", v); });
   flag(app, "--no-overlay", [&] { args.no_overlay = true; });
+  value_option(app, "--shaders", [&](const std::string& v) { once(args.shaders, "--shaders", v); });
 }
 
 void reference_options(CLI::App& app, Args& args) {

@@ -59,6 +59,7 @@ struct Args {
   int view_frames = 0;     // view --frames N (0: until the window closes)
   std::string script;      // view --script FILE: control commands run between frames (docs/viewer.md)
   bool no_overlay = false; // view --no-overlay: frames and screenshots without the overlay
+  std::string shaders;     // view --shaders DIR: the shader sources hot-reloaded ("": the build's shaders/)
   CompileOptions compile;
   Overrides overrides;
   CompareArgs compare;

@@ -401,6 +401,10 @@ int run_view(const Args& args, const PassRegistry& registry) {
   options.screenshot = args.screenshot;
   options.validation = args.validation;
   options.backend = args.backend;
+  if (!args.shaders.empty() && !std::filesystem::is_directory(args.shaders)) {
+    throw UsageError("--shaders " + args.shaders + ": expected a folder of shader sources (laid out as shaders/)");
+  }
+  options.shaders = args.shaders;
   options.overlay = !args.no_overlay;
   options.device = args.device;
   options.compile = args.compile;

@@ -25,6 +25,7 @@
 #include "tools/output_files.h"
 #include "viewer/capture.h"
 #include "viewer/overlay.h"
+#include "viewer/shader_watch.h"
 #include "viewer/window_backend.h"
 #include <iomanip>
 #include <optional>
@@ -185,7 +186,9 @@ class Loop {
   Loop(WindowBackend& backend, GLFWwindow* window, LoadedConfig loaded, const ViewOptions& options, WindowEvents& events)
       : backend_(backend), window_(window),
         source_(options.config, *options.registry, options.overrides, options.compile, std::move(loaded)),
-        options_(options), events_(events) {
+        options_(options), events_(events),
+        shaders_(options.shaders.empty() ? std::filesystem::path(VOLGRAPH_SHADER_SOURCE_DIR) : std::filesystem::path(options.shaders),
+                 VOLGRAPH_GLSLANG) {
     if (options.overlay) overlay_ = backend.make_overlay(window);
     if (options.overlay && !overlay_) std::cerr << "view: no overlay: " << backend.overlay_missing() << "\n";
     overlay_shown_ = overlay_ != nullptr;
@@ -616,11 +619,50 @@ class Loop {
     }
   }
 
-  // Hot reload: the config or an include changed on disk.
+  // Hot reload: the config or an include changed on disk; a shader source changed.
   void poll_files() {
-    if (!source_.files_changed()) return;
+    if (source_.files_changed()) {
+      ++disk_changes_;
+      reload();
+    }
+    poll_shaders();
+  }
+
+  // The shaders that changed (or include a file that did), compiled again and handed to
+  // the device: the graph is rebuilt with them. A compile error, or a graph the new
+  // shaders do not fit (bindings checked at setup), keeps the last good shaders and frame.
+  void poll_shaders() {
+    ShaderChanges changes = shaders_.poll();
+    if (!changes.any()) return;
     ++disk_changes_;
-    reload();
+    if (!changes.error.empty()) {
+      applied(changes.error);
+      return;
+    }
+    rhi::Device& device = backend_.device();
+    std::vector<std::pair<std::string, std::vector<uint32_t>>> before;
+    for (CompiledShader& c : changes.compiled) {
+      const std::span<const uint32_t> old = device.replaced_shader(c.name);
+      before.push_back({c.name, std::vector<uint32_t>(old.begin(), old.end())});
+      device.replace_shader(c.name, std::move(c.spirv));
+    }
+    try {
+      restart();
+      std::cerr << "view: shaders reloaded:";
+      for (const auto& [name, old] : before) std::cerr << " " << name;
+      std::cerr << "\n";
+      applied("");
+    } catch (const std::exception& e) {
+      for (auto& [name, old] : before) {
+        if (old.empty()) {
+          device.restore_shader(name);
+        } else {
+          device.replace_shader(name, std::move(old));
+        }
+      }
+      restart();
+      applied(std::string("view: the reloaded shaders do not fit the graph; the last good ones run on:\n") + e.what());
+    }
   }
 
   // After a change: the new graph runs, or the refusal is shown (title) and printed once.
@@ -711,6 +753,7 @@ class Loop {
   GraphSource source_;
   const ViewOptions& options_;
   WindowEvents& events_;
+  ShaderWatch shaders_;               // the shader sources (hot reload)
   std::unique_ptr<Overlay> overlay_;  // null with --no-overlay
   bool overlay_shown_ = false;        // F1
   std::function<void()> pending_;     // an overlay edit, applied between frames

@@ -14,7 +14,8 @@ struct ViewOptions {
   std::string screenshot;    // --screenshot FILE.png: the last presented image ("" for none)
   bool overlay = true;       // the Dear ImGui overlay (F1 toggles; --no-overlay: off and never drawn)
   bool validation = false;   // the Khronos validation layer, as `render --validation` (Vulkan)
-  std::string backend = "vulkan";  // --backend: vulkan or webgpu (Dawn on the window's X11 surface)
+  std::string backend = "vulkan";
+  std::string shaders;       // --shaders DIR: the shader sources watched for hot reload ("": the build's shaders/, when present)  // --backend: vulkan or webgpu (Dawn on the window's X11 surface)
   int device = -1;           // --device N (vulkan::ContextOptions::device_index)
   CompileOptions compile;
   std::string title;         // the window's title

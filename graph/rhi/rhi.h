@@ -299,6 +299,16 @@ class Device {
   // for the device's life, so every render and frame on one device compiles each
   // pipeline once (lavapipe's and Tint's compiles were most of a test's time).
   ShaderModuleId cached_shader_module(std::string_view label, std::span<const uint32_t> spirv);
+  // Shaders replaced at run time (`view`'s shader hot reload): programs made after
+  // replace_shader use `spirv` in place of the embedded shader of that name (the caches
+  // above key on content, so new modules and pipelines follow); restore_shader undoes it.
+  void replace_shader(const std::string& name, std::vector<uint32_t> spirv) { replaced_shaders_[name] = std::move(spirv); }
+  void restore_shader(const std::string& name) { replaced_shaders_.erase(name); }
+  // The replacement of `name`; empty where there is none.
+  std::span<const uint32_t> replaced_shader(std::string_view name) const {
+    const auto it = replaced_shaders_.find(name);
+    return it == replaced_shaders_.end() ? std::span<const uint32_t>{} : std::span<const uint32_t>(it->second);
+  }
   BindGroupLayoutId cached_bind_group_layout(const BindGroupLayoutDesc& desc);
   ComputePipelineId cached_compute_pipeline(const ComputePipelineDesc& desc);
   RenderPipelineId cached_render_pipeline(const RenderPipelineDesc& desc);
@@ -352,6 +362,7 @@ class Device {
   std::map<std::string, TextureViewId, std::less<>> texture_views_;
   // Keyed by the bytes of what defines the object (device_caches.cpp's content_key).
   std::map<std::string, ShaderModuleId, std::less<>> shader_modules_;
+  std::map<std::string, std::vector<uint32_t>, std::less<>> replaced_shaders_;
   std::map<std::string, BindGroupLayoutId, std::less<>> bind_group_layouts_;
   std::map<std::string, ComputePipelineId, std::less<>> compute_pipelines_;
   std::map<std::string, RenderPipelineId, std::less<>> render_pipelines_;

@@ -11,7 +11,9 @@
 namespace volgraph::plumbing {
 namespace {
 
-std::span<const uint32_t> spirv_of(const std::string& shader) {
+// The device's replacement of the shader (view's hot reload), else the embedded one.
+std::span<const uint32_t> spirv_of(const rhi::Device& device, const std::string& shader) {
+  if (const std::span<const uint32_t> replaced = device.replaced_shader(shader); !replaced.empty()) return replaced;
   const std::span<const uint32_t> words = shader_spirv(shader);
   if (words.empty()) throw DeviceError(DeviceError::Kind::other, "no shader named " + shader + " in shaders/");
   return words;
@@ -33,7 +35,7 @@ std::array<uint32_t, 3> ComputeProgram::groups_for(Extent size) const {
 }
 
 ComputeProgram create_compute_program(rhi::Device& device, const std::string& shader) {
-  const std::span<const uint32_t> spirv = spirv_of(shader);
+  const std::span<const uint32_t> spirv = spirv_of(device, shader);
   const rhi::ShaderStageCode stage{spirv, rhi::shader_stage::compute};
   ComputeProgram program;
   program.layout_descs = rhi::reflect_bind_group_layouts({&stage, 1}, shader);
@@ -64,8 +66,8 @@ int unserved_binding(const rhi::BindGroupLayoutDesc& layout, const rhi::BindGrou
 
 RenderProgram render_program(rhi::Device& device, rhi::RenderPipelineDesc desc, const std::string& vertex, const std::string& fragment,
                              const RenderProgram* layouts_of) {
-  std::vector<rhi::ShaderStageCode> stages = {{spirv_of(vertex), rhi::shader_stage::vertex}};
-  if (!fragment.empty()) stages.push_back({spirv_of(fragment), rhi::shader_stage::fragment});
+  std::vector<rhi::ShaderStageCode> stages = {{spirv_of(device, vertex), rhi::shader_stage::vertex}};
+  if (!fragment.empty()) stages.push_back({spirv_of(device, fragment), rhi::shader_stage::fragment});
   RenderProgram program;
   program.shader = fragment.empty() ? vertex : vertex + " + " + fragment;
   program.layout_descs = rhi::reflect_bind_group_layouts(stages, desc.label);

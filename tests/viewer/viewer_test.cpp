@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <chrono>
 #include <filesystem>
@@ -419,6 +420,64 @@ TEST(Viewer, ResourceViewSlicesAndExposesA3DTexture) {
   for (const float v : png_texels(shot("brighter"), w, h)) brighter_sum += v;
   EXPECT_GT(brighter_sum, far_sum * 1.1);
   expect_golden_match(shot("kept"), shot("brighter"));  // the same slot a frame later (the fog's history moves on)
+}
+
+// The shader sources copied to a folder of their own, to edit (view --shaders DIR).
+std::filesystem::path copy_shaders(const std::string& folder) {
+  const std::filesystem::path dir = scratch() / folder;
+  std::filesystem::remove_all(dir);
+  std::filesystem::copy(testing::source_dir() + "/shaders", dir, std::filesystem::copy_options::recursive);
+  return dir;
+}
+
+// Shader hot reload: composite.comp edited while the viewer runs is compiled again and the
+// graph rebuilt with it; every pixel is then the edited shader's constant (sRGB 8-bit of
+// 0.25, 0.5, 0.75: 137, 188, 225).
+TEST_P(ViewerOn, EditedShaderIsReloaded) {
+  const std::filesystem::path shaders = copy_shaders("shaders_" + GetParam()), dir = scratch() / ("shader_edit_" + GetParam());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path script = dir / "script.txt", before = dir / "before.png", after = dir / "after.png";
+  std::ofstream(script) << "frames 2\nscreenshot " << before.string() << "\nwait-change\nframes 1\nscreenshot " << after.string() << "\n";
+  const std::filesystem::path composite = shaders / "composite.comp";
+  const CommandRun view = view_with_edit("view " + config("demo_fog.json") + " --size 160x90" + backend() + " --no-overlay --shaders " +
+                                             shaders.string() + " --script " + script.string(),
+                                         before, [&] {
+                                           std::string text = read_text(composite);
+                                           const std::string store = "vec4(tone_map(radiance.rgb, params.exposure_ev, params.tone_map_op), 1.0)";
+                                           text.replace(text.find(store), store.size(), "vec4(0.25, 0.5, 0.75, 1.0)");
+                                           replace_file(composite, text);
+                                         });
+  ASSERT_EQ(view.exit_code, 0) << view.errors;
+  expect_clean(view);
+  EXPECT_EQ(count_of(view.errors, "view: shaders reloaded: composite.comp"), 1u) << view.errors;
+  int w = 0, h = 0;
+  const std::vector<float> texels = png_texels(after, w, h);
+  ASSERT_EQ(texels.size(), size_t(160 * 90 * 4));
+  for (size_t i = 0; i < texels.size(); i += 4) {
+    ASSERT_EQ(int(std::lround(texels[i] * 255)), 137) << "pixel " << i / 4;
+    ASSERT_EQ(int(std::lround(texels[i + 1] * 255)), 188) << "pixel " << i / 4;
+    ASSERT_EQ(int(std::lround(texels[i + 2] * 255)), 225) << "pixel " << i / 4;
+  }
+}
+
+// A shader edit that does not compile (here in an include) is one message naming the
+// shader, and the last good shaders keep running: the frames are unchanged.
+TEST(Viewer, ShaderThatDoesNotCompileKeepsTheLastGoodOne) {
+  const std::filesystem::path shaders = copy_shaders("shaders_bad"), dir = scratch() / "shader_bad_edit";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path script = dir / "script.txt", before = dir / "before.png", after = dir / "after.png";
+  std::ofstream(script) << "frames 2\nscreenshot " << before.string() << "\nwait-change\nframes 1\nscreenshot " << after.string() << "\n";
+  const std::filesystem::path include = shaders / "include" / "tonemap.glsl";
+  const CommandRun view = view_with_edit("view " + config("demo_analytic_fog.json") + " --size 160x90 --validation --no-overlay --shaders " +
+                                             shaders.string() + " --script " + script.string(),
+                                         before, [&] { replace_file(include, read_text(include) + "\nthis is not GLSL\n"); });
+  ASSERT_EQ(view.exit_code, 0) << view.errors;
+  EXPECT_EQ(view.errors.find("validation"), std::string::npos) << view.errors;
+  EXPECT_EQ(count_of(view.errors, "does not compile; the last good one runs on"), 1u) << view.errors;
+  EXPECT_NE(view.errors.find("ERROR"), std::string::npos) << view.errors;
+  EXPECT_EQ(read_text(after), read_text(before));  // a frame later (no temporal pass here), the same shaders
 }
 
 // WebGPU has no overlay (Debian's Dear ImGui has no renderer for its API revision): one
