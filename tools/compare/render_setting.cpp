@@ -7,6 +7,7 @@
 #include "graph/diagnostics.h"
 #include "graph/execute/executor.h"
 #include "reference/atmosphere_reference.h"
+#include "reference/clouds.h"
 #include "reference/image_render.h"
 #include "reference/pixel_masks.h"
 #include "reference/renderer.h"
@@ -100,6 +101,8 @@ std::string clock_note(const rhi::Device& device) {
 RgbImage render_reference(const LoadedConfig& loaded, const ReferenceSettings& settings) {
   reference::IntegrationSettings integration;
   integration.relative_tolerance = settings.tolerance;
+  // The config's cloud_noise sizes and cloud_march parameters, as `volgraph reference` takes them.
+  integration.clouds = reference::cloud_reference_settings(loaded.graph, loaded.params);
   reference::AtmosphereReferenceSettings atmosphere;
   atmosphere.samples = settings.atmosphere_paths;
   const reference::Renderer renderer(loaded.config.scene, integration, atmosphere);
