@@ -27,13 +27,36 @@ void check_result(VkResult r) { vulkan::check(r, "Dear ImGui's Vulkan backend");
 
 }  // namespace
 
-Overlay::Overlay(vulkan::Context& context, GLFWwindow* window, Presenter& presenter) : context_(context) {
-  pool_ = create_pool(context.device());
+Overlay::Overlay(GLFWwindow* window, bool vulkan) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini written beside the user's files
   ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForVulkan(window, true);
+  if (vulkan) {
+    ImGui_ImplGlfw_InitForVulkan(window, true);
+  } else {
+    ImGui_ImplGlfw_InitForOther(window, true);
+  }
+}
+
+Overlay::~Overlay() {
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+void Overlay::begin_frame() {
+  new_renderer_frame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void Overlay::end_frame() { ImGui::Render(); }
+
+bool Overlay::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool Overlay::wants_keyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+
+VulkanOverlay::VulkanOverlay(vulkan::Context& context, GLFWwindow* window, Presenter& presenter) : Overlay(window, true), context_(context) {
+  pool_ = create_pool(context.device());
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = context.instance();
   info.PhysicalDevice = context.physical_device();
@@ -50,25 +73,14 @@ Overlay::Overlay(vulkan::Context& context, GLFWwindow* window, Presenter& presen
   ImGui_ImplVulkan_DestroyFontUploadObjects();
 }
 
-Overlay::~Overlay() {
+VulkanOverlay::~VulkanOverlay() {
   vkDeviceWaitIdle(context_.device());
   ImGui_ImplVulkan_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
   vkDestroyDescriptorPool(context_.device(), pool_, nullptr);
 }
 
-void Overlay::begin_frame() {
-  ImGui_ImplVulkan_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
-}
+void VulkanOverlay::new_renderer_frame() { ImGui_ImplVulkan_NewFrame(); }
 
-void Overlay::end_frame() { ImGui::Render(); }
-
-void Overlay::draw(VkCommandBuffer cmd) const { ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd); }
-
-bool Overlay::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
-bool Overlay::wants_keyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+void VulkanOverlay::draw(VkCommandBuffer cmd) const { ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd); }
 
 }  // namespace volgraph::viewer

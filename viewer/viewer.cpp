@@ -190,7 +190,6 @@ class Loop {
         shaders_(options.shaders.empty() ? std::filesystem::path(VOLGRAPH_SHADER_SOURCE_DIR) : std::filesystem::path(options.shaders),
                  VOLGRAPH_GLSLANG) {
     if (options.overlay) overlay_ = backend.make_overlay(window);
-    if (options.overlay && !overlay_) std::cerr << "view: no overlay: " << backend.overlay_missing() << "\n";
     overlay_shown_ = overlay_ != nullptr;
     restart();
   }

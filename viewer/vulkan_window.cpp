@@ -53,10 +53,11 @@ class VulkanWindow final : public WindowBackend {
   bool stale() const override { return presenter_.stale(); }
   bool present(const std::vector<uint8_t>& rgba8, std::vector<uint8_t>* presented, const Overlay* overlay) override {
     std::function<void(VkCommandBuffer)> draw;
-    if (overlay) draw = [overlay](VkCommandBuffer cmd) { overlay->draw(cmd); };
+    // The loop hands back the overlay make_overlay made: a VulkanOverlay.
+    if (overlay) draw = [drawn = static_cast<const VulkanOverlay*>(overlay)](VkCommandBuffer cmd) { drawn->draw(cmd); };
     return presenter_.present(rgba8, presented, draw);
   }
-  std::unique_ptr<Overlay> make_overlay(GLFWwindow* window) override { return std::make_unique<Overlay>(*context_, window, presenter_); }
+  std::unique_ptr<Overlay> make_overlay(GLFWwindow* window) override { return std::make_unique<VulkanOverlay>(*context_, window, presenter_); }
   std::vector<std::string> take_messages() override { return context_->take_validation_messages(); }
 
  private:

@@ -2,8 +2,9 @@
 // its errors collected rather than thrown: the viewer prints them and exits 1 as Vulkan's
 // validation messages) and a wgpu::Surface on the GLFW window's X11 handle. Each frame's
 // bytes are written into the surface's texture by a queue write and, for a screenshot,
-// copied back out before Present. Dear ImGui 1.86 (Debian's) has no WebGPU renderer of this
-// API revision, so there is no overlay here (docs/viewer.md "WebGPU").
+// copied back out before Present. The overlay is volgraph's CPU renderer of ImGui's lists
+// (overlay.h CpuOverlay), drawn into those bytes: Debian's Dear ImGui 1.86 has no WebGPU
+// renderer of this API revision (docs/viewer.md "Presenting").
 #include <algorithm>
 #include <cstring>
 
@@ -70,10 +71,7 @@ class WebGpuWindow final : public WindowBackend {
   Extent extent() const override { return extent_; }
   bool readable() const override { return has(usage_, wgpu::TextureUsage::CopySrc); }
   bool stale() const override { return stale_; }
-  std::unique_ptr<Overlay> make_overlay(GLFWwindow*) override { return nullptr; }
-  std::string overlay_missing() const override {
-    return "the overlay is Vulkan's only: Debian's Dear ImGui 1.86 has no WebGPU renderer of this API revision";
-  }
+  std::unique_ptr<Overlay> make_overlay(GLFWwindow* window) override { return std::make_unique<CpuOverlay>(window); }
   std::vector<std::string> take_messages() override { return device_->take_messages(); }
 
   void recreate(Extent window) override {
@@ -90,7 +88,7 @@ class WebGpuWindow final : public WindowBackend {
     stale_ = false;
   }
 
-  bool present(const std::vector<uint8_t>& rgba8, std::vector<uint8_t>* presented, const Overlay*) override {
+  bool present(const std::vector<uint8_t>& rgba8, std::vector<uint8_t>* presented, const Overlay* overlay) override {
     wgpu::SurfaceTexture target;
     surface_.GetCurrentTexture(&target);
     if (target.status != wgpu::SurfaceGetCurrentTextureStatus::SuccessOptimal &&
@@ -98,7 +96,10 @@ class WebGpuWindow final : public WindowBackend {
       stale_ = true;
       return false;
     }
-    write(target.texture, rgba8);
+    std::vector<uint8_t> texels = rgba8;
+    // The loop hands back the overlay make_overlay made: a CpuOverlay.
+    if (overlay) static_cast<const CpuOverlay*>(overlay)->draw(texels, extent_);
+    write(target.texture, std::move(texels));
     if (presented && readable()) *presented = read(target.texture);
     surface_.Present();
     stale_ = target.status == wgpu::SurfaceGetCurrentTextureStatus::SuccessSuboptimal;
@@ -129,8 +130,7 @@ class WebGpuWindow final : public WindowBackend {
 
   bool bgra() const { return format_ == wgpu::TextureFormat::BGRA8Unorm; }
 
-  void write(const wgpu::Texture& texture, const std::vector<uint8_t>& rgba8) {
-    std::vector<uint8_t> texels = rgba8;
+  void write(const wgpu::Texture& texture, std::vector<uint8_t> texels) {
     if (bgra()) swap_red_blue(texels.data(), texels.size() / 4);
     wgpu::TexelCopyTextureInfo destination;
     destination.texture = texture;

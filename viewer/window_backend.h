@@ -36,10 +36,8 @@ class WindowBackend {
   // `presented` when given (ignored unless readable()) and presents it. False, presenting
   // nothing, when the swapchain is out of date.
   virtual bool present(const std::vector<uint8_t>& rgba8, std::vector<uint8_t>* presented, const Overlay* overlay) = 0;
-  // The Dear ImGui overlay on this backend's swapchain; null where the backend has none.
+  // The Dear ImGui overlay with this backend's renderer (overlay.h); present() is given it back.
   virtual std::unique_ptr<Overlay> make_overlay(GLFWwindow* window) = 0;
-  // Why make_overlay() is null ("" when it is not).
-  virtual std::string overlay_missing() const { return ""; }
   // The validation layer's (Vulkan) or Dawn's (WebGPU) messages since the last call.
   virtual std::vector<std::string> take_messages() = 0;
 };

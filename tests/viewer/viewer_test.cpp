@@ -279,13 +279,13 @@ std::vector<float> columns(const std::filesystem::path& file, int x0, int x1) {
 // The overlay (on by default) is drawn over the frame's left part (its panel is at most
 // half the window wide): there the screenshot differs from --no-overlay's, to its right
 // it is the same frame.
-TEST(Viewer, OverlayDrawsOverTheLeftOfTheFrame) {
-  const std::filesystem::path dir = scratch() / "overlay", with = dir / "with.png", without = dir / "without.png";
+TEST_P(ViewerOn, OverlayDrawsOverTheLeftOfTheFrame) {
+  const std::filesystem::path dir = scratch() / ("overlay_" + GetParam()), with = dir / "with.png", without = dir / "without.png";
   std::filesystem::create_directories(dir);
-  const std::string common = "view " + config("demo_fog.json") + " --size 320x180 --frames 3 --validation --screenshot ";
+  const std::string common = "view " + config("demo_fog.json") + " --size 320x180 --frames 3" + backend() + " --screenshot ";
   const CommandRun shown = volgraph(common + with.string());
   ASSERT_EQ(shown.exit_code, 0) << shown.errors;
-  EXPECT_EQ(shown.errors.find("validation"), std::string::npos) << shown.errors;
+  expect_clean(shown);
   const CommandRun plain = volgraph(common + without.string() + " --no-overlay");
   ASSERT_EQ(plain.exit_code, 0) << plain.errors;
   const std::vector<float> left_with = columns(with, 0, 160), left_without = columns(without, 0, 160);
@@ -478,16 +478,6 @@ TEST(Viewer, ShaderThatDoesNotCompileKeepsTheLastGoodOne) {
   EXPECT_EQ(count_of(view.errors, "does not compile; the last good one runs on"), 1u) << view.errors;
   EXPECT_NE(view.errors.find("ERROR"), std::string::npos) << view.errors;
   EXPECT_EQ(read_text(after), read_text(before));  // a frame later (no temporal pass here), the same shaders
-}
-
-// WebGPU has no overlay (Debian's Dear ImGui has no renderer for its API revision): one
-// line says so, and the frame is still presented.
-TEST(Viewer, WebGpuSaysItHasNoOverlay) {
-  const std::filesystem::path shown = scratch() / "webgpu_overlay.png";
-  const CommandRun view = volgraph("view " + config("demo_fog.json") + " --size 160x90 --backend webgpu --frames 1 --screenshot " + shown.string());
-  EXPECT_EQ(view.exit_code, 0) << view.errors;
-  EXPECT_EQ(count_of(view.errors, "view: no overlay: "), 1u) << view.errors;
-  EXPECT_TRUE(std::filesystem::exists(shown));
 }
 
 }  // namespace
