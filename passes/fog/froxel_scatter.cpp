@@ -7,10 +7,14 @@
 // chord times its mean density over `shadow_steps` stratified samples (exact for a volume
 // without edge fade or noise; 0: none), or, for the shadow map's light when an
 // opacity_shadow_map is wired to `media_shadow`, one lookup in that map (the other lights
-// keep the chords).
+// keep the chords). With a translucent_shadow_map of the same light view wired, the
+// translucent casters tint that light's V (RTR4 §14.5.1: the fog behind coloured glass
+// carries its colour).
 // Shaders: shaders/froxel_scatter.comp, froxel_scatter_shadowed.comp,
-// froxel_scatter_media_shadowed.comp (shaders/include/froxel_scatter_body.glsl).
+// froxel_scatter_media_shadowed.comp, froxel_scatter_translucent_shadowed.comp,
+// froxel_scatter_media_translucent_shadowed.comp (shaders/include/froxel_scatter_body.glsl).
 #include <cstddef>
+#include <string>
 
 #include "graph/execute/pass_execution.h"
 #include "passes/register_pass.h"
@@ -19,12 +23,14 @@
 #include "passes/fog/phase_variants.h"
 #include "shaders/bindings/froxel_scatter.comp.h"
 #include "shaders/bindings/froxel_scatter_media_shadowed.comp.h"
+#include "shaders/bindings/froxel_scatter_media_translucent_shadowed.comp.h"
 
 namespace volgraph {
 namespace {
 
 namespace froxel_scatter_shader = shaders::froxel_scatter_comp;
 namespace froxel_scatter_media_shadowed_shader = shaders::froxel_scatter_media_shadowed_comp;
+namespace froxel_scatter_translucent_shader = shaders::froxel_scatter_media_translucent_shadowed_comp;
 
 struct FroxelScatterTable : fog::PhaseTable {
   FroxelScatterTable()
@@ -49,6 +55,11 @@ struct FroxelScatterTable : fog::PhaseTable {
   SlotHandle light_view = optional_input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view");
   SlotHandle media_shadow = optional_input("media_shadow", ResourceKind::texture3d, Usage::sampled,
                                            "opacity_shadow_map's optical depth over the same light view (with shadow_map and light_view)");
+  SlotHandle translucent_shadow = optional_input("translucent_shadow", ResourceKind::texture2d, Usage::sampled,
+                                                 "translucent_shadow_map's transmittance over the same light view: translucent casters tint that light");
+  SlotHandle translucent_shadow_depth = optional_input("translucent_shadow_depth", ResourceKind::texture2d, Usage::sampled,
+                                                       "translucent_shadow_map's depth: only froxels behind its casters are tinted",
+                                                       {.format = Format::d32_float});
   SlotHandle in_scatter = output_like("in_scatter", media_scattering, Usage::storage_write, "scattered radiance per metre, rgb");
 };
 
@@ -59,13 +70,19 @@ class FroxelScatterExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
     media_shadowed_ = shadowed_ && s.bound(t_.media_shadow);
-    program_ = plumbing::create_compute_program(s.device, media_shadowed_ ? "froxel_scatter_media_shadowed.comp"
-                                                          : shadowed_      ? "froxel_scatter_shadowed.comp"
-                                                                           : "froxel_scatter.comp");
+    translucent_shadowed_ = shadowed_ && s.bound(t_.translucent_shadow) && s.bound(t_.translucent_shadow_depth);
+    program_ = plumbing::create_compute_program(s.device, shader_name());
     const gpu::FroxelScatterParams params{{s.variant().shader_code, s.param(t_.skip_empty) ? 1 : 0, 0, 0},
                                         {float(s.param(t_.g_back)), float(s.param(t_.w_forward)), 0, 0},
                                         {float(s.param(t_.shadow_steps)), float(s.param(t_.shadow_distance)), 0, 0}};
     params_ = plumbing::create_shared_uniform_block(s.device, program_, froxel_scatter_shader::params, s.name() + " params", params);
+  }
+
+  // Shadow map, opacity map (media), translucent map: each shader holds the ones wired.
+  std::string shader_name() const {
+    if (!shadowed_) return "froxel_scatter.comp";
+    if (translucent_shadowed_) return media_shadowed_ ? "froxel_scatter_media_translucent_shadowed.comp" : "froxel_scatter_translucent_shadowed.comp";
+    return media_shadowed_ ? "froxel_scatter_media_shadowed.comp" : "froxel_scatter_shadowed.comp";
   }
 
   void record(PassContext& c) override {
@@ -85,6 +102,11 @@ class FroxelScatterExecution final : public PassExecution {
         entries.push_back(bind(shadowed::media_shadow, c.view(t_.media_shadow)));
         entries.push_back(bind(shadowed::media_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)));
       }
+      if (translucent_shadowed_) {
+        namespace tinted = froxel_scatter_translucent_shader;
+        entries.push_back(bind(tinted::translucent_shadow, c.view(t_.translucent_shadow)));
+        entries.push_back(bind(tinted::translucent_shadow_depth, c.view(t_.translucent_shadow_depth)));
+      }
       shadow = c.bind_group(program_, entries);
     }
     plumbing::dispatch(c.encoder, c.name(), program_, {media, shadow}, c.extent(t_.in_scatter));
@@ -92,7 +114,7 @@ class FroxelScatterExecution final : public PassExecution {
 
  private:
   const FroxelScatterTable& t_;
-  bool shadowed_ = false, media_shadowed_ = false;
+  bool shadowed_ = false, media_shadowed_ = false, translucent_shadowed_ = false;
   plumbing::ComputeProgram program_;
   rhi::BufferId params_;
 };

@@ -37,7 +37,7 @@ std::string glass(const std::string& material) {
 constexpr const char* kBoxAbove =
     R"(, { "shape": "box", "size": [2, 0.4, 1.6], "material": "white", "transform": { "translate": [-3.4, 2.5, 0] } })";
 
-std::string floor_and(const std::string& objects, bool translucent_shadows = true) {
+std::string tinted_floor_and(const std::string& objects, bool translucent_shadows = true) {
   const std::string scene_inputs = translucent_shadows
       ? R"("shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view",
            "translucent_shadow": "tint.transmittance", "translucent_shadow_depth": "tint.depth")"
@@ -96,8 +96,8 @@ bool all_one(const Texels& t) {
 }
 
 TEST_P(TranslucentShadow, RedGlassColoursTheFloorByItsTransmittance) {
-  const Texels floor = render(floor_and("")).first;
-  const Texels tinted = render(floor_and(glass("red_glass"))).first;
+  const Texels floor = render(tinted_floor_and("")).first;
+  const Texels tinted = render(tinted_floor_and(glass("red_glass"))).first;
   // The sheet's normal is +y, the sun 45° off it: (1 − F)·ρ with one interface.
   const double cos_sun = std::sqrt(0.5);
   const double red = 1.0 - physics::interface_reflectance(1.5, cos_sun);
@@ -117,8 +117,8 @@ TEST_P(TranslucentShadow, RedGlassColoursTheFloorByItsTransmittance) {
 }
 
 TEST_P(TranslucentShadow, AnOpaqueCasterAboveTheGlassStillShadowsFully) {
-  const auto [with_glass, map] = render(floor_and(glass("red_glass") + kBoxAbove));
-  const Texels box_only = render(floor_and(kBoxAbove)).first;
+  const auto [with_glass, map] = render(tinted_floor_and(glass("red_glass") + kBoxAbove));
+  const Texels box_only = render(tinted_floor_and(kBoxAbove)).first;
   int black = 0;
   for (size_t p = 0; p < with_glass.rgba.size(); p += 4) {
     EXPECT_EQ(with_glass.rgba[p], box_only.rgba[p]) << "texel " << p / 4;  // red: not tinted where the box shadows
@@ -137,10 +137,10 @@ TEST_P(TranslucentShadow, AReceiverInFrontOfTheGlassIsNotTinted) {
       R"(, { "shape": "plane", "size": [1, 1, 1], "material": "red_glass", "transform": { "translate": [0, 0.5, 0] } })";
   const std::string box_in_front = R"(, { "shape": "box", "size": [0.6, 0.6, 0.6], "material": "white", "cast_shadows": false,
                                           "transform": { "translate": [-1.3, 1.5, 0] } })";
-  const Texels floor = render(floor_and("")).first;
-  const Texels floor_glass = render(floor_and(low_glass)).first;
-  const Texels box = render(floor_and(box_in_front)).first;
-  const Texels box_glass = render(floor_and(low_glass + box_in_front)).first;
+  const Texels floor = render(tinted_floor_and("")).first;
+  const Texels floor_glass = render(tinted_floor_and(low_glass)).first;
+  const Texels box = render(tinted_floor_and(box_in_front)).first;
+  const Texels box_glass = render(tinted_floor_and(low_glass + box_in_front)).first;
   auto differs = [](const Texels& a, const Texels& b, size_t p) {
     return a.rgba[p] != b.rgba[p] || a.rgba[p + 1] != b.rgba[p + 1] || a.rgba[p + 2] != b.rgba[p + 2];
   };
@@ -156,23 +156,23 @@ TEST_P(TranslucentShadow, AReceiverInFrontOfTheGlassIsNotTinted) {
 // No translucent caster: the map stays at 1 (the pass is not culled while the scene reads it)
 // and the floor is bit for bit as the shadow map alone shades it.
 TEST_P(TranslucentShadow, NoTranslucentCasterLeavesTheMapAtOne) {
-  const auto [floor, map] = render(floor_and(kBoxAbove));
-  const Texels plain = render(floor_and(kBoxAbove, false)).first;
+  const auto [floor, map] = render(tinted_floor_and(kBoxAbove));
+  const Texels plain = render(tinted_floor_and(kBoxAbove, false)).first;
   EXPECT_TRUE(all_one(map));
   EXPECT_EQ(floor.rgba, plain.rgba);
 }
 
 TEST_P(TranslucentShadow, StressStaysFinite) {
-  const Texels floor = render(floor_and("")).first;
+  const Texels floor = render(tinted_floor_and("")).first;
   for (const char* material : {"ior1", "ior4", "dark", "red_glass"}) {
-    const auto [image, map] = render(floor_and(glass(material)));
+    const auto [image, map] = render(tinted_floor_and(glass(material)));
     EXPECT_TRUE(all_finite(image)) << material;
     EXPECT_TRUE(all_finite(map)) << material;
   }
   // IOR 1, transmission 1, albedo 1: no interface, all light passes: the floor unchanged.
-  EXPECT_EQ(render(floor_and(glass("ior1"))).first.rgba, floor.rgba);
+  EXPECT_EQ(render(tinted_floor_and(glass("ior1"))).first.rgba, floor.rgba);
   // Transmission 0 at coverage 0.999: 0.001 of the light passes.
-  const Texels dark = render(floor_and(glass("dark"))).first;
+  const Texels dark = render(tinted_floor_and(glass("dark"))).first;
   int dimmed = 0;
   for (size_t p = 0; p < floor.rgba.size(); p += 4) {
     if (dark.rgba[p] == floor.rgba[p]) continue;
@@ -185,7 +185,7 @@ TEST_P(TranslucentShadow, StressStaysFinite) {
 // Against the CPU reference with its translucent shadow rays on (the default), by the
 // translucency accuracy test's metric; what differs is the shadow edge (the map's texels).
 TEST_P(TranslucentShadow, MatchesTheReference) {
-  const Texels image = render(floor_and(glass("red_glass"))).first;
+  const Texels image = render(tinted_floor_and(glass("red_glass"))).first;
   reference::IntegrationSettings settings;
   settings.translucent_shadows = true;
   const reference::ReferenceImage truth = reference::render_image(reference::Renderer(scene_, settings), {image.width, image.height});

@@ -1,0 +1,89 @@
+// Translucent shadows in the fog (translucent_shadow_map → froxel_scatter; RTR4 §14.5.1), on
+// both backends: a red glass sheet (albedo (1, 0, 0), transmission 1, IOR 1.5) hangs in a
+// homogeneous fog under a slanted sun (hard shadow lookups); the light each froxel scatters
+// with the map wired is the light without it, times the sheet's transmittance (1 − F)·ρ for
+// the froxels behind the sheet as the sun sees them (red, within two fp16 steps; green and
+// blue 0), and the same bit for bit everywhere else.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "graph/config/config.h"
+#include "graph/execute/executor.h"
+#include "passes/passes.h"
+#include "physics/translucency.h"
+#include "tests/gpu/backends.h"
+#include "tests/support/image_compare.h"
+
+namespace volgraph::testing {
+namespace {
+
+// The sheet 1 m square at height 1.5 around x = −1.5, the sun along (1, −1, 0): its beam falls
+// toward +x through the fog the camera (8 m up, looking down) sees.
+std::string fog_under_glass(bool tinted) {
+  const std::string tint = tinted
+      ? R"({ "name": "tint", "type": "translucent_shadow_map", "params": { "resolution": 512 },
+             "inputs": { "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view" } },)"
+      : "";
+  const std::string tint_inputs = tinted ? R"(, "translucent_shadow": "tint.transmittance", "translucent_shadow_depth": "tint.depth")" : "";
+  return R"({ "output": { "size": [32, 32] },
+  "scene": { "camera": { "position": [0, 8, 0.01], "target": [0, 0, 0], "fov_y_deg": 30 },
+    "background": { "radiance": [0, 0, 0] },
+    "lights": [ { "type": "directional", "direction": [1, -1, 0], "irradiance": [3, 3, 3] } ],
+    "materials": { "white": { "albedo": [1, 1, 1] }, "red_glass": { "albedo": [1, 0, 0], "transmission": 1, "ior": 1.5 } },
+    "objects": [ { "shape": "plane", "size": [20, 1, 20], "material": "white" },
+                 { "shape": "plane", "size": [1, 1, 1], "material": "red_glass", "transform": { "translate": [-1.5, 1.5, 0] } } ],
+    "media": { "fog": { "albedo": [1, 1, 1], "extinction": [0.05, 0.05, 0.05], "g": 0 } } },
+  "graph": { "passes": [
+    { "name": "sun_shadow", "type": "shadow_map", "variant": "hard", "params": { "light": 0, "resolution": 512 } },)" + tint + R"(
+    { "name": "fog_media", "type": "froxel_voxelize", "params": { "tile": 2, "slices": 32, "near": 0.1, "far": 12, "distribution": "linear", "jitter": false } },
+    { "name": "fog_light", "type": "froxel_scatter", "variant": "hg",
+      "inputs": { "media_scattering": "fog_media.media_scattering", "media_emission": "fog_media.media_emission",
+                  "frame": "fog_media.frame", "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view")" + tint_inputs + R"( } } ],
+    "outputs": ["fog_light.in_scatter"] } })";
+}
+
+class FroxelScatterTranslucentShadow : public OnEachBackend<Backend> {
+ protected:
+  Backend backend() const override { return GetParam(); }
+  void SetUp() override {
+    register_builtin_passes(registry_);
+    OnEachBackend::SetUp();
+  }
+  Texels in_scatter(bool tinted) {
+    const LoadedConfig loaded = load_config_text("froxel_translucent_shadow.json", fog_under_glass(tinted), registry_);
+    scene_ = loaded.config.scene;
+    Executor executor(device(), loaded.graph, &scene_, {});
+    executor.run_frame();
+    return executor.read_output(0);
+  }
+  PassRegistry registry_;
+  Scene scene_;
+};
+
+TEST_P(FroxelScatterTranslucentShadow, TheFogBehindRedGlassCarriesItsTransmittance) {
+  const Texels plain = in_scatter(false), tinted = in_scatter(true);
+  ASSERT_EQ(plain.rgba.size(), tinted.rgba.size());
+  // The sheet's normal is +y, the sun 45° off it: (1 − F)·ρ with one interface.
+  const double red = 1.0 - physics::interface_reflectance(1.5, std::sqrt(0.5));
+  int behind = 0, otherwise_changed = 0;
+  for (size_t p = 0; p < plain.rgba.size(); p += 4) {
+    const bool same = plain.rgba[p] == tinted.rgba[p] && plain.rgba[p + 1] == tinted.rgba[p + 1] && plain.rgba[p + 2] == tinted.rgba[p + 2];
+    if (same) continue;
+    if (tinted.rgba[p + 1] != 0.0f || tinted.rgba[p + 2] != 0.0f || plain.rgba[p + 1] <= 0.0f) {
+      ++otherwise_changed;
+      continue;
+    }
+    ++behind;
+    EXPECT_NEAR(tinted.rgba[p], red * plain.rgba[p], fp16_steps(red * plain.rgba[p])) << "froxel " << p / 4;
+  }
+  EXPECT_GT(behind, 20) << "froxels in the sheet's beam";
+  EXPECT_EQ(otherwise_changed, 0) << "froxels changed other than by the sheet's transmittance";
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, FroxelScatterTranslucentShadow, ::testing::ValuesIn(gpu_backends()),
+                         backend_test_name);
+
+}  // namespace
+}  // namespace volgraph::testing
