@@ -11,8 +11,11 @@
 // and the local volumes by their chords toward it, each volume's density sampled
 // `shadow_steps` times along its chord (exact without edge fade or noise; 0: none). Writes
 // fog_apply's two images: in-scattered radiance and transmittance.
-// Shaders: shaders/raymarch_fog.comp, raymarch_fog_shadowed.comp
+// With a translucent_shadow_map of the shadow map's light view wired, the translucent casters
+// tint that light at each sample (RTR4 §14.5.1).
+// Shaders: shaders/raymarch_fog.comp, raymarch_fog_shadowed.comp, raymarch_fog_translucent_shadowed.comp
 // (shaders/include/raymarch_fog_body.glsl, in_scattering.glsl, light_transmittance.glsl).
+#include <vector>
 #include <cstddef>
 
 #include "graph/execute/pass_execution.h"
@@ -23,11 +26,13 @@
 #include "passes/uniform_mirrors.h"
 #include "passes/fog/phase_variants.h"
 #include "shaders/bindings/raymarch_fog_shadowed.comp.h"
+#include "shaders/bindings/raymarch_fog_translucent_shadowed.comp.h"
 
 namespace volgraph {
 namespace {
 
 namespace raymarch_fog_shadowed_shader = shaders::raymarch_fog_shadowed_comp;
+namespace raymarch_fog_tinted_shader = shaders::raymarch_fog_translucent_shadowed_comp;
 
 // The outputs' size (parameter "resolution").
 enum class Resolution : uint8_t { full, half };
@@ -65,6 +70,11 @@ struct RaymarchFogTable : fog::PhaseTable {
   SlotHandle shadow_map = optional_input("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map",
                                          {.format = Format::d32_float});
   SlotHandle light_view = optional_input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view");
+  SlotHandle translucent_shadow = optional_input("translucent_shadow", ResourceKind::texture2d, Usage::sampled,
+                                                 "translucent_shadow_map's transmittance over the same light view: translucent casters tint that light");
+  SlotHandle translucent_shadow_depth = optional_input("translucent_shadow_depth", ResourceKind::texture2d, Usage::sampled,
+                                                       "translucent_shadow_map's depth: only samples behind its casters are tinted",
+                                                       {.format = Format::d32_float});
   SlotHandle fog_scattering = output("fog_scattering", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
                                      fog_image_size(), "in-scattered radiance toward the camera, rgb");
   SlotHandle fog_transmittance = output("fog_transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
@@ -81,7 +91,10 @@ class RaymarchFogExecution final : public PassExecution {
   void setup(PassSetup& s) override {
     using namespace rhi;
     shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
-    program_ = plumbing::create_compute_program(s.device, shadowed_ ? "raymarch_fog_shadowed.comp" : "raymarch_fog.comp");
+    tinted_ = shadowed_ && s.bound(t_.translucent_shadow) && s.bound(t_.translucent_shadow_depth);
+    program_ = plumbing::create_compute_program(s.device, tinted_     ? "raymarch_fog_translucent_shadowed.comp"
+                                                          : shadowed_ ? "raymarch_fog_shadowed.comp"
+                                                                      : "raymarch_fog.comp");
     plumbing::check_wrapped_uniform_mirror<gpu::RaymarchParams>(program_, raymarch_fog_shadowed_shader::params, s.name() + " params");
     plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(program_, 0, 0, s.name() + " frame");
     phase_ = {s.variant().shader_code, float(s.param(t_.g_back)), float(s.param(t_.w_forward))};
@@ -102,8 +115,14 @@ class RaymarchFogExecution final : public PassExecution {
                                                            bind(raymarch_fog_shadowed_shader::params, params_)});
     rhi::BindGroupId shadow;
     if (shadowed_) {
-      shadow = c.bind_group(program_, {bind(raymarch_fog_shadowed_shader::shadow_depth, c.view(t_.shadow_map)), bind(raymarch_fog_shadowed_shader::shadow_sampler, nearest),
-                                       bind(raymarch_fog_shadowed_shader::shadow, c.buffer(t_.light_view))});
+      std::vector<rhi::BoundResource> entries = {bind(raymarch_fog_shadowed_shader::shadow_depth, c.view(t_.shadow_map)),
+                                                 bind(raymarch_fog_shadowed_shader::shadow_sampler, nearest),
+                                                 bind(raymarch_fog_shadowed_shader::shadow, c.buffer(t_.light_view))};
+      if (tinted_) {
+        entries.push_back(bind(raymarch_fog_tinted_shader::translucent_shadow, c.view(t_.translucent_shadow)));
+        entries.push_back(bind(raymarch_fog_tinted_shader::translucent_shadow_depth, c.view(t_.translucent_shadow_depth)));
+      }
+      shadow = c.bind_group(program_, entries);
     }
     plumbing::dispatch(c.encoder, c.name(), program_, {group, shadow}, c.extent(t_.fog_scattering));
   }
@@ -143,7 +162,7 @@ class RaymarchFogExecution final : public PassExecution {
   };
 
   const RaymarchFogTable& t_;
-  bool shadowed_ = false;
+  bool shadowed_ = false, tinted_ = false;
   Phase phase_;
   plumbing::ComputeProgram program_;
   plumbing::SceneLighting lighting_;

@@ -1,0 +1,81 @@
+// Translucent shadows in the ray-marched fog (translucent_shadow_map → raymarch_fog; RTR4
+// §14.5.1), on both backends: a red glass sheet (albedo (1, 0, 0), transmission 1) hangs in a
+// homogeneous fog under a slanted sun, seen from the side so that view rays cross its beam.
+// With the map wired no pixel gains light; the pixels whose rays cross the beam lose green and
+// blue alike (the sheet passes none) and red by a smaller share (it passes (1 − F) of it).
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "graph/config/config.h"
+#include "graph/execute/executor.h"
+#include "passes/passes.h"
+#include "tests/gpu/backends.h"
+#include "tests/support/image_compare.h"
+
+namespace volgraph::testing {
+namespace {
+
+std::string marched_fog_under_glass(bool tinted) {
+  const std::string tint = tinted
+      ? R"({ "name": "tint", "type": "translucent_shadow_map", "params": { "resolution": 512 },
+             "inputs": { "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view" } },)"
+      : "";
+  const std::string tint_inputs = tinted ? R"(, "translucent_shadow": "tint.transmittance", "translucent_shadow_depth": "tint.depth")" : "";
+  return R"({ "output": { "size": [48, 32] },
+  "scene": { "camera": { "position": [0, 1, 6], "target": [-0.5, 0.8, 0], "fov_y_deg": 50 },
+    "background": { "radiance": [0, 0, 0] },
+    "lights": [ { "type": "directional", "direction": [1, -1, 0], "irradiance": [3, 3, 3] } ],
+    "materials": { "white": { "albedo": [1, 1, 1] }, "red_glass": { "albedo": [1, 0, 0], "transmission": 1, "ior": 1.5 } },
+    "objects": [ { "shape": "plane", "size": [20, 1, 20], "material": "white" },
+                 { "shape": "plane", "size": [1, 1, 1], "material": "red_glass", "transform": { "translate": [-1.5, 1.5, 0] } } ],
+    "media": { "fog": { "albedo": [1, 1, 1], "extinction": [0.05, 0.05, 0.05], "g": 0 } } },
+  "graph": { "passes": [
+    { "name": "sun_shadow", "type": "shadow_map", "variant": "hard", "params": { "light": 0, "resolution": 512 } },)" + tint + R"(
+    { "name": "lit", "type": "scene" },
+    { "name": "fog", "type": "raymarch_fog", "variant": "hg", "params": { "steps": 128, "jitter": false, "max_distance": 20 },
+      "inputs": { "depth": "lit.depth", "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view")" + tint_inputs + R"( } } ],
+    "outputs": ["fog.fog_scattering"] } })";
+}
+
+class RaymarchFogTranslucentShadow : public OnEachBackend<Backend> {
+ protected:
+  Backend backend() const override { return GetParam(); }
+  void SetUp() override {
+    register_builtin_passes(registry_);
+    OnEachBackend::SetUp();
+  }
+  Texels scattering(bool tinted) {
+    const LoadedConfig loaded = load_config_text("raymarch_translucent_shadow.json", marched_fog_under_glass(tinted), registry_);
+    scene_ = loaded.config.scene;
+    Executor executor(device(), loaded.graph, &scene_, {});
+    executor.run_frame();
+    return executor.read_output(0);
+  }
+  PassRegistry registry_;
+  Scene scene_;
+};
+
+TEST_P(RaymarchFogTranslucentShadow, RaysThroughTheBeamLoseGreenAndBlueMoreThanRed) {
+  const Texels plain = scattering(false), tinted = scattering(true);
+  ASSERT_EQ(plain.rgba.size(), tinted.rgba.size());
+  int crossing = 0;
+  for (size_t p = 0; p < plain.rgba.size(); p += 4) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LE(tinted.rgba[p + k], plain.rgba[p + k] + fp16_steps(plain.rgba[p + k])) << "pixel " << p / 4 << " channel " << k;
+    }
+    const float green_lost = plain.rgba[p + 1] - tinted.rgba[p + 1];
+    if (green_lost <= fp16_steps(plain.rgba[p + 1])) continue;
+    ++crossing;
+    EXPECT_NEAR(tinted.rgba[p + 2], tinted.rgba[p + 1], fp16_steps(tinted.rgba[p + 1])) << "pixel " << p / 4;
+    EXPECT_GT(tinted.rgba[p] / plain.rgba[p], tinted.rgba[p + 1] / plain.rgba[p + 1]) << "pixel " << p / 4;
+  }
+  EXPECT_GT(crossing, 10) << "pixels whose rays cross the sheet's beam";
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, RaymarchFogTranslucentShadow, ::testing::ValuesIn(gpu_backends()),
+                         backend_test_name);
+
+}  // namespace
+}  // namespace volgraph::testing
