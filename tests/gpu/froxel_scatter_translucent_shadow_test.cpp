@@ -9,11 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/config/config.h"
-#include "graph/execute/executor.h"
-#include "passes/passes.h"
 #include "physics/translucency.h"
-#include "tests/gpu/backends.h"
+#include "tests/gpu/config_output_fixture.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
@@ -44,22 +41,9 @@ std::string fog_under_glass(bool tinted) {
     "outputs": ["fog_light.in_scatter"] } })";
 }
 
-class FroxelScatterTranslucentShadow : public OnEachBackend<Backend> {
+class FroxelScatterTranslucentShadow : public ConfigOutputOnEachBackend {
  protected:
-  Backend backend() const override { return GetParam(); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
-  Texels in_scatter(bool tinted) {
-    const LoadedConfig loaded = load_config_text("froxel_translucent_shadow.json", fog_under_glass(tinted), registry_);
-    scene_ = loaded.config.scene;
-    Executor executor(device(), loaded.graph, &scene_, {});
-    executor.run_frame();
-    return executor.read_output(0);
-  }
-  PassRegistry registry_;
-  Scene scene_;
+  Texels in_scatter(bool tinted) { return first_output("froxel_translucent_shadow.json", fog_under_glass(tinted)); }
 };
 
 TEST_P(FroxelScatterTranslucentShadow, TheFogBehindRedGlassCarriesItsTransmittance) {

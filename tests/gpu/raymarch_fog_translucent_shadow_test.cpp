@@ -8,10 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/config/config.h"
-#include "graph/execute/executor.h"
-#include "passes/passes.h"
-#include "tests/gpu/backends.h"
+#include "tests/gpu/config_output_fixture.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
@@ -39,22 +36,9 @@ std::string marched_fog_under_glass(bool tinted) {
     "outputs": ["fog.fog_scattering"] } })";
 }
 
-class RaymarchFogTranslucentShadow : public OnEachBackend<Backend> {
+class RaymarchFogTranslucentShadow : public ConfigOutputOnEachBackend {
  protected:
-  Backend backend() const override { return GetParam(); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
-  Texels scattering(bool tinted) {
-    const LoadedConfig loaded = load_config_text("raymarch_translucent_shadow.json", marched_fog_under_glass(tinted), registry_);
-    scene_ = loaded.config.scene;
-    Executor executor(device(), loaded.graph, &scene_, {});
-    executor.run_frame();
-    return executor.read_output(0);
-  }
-  PassRegistry registry_;
-  Scene scene_;
+  Texels scattering(bool tinted) { return first_output("raymarch_translucent_shadow.json", marched_fog_under_glass(tinted)); }
 };
 
 TEST_P(RaymarchFogTranslucentShadow, RaysThroughTheBeamLoseGreenAndBlueMoreThanRed) {
