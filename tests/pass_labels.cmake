@@ -10,7 +10,8 @@
 #   pass types or more reach (graph plumbing, the camera) is infrastructure, not a fact;
 # - a test source exercises a pass type when (1) it is named after it (`<pass>_test.cpp`),
 #   (2) it names it as a string ("froxel_scatter", or `"type": "froxel_scatter"` in a
-#   config it writes), (3) it names a config (".json" under configs/), whose pass types
+#   config it writes), it or a helper header of its own under tests/ (a pass's test file
+#   that builds its config with the family's shared helper), (3) it names a config (".json" under configs/), whose pass types
 #   it gets, or, where it names none of these, (4) its facts meet the pass's (it includes
 #   physics/phase.h, or runs a twin shader that includes phase.glsl, as froxel_scatter's
 #   shaders do): a test of shared physics is a test of every pass built on it.
@@ -283,6 +284,23 @@ foreach(_vg_type ${VOLGRAPH_PASS_TYPES})
   set_property(GLOBAL PROPERTY VOLGRAPH_PASS_FACTS_${_vg_type} "${_vg_facts_${_vg_type}}")
 endforeach()
 
+# _vg_test_helper_headers(FILE OUT): the headers under tests/ FILE includes, and theirs:
+# the helpers a split test file shares with its family (tests/gpu/closed_fog.h).
+function(_vg_test_helper_headers file out)
+  _vg_direct("${file}" direct)
+  set(helpers "")
+  foreach(reached ${direct})
+    if(reached MATCHES "^${PROJECT_SOURCE_DIR}/tests/.*\\.h$" AND NOT reached STREQUAL file)
+      _vg_test_helper_headers("${reached}" more)
+      list(APPEND helpers "${reached}" ${more})
+    endif()
+  endforeach()
+  if(helpers)
+    list(REMOVE_DUPLICATES helpers)
+  endif()
+  set(${out} "${helpers}" PARENT_SCOPE)
+endfunction()
+
 # volgraph_test_file_pass_types(FILE OUT): the pass types a test source exercises (the four
 # rules at the top of this file), sorted.
 function(volgraph_test_file_pass_types file out)
@@ -295,8 +313,14 @@ function(volgraph_test_file_pass_types file out)
     endif()
   endforeach()
   file(READ "${file}" text)
+  _vg_test_helper_headers("${file}" helpers)
+  set(named_text "${text}")
+  foreach(helper ${helpers})
+    file(READ "${helper}" helper_text)
+    string(APPEND named_text "\n${helper_text}")
+  endforeach()
   # A string that is not a JSON key ("scene": {…} is the scene, not the pass).
-  string(REGEX MATCHALL "\"[A-Za-z0-9_]+\"[ \t]*[^ \t:]" quoted "${text}")
+  string(REGEX MATCHALL "\"[A-Za-z0-9_]+\"[ \t]*[^ \t:]" quoted "${named_text}")
   foreach(word ${quoted})                                  # (2) the pass named
     string(REGEX REPLACE "^\"([A-Za-z0-9_]+)\".*$" "\\1" word "${word}")
     if(word IN_LIST VOLGRAPH_PASS_TYPES)

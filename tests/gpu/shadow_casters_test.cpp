@@ -1,6 +1,6 @@
 // Which surfaces the shadow map draws (plumbing::Surfaces::shadow_casters): an object with
 // cast_shadows false is left out, as the CPU reference leaves it out of its shadow rays,
-// and so is a translucent one (its shadow is translucent_shadow_map's: translucent_shadow_test.cpp).
+// and so is a translucent one (its shadow is translucent_shadow_map's: translucent_shadow_map_test.cpp).
 // A floor seen from above under a slanted sun, with a box above it (green albedo 0)
 // whose shadow falls beside it: against the image without the box, a box that casts
 // darkens floor pixels, one that does not changes only its own (magenta), and
