@@ -16,28 +16,15 @@
 namespace volgraph::testing {
 namespace {
 
-// The sheet 1 m square at height 1.5 around x = −1.5, the sun along (1, −1, 0): its beam falls
-// toward +x through the fog the camera (8 m up, looking down) sees.
+// Seen from 8 m above, looking down at the beam.
 std::string fog_under_glass(bool tinted) {
-  const std::string tint = tinted
-      ? R"({ "name": "tint", "type": "translucent_shadow_map", "params": { "resolution": 512 },
-             "inputs": { "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view" } },)"
-      : "";
-  const std::string tint_inputs = tinted ? R"(, "translucent_shadow": "tint.transmittance", "translucent_shadow_depth": "tint.depth")" : "";
-  return R"({ "output": { "size": [32, 32] },
-  "scene": { "camera": { "position": [0, 8, 0.01], "target": [0, 0, 0], "fov_y_deg": 30 },
-    "background": { "radiance": [0, 0, 0] },
-    "lights": [ { "type": "directional", "direction": [1, -1, 0], "irradiance": [3, 3, 3] } ],
-    "materials": { "white": { "albedo": [1, 1, 1] }, "red_glass": { "albedo": [1, 0, 0], "transmission": 1, "ior": 1.5 } },
-    "objects": [ { "shape": "plane", "size": [20, 1, 20], "material": "white" },
-                 { "shape": "plane", "size": [1, 1, 1], "material": "red_glass", "transform": { "translate": [-1.5, 1.5, 0] } } ],
-    "media": { "fog": { "albedo": [1, 1, 1], "extinction": [0.05, 0.05, 0.05], "g": 0 } } },
+  return "{ " + red_glass_in_fog("[32, 32]", R"({ "position": [0, 8, 0.01], "target": [0, 0, 0], "fov_y_deg": 30 })") + R"(,
   "graph": { "passes": [
-    { "name": "sun_shadow", "type": "shadow_map", "variant": "hard", "params": { "light": 0, "resolution": 512 } },)" + tint + R"(
+    { "name": "sun_shadow", "type": "shadow_map", "variant": "hard", "params": { "light": 0, "resolution": 512 } },)" + tint_pass(tinted) + R"(
     { "name": "fog_media", "type": "froxel_voxelize", "params": { "tile": 2, "slices": 32, "near": 0.1, "far": 12, "distribution": "linear", "jitter": false } },
     { "name": "fog_light", "type": "froxel_scatter", "variant": "hg",
       "inputs": { "media_scattering": "fog_media.media_scattering", "media_emission": "fog_media.media_emission",
-                  "frame": "fog_media.frame", "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view")" + tint_inputs + R"( } } ],
+                  "frame": "fog_media.frame", "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view")" + tint_inputs(tinted) + R"( } } ],
     "outputs": ["fog_light.in_scatter"] } })";
 }
 

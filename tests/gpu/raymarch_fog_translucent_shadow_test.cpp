@@ -14,25 +14,14 @@
 namespace volgraph::testing {
 namespace {
 
+// Seen from the side, so that view rays cross the beam.
 std::string marched_fog_under_glass(bool tinted) {
-  const std::string tint = tinted
-      ? R"({ "name": "tint", "type": "translucent_shadow_map", "params": { "resolution": 512 },
-             "inputs": { "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view" } },)"
-      : "";
-  const std::string tint_inputs = tinted ? R"(, "translucent_shadow": "tint.transmittance", "translucent_shadow_depth": "tint.depth")" : "";
-  return R"({ "output": { "size": [48, 32] },
-  "scene": { "camera": { "position": [0, 1, 6], "target": [-0.5, 0.8, 0], "fov_y_deg": 50 },
-    "background": { "radiance": [0, 0, 0] },
-    "lights": [ { "type": "directional", "direction": [1, -1, 0], "irradiance": [3, 3, 3] } ],
-    "materials": { "white": { "albedo": [1, 1, 1] }, "red_glass": { "albedo": [1, 0, 0], "transmission": 1, "ior": 1.5 } },
-    "objects": [ { "shape": "plane", "size": [20, 1, 20], "material": "white" },
-                 { "shape": "plane", "size": [1, 1, 1], "material": "red_glass", "transform": { "translate": [-1.5, 1.5, 0] } } ],
-    "media": { "fog": { "albedo": [1, 1, 1], "extinction": [0.05, 0.05, 0.05], "g": 0 } } },
+  return "{ " + red_glass_in_fog("[48, 32]", R"({ "position": [0, 1, 6], "target": [-0.5, 0.8, 0], "fov_y_deg": 50 })") + R"(,
   "graph": { "passes": [
-    { "name": "sun_shadow", "type": "shadow_map", "variant": "hard", "params": { "light": 0, "resolution": 512 } },)" + tint + R"(
+    { "name": "sun_shadow", "type": "shadow_map", "variant": "hard", "params": { "light": 0, "resolution": 512 } },)" + tint_pass(tinted) + R"(
     { "name": "lit", "type": "scene" },
     { "name": "fog", "type": "raymarch_fog", "variant": "hg", "params": { "steps": 128, "jitter": false, "max_distance": 20 },
-      "inputs": { "depth": "lit.depth", "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view")" + tint_inputs + R"( } } ],
+      "inputs": { "depth": "lit.depth", "shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view")" + tint_inputs(tinted) + R"( } } ],
     "outputs": ["fog.fog_scattering"] } })";
 }
 
