@@ -1,4 +1,4 @@
-// The cloud march under stress (issue 15), both backends: the camera below, inside, above
+// The cloud march under stress (Schneider & Vos 2015), both backends: the camera below, inside, above
 // and level with the layer's boundaries, the view ray tangent to the layer's top; coverage
 // 0 and 1; extinction from 1e-6 to the declared maximum (10 /m) in factors of 100; steps 1
 // and 1024 with one light sample. Every pixel of both outputs finite, T in [0, 1], radiance

@@ -105,7 +105,7 @@ TEST(CloudLighting, FiniteEverywhere) {
 }
 
 
-// ENERGY: a white cloud under a white sun against a white Lambertian slab (issue 15). The
+// ENERGY: a white cloud under a white sun against a white Lambertian slab (Wrenninge et al. 2013; RTR4 §14.4.2). The
 // cloud is a plane-parallel, homogeneous slab of vertical optical depth τ0, σs = σt (albedo
 // 1), lit by a sun of irradiance E = 1 at zenith cosine μ0 and shaded exactly as
 // cloud_march shades a sample: source E · cloud_octaves(σs, τ_sun, cosθ, …) with τ_sun = τ/μ0

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every pass type's tests are findable by its name (issue 31): for each pass type
+# Every pass type's tests are findable by its name: for each pass type
 # `volgraph passes` lists, some tests/<kind>/<pass>_test.cpp or tests/<kind>/<pass>_*_test.cpp
 # exists, or tests/passes_tested_elsewhere.txt names the file that holds its tests and why.
 # An allow-list entry must name an existing file and a pass that has no file of its own
