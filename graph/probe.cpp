@@ -27,7 +27,7 @@ std::string user_pass_name(const GraphPass& g) { return g.name.substr(0, g.name.
 
 }  // namespace
 
-uint32_t probe_slot(Graph& graph, const std::string& pass_dot_slot, const Where& where) {
+ResourceVersion find_probe(const Graph& graph, const std::string& pass_dot_slot, const Where& where) {
   auto fail = [&](const std::string& message) { throw ConfigError({{where, message}}); };
   const std::string request = pass_dot_slot.substr(0, pass_dot_slot.find('='));
   const size_t dot = request.find('.');
@@ -41,10 +41,13 @@ uint32_t probe_slot(Graph& graph, const std::string& pass_dot_slot, const Where&
     fail(pass + "." + slot + " is modified later by pass \"" + user_pass_name(graph.passes[r.version_writers[version + 1]]) +
          "\"; use that pass's slot");
   }
-  if (std::find(graph.outputs.begin(), graph.outputs.end(), ResourceVersion{use->resource, version}) == graph.outputs.end()) {
-    graph.outputs.push_back({use->resource, version});
-  }
-  return use->resource;
+  return {use->resource, version};
+}
+
+uint32_t probe_slot(Graph& graph, const std::string& pass_dot_slot, const Where& where) {
+  const ResourceVersion probed = find_probe(graph, pass_dot_slot, where);
+  if (std::find(graph.outputs.begin(), graph.outputs.end(), probed) == graph.outputs.end()) graph.outputs.push_back(probed);
+  return probed.resource;
 }
 
 std::vector<std::string> probe_names(const Graph& graph) {
@@ -56,9 +59,8 @@ std::vector<std::string> probe_names(const Graph& graph) {
       if (kind != ResourceKind::texture2d && kind != ResourceKind::texture3d) continue;
       const std::string name = user_pass_name(g) + "." + g.decl->slots[u.slot].name;
       if (std::find(names.begin(), names.end(), name) != names.end()) continue;
-      Graph trial = graph;
       try {
-        probe_slot(trial, name, {});
+        find_probe(graph, name, {});
         names.push_back(name);
       } catch (const ConfigError&) {
         // modified later by another pass: that pass's slot is listed instead

@@ -13,10 +13,13 @@
 
 namespace volgraph {
 
-// Parses "PASS.SLOT" (the part before any '='), finds the last use of that slot by the pass
-// or its steps ("pass/step"), and keeps that version as a graph output. Throws ConfigError at
-// `where`: no such pass, no bound slot, or the slot modified later by another pass (its
-// message names the pass to probe instead).
+// Parses "PASS.SLOT" (the part before any '='): the version the pass or its steps
+// ("pass/step") leave in that slot. Throws ConfigError at `where`: no such pass, no bound
+// slot, or the slot modified later by another pass (its message names the pass to probe
+// instead). The graph is not changed.
+ResourceVersion find_probe(const Graph& graph, const std::string& pass_dot_slot, const Where& where);
+
+// find_probe's version kept as a graph output (once); returns its resource.
 uint32_t probe_slot(Graph& graph, const std::string& pass_dot_slot, const Where& where);
 
 // Every "PASS.SLOT" of the graph whose resource is a texture and that probe_slot accepts:

@@ -187,13 +187,12 @@ std::vector<Dump> add_dumps(const std::vector<std::string>& requests, Graph& gra
     if (dot == std::string::npos || eq == std::string::npos || eq < dot) fail("expected --dump PASS.SLOT=FILE");
     const std::string file = request.substr(eq + 1);
     // --dump PASS.SLOT=FILE: what the pass leaves in the slot, kept to the end of the frame (graph/probe.h).
-    Graph probed = graph;
-    const uint32_t resource = probe_slot(probed, request, where);
+    const uint32_t resource = find_probe(graph, request, where).resource;
     const bool buffer = graph.resources[resource].desc.kind == ResourceKind::buffer;
     if (buffer ? file.size() < 4 || file.compare(file.size() - 4, 4, ".bin") != 0 : !image_format_for(file)) {
       fail(buffer ? "a buffer dumps to a .bin file" : "a texture dumps to a .png, .exr or .pfm file");
     }
-    graph = std::move(probed);
+    probe_slot(graph, request, where);
     dumps.push_back({resource, file});
   }
   return dumps;

@@ -1,5 +1,7 @@
 #include "viewer/presenter.h"
 
+#include "viewer/window_backend.h"
+
 #include <algorithm>
 #include <cstring>
 #include <string>
@@ -26,11 +28,6 @@ VkSurfaceFormatKHR pick_format(VkPhysicalDevice physical, VkSurfaceKHR surface) 
 }
 
 bool bgra(VkFormat f) { return f == VK_FORMAT_B8G8R8A8_UNORM; }
-
-// Swaps red and blue in place (RGBA ↔ BGRA).
-void swap_red_blue(uint8_t* texels, size_t count) {
-  for (size_t i = 0; i < count; ++i) std::swap(texels[i * 4], texels[i * 4 + 2]);
-}
 
 VkImageMemoryBarrier2 image_barrier(VkImage image, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access, VkImageLayout from,
                                     VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access, VkImageLayout to) {

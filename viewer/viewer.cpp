@@ -212,9 +212,8 @@ class Loop {
   std::string show(const std::string& name) {
     const std::string next = name == "output" ? "" : name;
     if (!next.empty()) {
-      Graph trial = source_.current().graph;
       try {
-        probe_slot(trial, next, {"<view>", "show " + next, 0});
+        find_probe(source_.current().graph, next, {"<view>", "show " + next, 0});
       } catch (const ConfigError& e) {
         return applied(e.what());
       }

@@ -48,11 +48,6 @@ wgpu::Surface create_surface(const webgpu::DawnContext& context, GLFWwindow* win
 
 bool has(wgpu::TextureUsage set, wgpu::TextureUsage usage) { return (set & usage) == usage; }
 
-// Swaps red and blue in place (RGBA ↔ BGRA).
-void swap_red_blue(uint8_t* texels, size_t count) {
-  for (size_t i = 0; i < count; ++i) std::swap(texels[i * 4], texels[i * 4 + 2]);
-}
-
 class WebGpuWindow final : public WindowBackend {
  public:
   WebGpuWindow(GLFWwindow* window, const ViewOptions&)

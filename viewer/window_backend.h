@@ -3,7 +3,9 @@
 // The frame reaches the window by a CPU round trip on both (docs/viewer.md "Presenting").
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +19,11 @@ namespace volgraph::viewer {
 
 class Overlay;
 struct ViewOptions;
+
+// Swaps red and blue in place (RGBA ↔ BGRA): for swapchains that offer BGRA only.
+inline void swap_red_blue(uint8_t* texels, size_t count) {
+  for (size_t i = 0; i < count; ++i) std::swap(texels[i * 4], texels[i * 4 + 2]);
+}
 
 class WindowBackend {
  public:

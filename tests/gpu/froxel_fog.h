@@ -19,6 +19,7 @@
 #include "passes/passes.h"
 #include "physics/camera.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/froxel_chain_json.h"
 #include "tests/gpu/fog_scenes.h"
 
 namespace volgraph::testing {
@@ -62,14 +63,7 @@ class FroxelFogFixture : public OnEachBackend<> {
       { "name": "fog_light", "type": "froxel_scatter", "variant": ")" << c.scatter_variant << R"(", "params": )" << c.scatter_params << R"(,
         "inputs": { "media_scattering": "fog_media.media_scattering", "media_emission": "fog_media.media_emission",
                     "frame": "fog_media.frame")" << (c.opacity_shadow_map ? kOpacityShadowInputs : "") << R"( } },
-      { "name": "fog_integral", "type": "scatter_integrate", "variant": ")" << c.integrate_variant << R"(",
-        "inputs": { "in_scatter": "fog_light.in_scatter", "media_scattering": "fog_media.media_scattering",
-                    "media_absorption": "fog_media.media_absorption", "frame": "fog_media.frame" } },
-      { "name": "fog_apply", "type": "froxel_apply",
-        "inputs": { "color": "lit.color", "depth": "lit.depth", "integrated_scattering": "fog_integral.integrated_scattering",
-                    "integrated_transmittance": "fog_integral.integrated_transmittance", "frame": "fog_media.frame" } },
-      { "name": "out", "type": "composite", "variant": "none", "inputs": { "color": "fog_apply.color" } } ],
-      "outputs": ["out.output"] } })";
+      { "name": "fog_integral", "type": "scatter_integrate", "variant": ")" << c.integrate_variant << R"(",)" << kFroxelChainEnd;
     return o.str();
   }
 

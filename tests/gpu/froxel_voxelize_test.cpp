@@ -34,6 +34,7 @@
 #include "physics/froxel.h"
 #include "physics/media_field.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/froxel_chain_json.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
@@ -61,14 +62,7 @@ std::string slab_config(int slices) {
       "params": { "tile": 1, "slices": )" << slices << R"(, "near": 0.5, "far": 16.5, "distribution": "linear", "jitter": false } },
     { "name": "fog_light", "type": "froxel_scatter", "variant": "isotropic",
       "inputs": { "media_scattering": "fog_media.media_scattering", "media_emission": "fog_media.media_emission", "frame": "fog_media.frame" } },
-    { "name": "fog_integral", "type": "scatter_integrate", "variant": "hillaire",
-      "inputs": { "in_scatter": "fog_light.in_scatter", "media_scattering": "fog_media.media_scattering",
-                  "media_absorption": "fog_media.media_absorption", "frame": "fog_media.frame" } },
-    { "name": "fog_apply", "type": "froxel_apply",
-      "inputs": { "color": "lit.color", "depth": "lit.depth", "integrated_scattering": "fog_integral.integrated_scattering",
-                  "integrated_transmittance": "fog_integral.integrated_transmittance", "frame": "fog_media.frame" } },
-    { "name": "out", "type": "composite", "variant": "none", "inputs": { "color": "fog_apply.color" } } ],
-    "outputs": ["out.output"] } })";
+    { "name": "fog_integral", "type": "scatter_integrate", "variant": "hillaire",)" << kFroxelChainEnd;
   return o.str();
 }
 

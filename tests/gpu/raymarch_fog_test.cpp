@@ -38,6 +38,7 @@
 #include "reference/image_render.h"
 #include "reference/renderer.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/froxel_chain_json.h"
 #include "tests/support/adaptive_simpson.h"
 #include "tests/gpu/fog_scenes.h"
 #include "shaders/include/phase_codes.h"
@@ -384,14 +385,7 @@ std::string point_fog_froxel_chain(const std::string& variant) {
     { "name": "fog_media", "type": "froxel_voxelize", "params": { "tile": 1, "slices": 256, "near": 0.01, "far": 20, "distribution": "linear", "jitter": false } },
     { "name": "fog_light", "type": "froxel_scatter", "variant": ")" << variant << R"(", "params": { "shadow_steps": 1, )" << kDualLobes << R"( },
       "inputs": { "media_scattering": "fog_media.media_scattering", "media_emission": "fog_media.media_emission", "frame": "fog_media.frame" } },
-    { "name": "fog_integral", "type": "scatter_integrate", "variant": "hillaire",
-      "inputs": { "in_scatter": "fog_light.in_scatter", "media_scattering": "fog_media.media_scattering",
-                  "media_absorption": "fog_media.media_absorption", "frame": "fog_media.frame" } },
-    { "name": "fog_apply", "type": "froxel_apply",
-      "inputs": { "color": "lit.color", "depth": "lit.depth", "integrated_scattering": "fog_integral.integrated_scattering",
-                  "integrated_transmittance": "fog_integral.integrated_transmittance", "frame": "fog_media.frame" } },
-    { "name": "out", "type": "composite", "variant": "none", "inputs": { "color": "fog_apply.color" } } ],
-    "outputs": ["out.output"] } })";
+    { "name": "fog_integral", "type": "scatter_integrate", "variant": "hillaire",)" << kFroxelChainEnd;
   return o.str();
 }
 
