@@ -46,6 +46,15 @@ Real phase_hg(Real g, Real cos_theta) {
   return kInvFourPi<Real> * one_minus_g * (Real(1) + g) / denominator;
 }
 
+// Inverse CDF of Henyey–Greenstein's cosine (Henyey & Greenstein 1941; e.g. Pharr, Jakob,
+// Humphreys, PBRT 4th ed. §11.3.1): the cosine whose density is phase_hg(g, ·) · 2π for
+// uniform xi in [0, 1); uniform for |g| < 1e-3.
+inline double sample_hg_cosine(double g, double xi) {
+  if (std::abs(g) < 1e-3) return 2 * xi - 1;
+  const double s = (1 - g * g) / (1 - g + 2 * g * xi);
+  return std::clamp((1 + g * g - s * s) / (2 * g), -1.0, 1.0);
+}
+
 // Cornette & Shanks 1992 ("Physically reasonable analytic expression for the
 // single-scattering phase function", Applied Optics 31, eq. 4), as Bruneton 2017's
 // MiePhaseFunction: 3/(8π) (1 − g²)(1 + cos²θ) / ((2 + g²)(1 + g² − 2g cosθ)^1.5); the

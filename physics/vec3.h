@@ -31,4 +31,14 @@ inline Vec3 exp_negative(const Vec3& v) { return {std::exp(-v[0]), std::exp(-v[1
 inline double largest(const Vec3& v) { return std::max({v[0], v[1], v[2]}); }
 inline bool is_zero(const Vec3& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 
+// A unit vector at cosine `cos_theta` from unit `axis`, at azimuth φ about it (the
+// Monte Carlo references' scattered directions).
+inline Vec3 around(const Vec3& axis, double cos_theta, double phi) {
+  const Vec3 helper = std::abs(axis[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  const Vec3 b1 = normalize(cross(axis, helper));
+  const Vec3 b2 = cross(axis, b1);
+  const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
+  return normalize(add(scaled(axis, cos_theta), add(scaled(b1, sin_theta * std::cos(phi)), scaled(b2, sin_theta * std::sin(phi)))));
+}
+
 }  // namespace volgraph::physics

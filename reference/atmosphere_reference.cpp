@@ -8,6 +8,7 @@
 #include "physics/atmosphere_sky.h"
 #include "physics/camera.h"
 #include "physics/phase.h"
+#include "reference/random.h"
 
 namespace volgraph::reference {
 namespace {
@@ -29,47 +30,11 @@ Vec3 sun_radiance(const AtmosphereSun& sun) { return scaled(sun.irradiance, phys
 
 double altitude_of(const Atmosphere& a, const Vec3& p) { return std::max(0.0, length_of(p) - a.bottom_radius); }
 
-// Deterministic random numbers: splitmix64 (Steele, Lea, Flood 2014) seeds an mt19937_64
-// whose 53 high bits make a double in [0, 1) (std's distributions differ between libraries).
-uint64_t splitmix64(uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-
-class Random {
- public:
-  explicit Random(uint64_t seed) : engine_(seed) {}
-  double uniform() { return double(engine_() >> 11) * 0x1.0p-53; }
-
- private:
-  std::mt19937_64 engine_;
-};
-
-// A unit vector at cosine `cos_theta` from unit `axis`, at azimuth φ about it.
-Vec3 around(const Vec3& axis, double cos_theta, double phi) {
-  const Vec3 helper = std::abs(axis[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-  const Vec3 b1 = normalize(physics::cross(axis, helper));
-  const Vec3 b2 = physics::cross(axis, b1);
-  const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
-  return normalize(add(scaled(axis, cos_theta),
-                       add(scaled(b1, sin_theta * std::cos(phi)), scaled(b2, sin_theta * std::sin(phi)))));
-}
-
 // Inverse CDF of the Rayleigh phase's cosine, p(μ) ∝ 1 + μ²: the root of μ³ + 3μ = 8ξ − 4
 // by Cardano's formula.
 double sample_rayleigh_cosine(double xi) {
   const double z = 4 * xi - 2, root = std::sqrt(z * z + 1);
   return std::clamp(std::cbrt(z + root) + std::cbrt(z - root), -1.0, 1.0);
-}
-
-// Inverse CDF of Henyey–Greenstein's cosine (Henyey & Greenstein 1941; e.g. Pharr, Jakob,
-// Humphreys, PBRT 4th ed. §11.3.1), uniform for |g| < 1e-3.
-double sample_hg_cosine(double g, double xi) {
-  if (std::abs(g) < 1e-3) return 2 * xi - 1;
-  const double s = (1 - g * g) / (1 - g + 2 * g * xi);
-  return std::clamp((1 + g * g - s * s) / (2 * g), -1.0, 1.0);
 }
 
 // Where a ray from `p` along unit `d` ends (the ground or the top), the atmosphere's
@@ -324,7 +289,7 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
       const double total_h = rayleigh[hero] + mie[hero];
       if (!(total_h > 0)) return std::nullopt;
       const double cos_theta = random.uniform() * total_h < rayleigh[hero] ? sample_rayleigh_cosine(random.uniform())
-                                                                          : sample_hg_cosine(g, random.uniform());
+                                                                          : physics::sample_hg_cosine(g, random.uniform());
       const double p_rayleigh = physics::phase_rayleigh(cos_theta), p_mie = physics::mie_phase(a, cos_theta);
       const double q_mie = std::abs(g) < 1e-3 ? physics::phase_isotropic<double>() : physics::phase_hg(g, cos_theta);
       Vec3 f, p;
@@ -334,13 +299,13 @@ ScatteringOrders AtmosphereReference::scatter(const Vec3& position, const Vec3& 
         p[c] = total > 0 ? (rayleigh[c] * p_rayleigh + mie[c] * q_mie) / total : 0.0;
       }
       beta.step(f, p, hero);
-      return around(d, cos_theta, 2 * kPi * random.uniform());
+      return physics::around(d, cos_theta, 2 * kPi * random.uniform());
     };
     // Cosine-weighted about the ground's normal (every strategy alike): throughput × albedo.
     const auto reflect = [&](const Vec3& y, Throughput& beta) {
       beta.f_over_hero = times(beta.f_over_hero, a.ground_albedo);
       const double xi = random.uniform();
-      return around(normalize(y), std::sqrt(xi), 2 * kPi * random.uniform());
+      return physics::around(normalize(y), std::sqrt(xi), 2 * kPi * random.uniform());
     };
     const auto transmittance_along = [&](const Vec3& y, const Vec3& d, double t) {
       const double r = std::clamp(length_of(y), a.bottom_radius, a.top_radius);

@@ -236,14 +236,18 @@ double CloudReference::density(const Vec3& p) const {
 // The sun's optical depth over light_distance, light_steps midpoint samples; ∞ where the
 // ground hides the sun.
 double CloudReference::sun_optical_depth(const Vec3& p) const {
-  const Vec3 centre{0, -(radius_ + origin_altitude_), 0};
-  double g0 = 0, g1 = 0;
-  if (altitude(p) >= 0 && sphere_roots(p, to_sun_, centre, radius_, g0, g1) && g1 > 0) return std::numeric_limits<double>::infinity();
+  if (ground_hides_sun(p)) return std::numeric_limits<double>::infinity();
   const int n = std::max(settings_.light_steps, 1);
   const double ds = settings_.light_distance / n;
   double tau = 0;
   for (int j = 0; j < n; ++j) tau += layer_.extinction * density(add(p, scaled(to_sun_, (j + 0.5) * ds))) * ds;
   return tau;
+}
+
+bool CloudReference::ground_hides_sun(const Vec3& p) const {
+  const Vec3 centre{0, -(radius_ + origin_altitude_), 0};
+  double g0 = 0, g1 = 0;
+  return altitude(p) >= 0 && sphere_roots(p, to_sun_, centre, radius_, g0, g1) && g1 > 0;
 }
 
 // cloud_march.comp's source(): the sun through the octaves (powder off) plus the ambient.

@@ -97,6 +97,15 @@ class CloudReference {
   const CloudTexture& detail() const { return detail_; }
   const CloudTexture& curl() const { return curl_; }
   const CloudReferenceSettings& settings() const { return settings_; }
+  // What the brute-force walk (reference/cloud_path_tracer.h) shares with this reference:
+  // the layer, the camera, the sun (unit direction toward it, irradiance; `has_sun` false:
+  // the ambient alone) and the ambient (the sky's added), and the ground test for the sun.
+  const CloudLayer& layer() const { return layer_; }
+  const Vec3& camera() const { return camera_; }
+  bool has_sun() const { return has_sun_; }
+  const Vec3& to_sun() const { return to_sun_; }
+  const Vec3& sun_irradiance() const { return sun_irradiance_; }
+  bool ground_hides_sun(const Vec3& p) const;
 
  private:
   double altitude(const Vec3& p) const;
