@@ -7,7 +7,9 @@
 // found, then one coarse step back and fine steps), a secondary march of `light_steps`
 // toward the sun per fine sample, the lighting of shaders/include/cloud_lighting.h, and
 // Hillaire's energy-conserving step. Writes rgb the in-scattered radiance, a the
-// transmittance (and the transmittance again as rgb in a second image for fog_apply).
+// transmittance (and the transmittance again as rgb in a second image for fog_apply), and
+// the transmittance-weighted mean distance of what the layer sends (the clouds' depth for
+// aerial perspective and reprojection: Hillaire 2016's cloud depth).
 #include "include/cloud_density.h"
 #include "include/cloud_lighting.h"
 #include "include/depth_buffer.glsl"
@@ -25,6 +27,7 @@ layout(set = 0, binding = 5) uniform texture2D curl;
 layout(set = 0, binding = 6) uniform sampler noise;  // linear, repeat: the textures tile
 layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D clouds;
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D cloud_transmittance;
+layout(set = 0, binding = 9, r32f) uniform writeonly image2D cloud_distance;
 
 const float NEGLIGIBLE = 1e-3;    // early termination: below this transmittance nothing behind shows (kept, not zeroed)
 const float HALF_MAX = 65504.0;   // rgba16f's largest value
@@ -88,12 +91,21 @@ vec3 source(vec3 p, float rho, float cos_theta) {
   return s;
 }
 
-// Hillaire 2015's energy-conserving step (RTR4 eq. 14.16) for a grey extinction.
-void integrate(inout vec3 radiance, inout float transmittance, vec3 s, float sigma_t, float dt) {
+// The march's running sums: radiance, transmittance and the distances weighted by the
+// opacity each step adds (Σ (T_before − T_after)·t: their mean is the clouds' depth).
+struct MarchSums {
+  vec3 radiance;
+  float transmittance;
+  float weighted_distance;
+};
+
+// Hillaire 2015's energy-conserving step (RTR4 eq. 14.16) for a grey extinction, at distance t.
+void integrate(inout MarchSums sums, vec3 s, float sigma_t, float dt, float t) {
   const float step_t = exp(-sigma_t * dt);
   const vec3 s_int = sigma_t > 0.0 ? (s - s * step_t) / sigma_t : s * dt;
-  radiance += transmittance * s_int;
-  transmittance *= step_t;
+  sums.radiance += sums.transmittance * s_int;
+  sums.weighted_distance += sums.transmittance * (1.0 - step_t) * t;
+  sums.transmittance *= step_t;
 }
 
 // Interleaved gradient noise (Jimenez 2014), scrolled by 5.588238 pixels a frame: in [0, 1)
@@ -112,7 +124,7 @@ float step_jitter(ivec2 texel) {
 // The march over [t_in, t_out]: coarse steps (2 × dt) on the base density until it is
 // non-zero, then one coarse step back and fine steps; back to coarse after
 // EMPTY_FINE_STEPS empty fine samples. Stops when the transmittance is negligible.
-void march(vec3 o, vec3 d, float t_in, float t_out, float jitter, inout vec3 radiance, inout float transmittance) {
+void march(vec3 o, vec3 d, float t_in, float t_out, float jitter, inout MarchSums sums) {
   const int steps = max(params.steps.x, 1);
   const float dt = (t_out - t_in) / float(steps);
   const float cos_theta = dot(params.sun.xyz, d);  // the light's travel −sun against the scattered −d
@@ -131,12 +143,13 @@ void march(vec3 o, vec3 d, float t_in, float t_out, float jitter, inout vec3 rad
       continue;
     }
     const float h = min(dt, t_out - t);
-    const vec3 p = o + (t + jitter * h) * d;
+    const float ts = t + jitter * h;
+    const vec3 p = o + ts * d;
     const float rho = density(p);
     if (rho > 0.0) {
       empty = 0;
-      integrate(radiance, transmittance, source(p, rho, cos_theta), cloud_extinction(params.cloud.z, rho), h);
-      if (transmittance < NEGLIGIBLE) return;
+      integrate(sums, source(p, rho, cos_theta), cloud_extinction(params.cloud.z, rho), h, ts);
+      if (sums.transmittance < NEGLIGIBLE) return;
     } else if (++empty >= EMPTY_FINE_STEPS) {
       coarse = true;
     }
@@ -150,6 +163,14 @@ float finite_in(float v, float hi, float fallback) { return (v >= 0.0 && v <= hi
 vec3 finite_radiance(vec3 l) { return vec3(finite_in(l.r, HALF_MAX, 0.0), finite_in(l.g, HALF_MAX, 0.0), finite_in(l.b, HALF_MAX, 0.0)); }
 float finite_transmittance(float t) { return finite_in(t, 1.0, t < 0.0 ? 0.0 : 1.0); }
 
+// The clouds' depth: the opacity-weighted mean distance of the march's samples; where
+// nothing was extinguished the layer's entry (0 where the ray misses the layer).
+float mean_distance(MarchSums sums, float t_in, float t_out) {
+  const float opacity = 1.0 - sums.transmittance;
+  const float t = opacity > 1e-6 ? sums.weighted_distance / opacity : (t_out > t_in ? t_in : 0.0);
+  return finite_in(t, 3.0e38, 0.0);
+}
+
 void main() {
   const ivec2 texel = ivec2(gl_GlobalInvocationID.xy), size = imageSize(clouds);
   if (any(greaterThanEqual(texel, size))) return;
@@ -157,16 +178,16 @@ void main() {
   const vec3 ray = view_ray(view, grid_ndc(vec2(texel), vec2(0.0), vec2(size)));
   const float ray_length = length(ray);
   const vec3 d = ray / ray_length, o = params.view_position.xyz;
-  vec3 radiance = vec3(0.0);
-  float transmittance = 1.0;
-  float t_in, t_out;
+  MarchSums sums = MarchSums(vec3(0.0), 1.0, 0.0);
+  float t_in = 0.0, t_out = 0.0;
   if (params.cloud.x > 0.0 && layer_segment(o, d, t_in, t_out)) {
     const float depth = covered_depth(scene_depth, nearest, texel, size);
     const float surface = depth < 1.0 ? linear_view_depth(depth, params.view_position.w, params.view_forward.w) * ray_length : 3.0e38;
     t_out = min(t_out, min(surface, params.cloud.w));
-    if (t_out > t_in) march(o, d, t_in, t_out, step_jitter(texel), radiance, transmittance);
+    if (t_out > t_in) march(o, d, t_in, t_out, step_jitter(texel), sums);
   }
-  const float tr = finite_transmittance(transmittance);
-  imageStore(clouds, texel, vec4(finite_radiance(radiance), tr));
+  const float tr = finite_transmittance(sums.transmittance);
+  imageStore(clouds, texel, vec4(finite_radiance(sums.radiance), tr));
   imageStore(cloud_transmittance, texel, vec4(tr, tr, tr, 1.0));
+  imageStore(cloud_distance, texel, vec4(mean_distance(sums, t_in, t_out), 0.0, 0.0, 0.0));
 }

@@ -72,6 +72,9 @@ struct CloudMarchTable : PassTable {
                              "rgb the layer's in-scattered radiance toward the camera, a the transmittance through it");
   SlotHandle transmittance = output("transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
                                     SizeSpec::of_output(), "the transmittance through the layer in rgb (fog_apply's fog_transmittance)");
+  SlotHandle distance = output("distance", ResourceKind::texture2d, Usage::storage_write, Format::r32_float, SizeSpec::of_output(),
+                               "the clouds' depth: the opacity-weighted mean distance (m) of the march's samples (the layer's entry "
+                               "where it met no cloud, 0 where the ray misses the layer)");
 };
 
 // Wrenninge et al. 2013's energy condition a ≤ b (RTR4 14.4.2): refused with one message.
@@ -118,7 +121,7 @@ class CloudMarchExecution final : public PassExecution {
                    bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(shader::shape, c.view(t_.shape)),
                    bind(shader::detail, c.view(t_.detail)), bind(shader::curl, c.view(t_.curl)),
                    bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)), bind(shader::clouds, c.view(t_.clouds)),
-                   bind(shader::cloud_transmittance, c.view(t_.transmittance))});
+                   bind(shader::cloud_transmittance, c.view(t_.transmittance)), bind(shader::cloud_distance, c.view(t_.distance))});
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.clouds));
   }
 
