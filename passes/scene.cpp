@@ -6,7 +6,6 @@
 // and the sun through the cloud layer, exp(−τ) from a cloud_shadow_map, when one is),
 // emissive surfaces and the background radiance.
 #include <cstring>
-#include <stdexcept>
 #include <vector>
 
 #include "graph/execute/pass_execution.h"
@@ -134,8 +133,6 @@ class SceneExecution final : public PassExecution {
     media_shadowed_ = shadowed_ && s.bound(t_.media_shadow);
     translucent_shadowed_ = shadowed_ && s.bound(t_.translucent_shadow) && s.bound(t_.translucent_shadow_depth);
     cloud_shadowed_ = s.bound(t_.cloud_shadow) && s.bound(t_.cloud_shadow_view);
-    if (cloud_shadowed_ && (media_shadowed_ || translucent_shadowed_))
-      throw std::runtime_error(s.name() + ": cloud_shadow together with media_shadow or translucent_shadow has no shader yet");
     RenderPipelineDesc pd;
     pd.label = "scene";
     pd.vertex_buffers = {plumbing::SceneGeometry::vertex_layout()};
@@ -201,10 +198,13 @@ class SceneExecution final : public PassExecution {
 
   // Set 2 as wired: the shadow map, with the media's opacity map and the translucent casters' map, and the cloud shadow.
   const char* fragment_shader() const {
-    if (cloud_shadowed_) return shadowed_ ? "scene_shadowed_cloud_shadowed.frag" : "scene_cloud_shadowed.frag";
-    if (!shadowed_) return "scene.frag";
-    if (media_shadowed_) return translucent_shadowed_ ? "scene_media_translucent_shadowed.frag" : "scene_media_shadowed.frag";
-    return translucent_shadowed_ ? "scene_translucent_shadowed.frag" : "scene_shadowed.frag";
+    if (!shadowed_) return cloud_shadowed_ ? "scene_cloud_shadowed.frag" : "scene.frag";
+    if (media_shadowed_) {
+      if (translucent_shadowed_) return cloud_shadowed_ ? "scene_media_translucent_shadowed_cloud_shadowed.frag" : "scene_media_translucent_shadowed.frag";
+      return cloud_shadowed_ ? "scene_media_shadowed_cloud_shadowed.frag" : "scene_media_shadowed.frag";
+    }
+    if (translucent_shadowed_) return cloud_shadowed_ ? "scene_translucent_shadowed_cloud_shadowed.frag" : "scene_translucent_shadowed.frag";
+    return cloud_shadowed_ ? "scene_shadowed_cloud_shadowed.frag" : "scene_shadowed.frag";
   }
 
   gpu::SceneFrame frame_of(PassContext& c) {

@@ -5,6 +5,7 @@
 // samples, the density cloud_march's (shaders/include/cloud_layer.glsl, the same text). The
 // square's placement is cloud_shadow_view() (passes/clouds/cloud_shadow_view.h), written to
 // `view` for the readers. Shader: shaders/cloud_shadow_map.comp.
+#include <array>
 #include <cstddef>
 #include <span>
 
@@ -19,9 +20,6 @@ namespace volgraph {
 namespace {
 
 namespace cloud_shadow_map_shader = shaders::cloud_shadow_map_comp;
-
-constexpr double kCloudShadowEarthRadius = 6360e3;  // m: the planet without an atmosphere (cloud_march's)
-constexpr double kCloudShadowFramesPerSecond = 60;  // the wind's clock, as cloud_march's: the clouds and their shadows move together
 
 struct CloudShadowMapTable : PassTable {
   CloudShadowMapTable()
@@ -78,12 +76,12 @@ class CloudShadowMapExecution final : public PassExecution {
     p.plane = view.plane;
     p.to_sun = view.to_sun;
     p.layer[0] = float(layer.bottom_altitude), p.layer[1] = float(layer.top_altitude);
-    p.layer[2] = float(scene.atmosphere ? scene.atmosphere->bottom_radius : kCloudShadowEarthRadius);
-    p.layer[3] = float(scene.atmosphere ? scene.atmosphere->origin_altitude : 0);
+    p.layer[2] = float(clouds::planet_radius(scene));
+    p.layer[3] = float(clouds::origin_altitude(scene));
     p.cloud[0] = float(layer.coverage), p.cloud[1] = float(layer.type), p.cloud[2] = float(layer.extinction);
     p.scales[0] = float(layer.shape_scale), p.scales[1] = float(layer.detail_scale), p.scales[2] = float(c.param(t_.curl_strength));
-    const double seconds = double(c.frame) / kCloudShadowFramesPerSecond;
-    for (int i = 0; i < 3; ++i) p.wind[i] = float(layer.wind[size_t(i)] * seconds);
+    const std::array<double, 3> wind = clouds::wind_offset(layer, c.frame);  // the clouds and their shadows move together
+    for (int i = 0; i < 3; ++i) p.wind[i] = float(wind[size_t(i)]);
     p.steps[0] = int32_t(c.param(t_.steps));
     return p;
   }

@@ -10,31 +10,22 @@
 #include <cstddef>
 
 #include "graph/scene/scene.h"
+#include "passes/clouds/cloud_layer.h"
 #include "shaders/include/cloud_shadow_view.h"
 
 namespace volgraph {
 
-// The scene's sun: the atmosphere's sun light, else its first directional light; none: -1
-// (cloud_march.cpp's rule).
-inline int cloud_shadow_sun_index(const Scene& scene) {
-  if (scene.atmosphere && scene.atmosphere->sun_light >= 0) return scene.atmosphere->sun_light;
-  for (size_t i = 0; i < scene.lights.size(); ++i)
-    if (scene.lights[i].type == LightType::directional) return int(i);
-  return -1;
-}
-
 // The scene must have a cloud layer.
 inline gpu::CloudShadowView cloud_shadow_view(const Scene& scene, double extent, int size) {
-  const double origin_altitude = scene.atmosphere ? scene.atmosphere->origin_altitude : 0;
   const double texel = extent / size;
   const auto snapped = [&](double x) { return std::round(x / texel) * texel; };
   gpu::CloudShadowView v{};
   v.plane[0] = float(snapped(scene.camera.position[0]));
-  v.plane[1] = float(scene.clouds->bottom_altitude - origin_altitude);  // world y = 0 is at the origin's altitude
+  v.plane[1] = float(scene.clouds->bottom_altitude - clouds::origin_altitude(scene));  // world y = 0 is at the origin's altitude
   v.plane[2] = float(snapped(scene.camera.position[2]));
   v.plane[3] = float(extent);
   v.to_sun[3] = -1;
-  if (const int sun = cloud_shadow_sun_index(scene); sun >= 0) {
+  if (const int sun = clouds::sun_index(scene); sun >= 0) {
     const Vec3& d = scene.lights[size_t(sun)].direction;
     const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     for (int i = 0; i < 3; ++i) v.to_sun[i] = float(-d[size_t(i)] / n);

@@ -22,12 +22,15 @@ struct ShadowCase {
   std::string sun = "[0.3, -0.8, -0.5]";
   std::string clouds = R"("coverage": 0.6, "wind": [0, 0, 0])";
   std::string params = R"({ "size": 32, "extent": 40000, "steps": 32 })";
+  bool shadow_map = false;  // the scenes also read a shadow map of the sun (another of the scene's shaders)
 };
 
 // The ground seen from 10 m straight down through a 10° lens (a 1.7 m patch: one point for a
 // 1250 m texel), the map, and the scene twice: `lit` reads the map, `bare` does not.
 // Outputs: the map's τ, lit's and bare's colours.
 std::string shadow_config_text(const ShadowCase& k) {
+  const std::string sun_shadow = k.shadow_map ? R"({ "name": "sun_shadow", "type": "shadow_map" },)" : "";
+  const std::string shadow_inputs = k.shadow_map ? R"("shadow_map": "sun_shadow.depth", "light_view": "sun_shadow.light_view")" : "";
   return R"({ "output": { "size": [8, 8] },
   "scene": { "camera": { "position": [0, 10, 0], "target": [0, 0, -0.01], "fov_y_deg": 10 },
     "materials": { "grey": { "albedo": [0.5, 0.5, 0.5] } },
@@ -38,8 +41,10 @@ std::string shadow_config_text(const ShadowCase& k) {
       { "name": "noise", "type": "cloud_noise", "params": { "shape_size": 32, "detail_size": 16, "curl_size": 32 } },
       { "name": "shadow", "type": "cloud_shadow_map", "params": )" + k.params + R"(,
         "inputs": { "shape": "noise.shape", "detail": "noise.detail", "curl": "noise.curl" } },
-      { "name": "lit", "type": "scene", "inputs": { "cloud_shadow": "shadow.optical_depth", "cloud_shadow_view": "shadow.view" } },
-      { "name": "bare", "type": "scene" } ],
+      )" + sun_shadow + R"(
+      { "name": "lit", "type": "scene", "inputs": { "cloud_shadow": "shadow.optical_depth", "cloud_shadow_view": "shadow.view")" +
+         (k.shadow_map ? ", " + shadow_inputs : "") + R"( } },
+      { "name": "bare", "type": "scene", "inputs": { )" + shadow_inputs + R"( } } ],
     "outputs": ["shadow.optical_depth", "lit.color", "bare.color"] } })";
 }
 
@@ -136,8 +141,19 @@ TEST_P(CloudShadowMap, OpticalDepthMatchesTheCpuTwinAndTheSlabBound) {
 // The ground's radiance with the map = without it × exp(−τ) at the ground point's uv
 // (carried toward the sun onto the bottom plane): two fp16 steps, plus what 1 % of a texel
 // of τ's slope can move (the patch seen is 1.7 m of a 1250 m texel).
+void expect_ground_dimmed_by_the_map(const ShadowRun& r);
+
+// With a shadow map of the sun too (the scene's other shader): the same.
 TEST_P(CloudShadowMap, TheGroundUnderTheMapIsTheUnshadowedTimesExpMinusTau) {
-  const ShadowRun r = run({});
+  for (const bool shadow_map : {false, true}) {
+    SCOPED_TRACE(shadow_map ? "with a shadow map" : "without a shadow map");
+    ShadowCase k;
+    k.shadow_map = shadow_map;
+    expect_ground_dimmed_by_the_map(run(k));
+  }
+}
+
+void expect_ground_dimmed_by_the_map(const ShadowRun& r) {
   const gpu::CloudShadowView view = cloud_shadow_view(r.config.config.scene, 40000, int(r.tau.width));
   const double s = (view.plane[1] - 0.0) / view.to_sun[1];  // the ground point ≈ the origin
   const double u = (s * view.to_sun[0] - view.plane[0]) / view.plane[3] + 0.5, v = (s * view.to_sun[2] - view.plane[2]) / view.plane[3] + 0.5;
