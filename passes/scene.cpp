@@ -2,9 +2,11 @@
 // ρ/π · E · cos θ · V, V the shadow map's visibility times the media's transmittance
 // toward the light — the global and height fog's in closed form always, the local volumes'
 // through an opacity shadow map when one is wired, as the CPU reference dims surfaces, and
-// the translucent casters' coloured transmittance through a translucent_shadow_map when one is),
+// the translucent casters' coloured transmittance through a translucent_shadow_map when one is,
+// and the sun through the cloud layer, exp(−τ) from a cloud_shadow_map, when one is),
 // emissive surfaces and the background radiance.
 #include <cstring>
+#include <vector>
 
 #include "graph/execute/pass_execution.h"
 #include "graph/rhi/device_error.h"
@@ -21,6 +23,8 @@
 #include "passes/uniform_mirrors.h"
 #include "shaders/bindings/scene.vert.h"
 #include "shaders/bindings/scene_media_translucent_shadowed.frag.h"
+#include "shaders/bindings/scene_shadowed_cloud_shadowed.frag.h"
+#include "shaders/include/cloud_shadow_view.h"
 
 namespace volgraph {
 namespace {
@@ -28,6 +32,8 @@ namespace {
 namespace scene_vert_shader = shaders::scene_vert;
 // The shadowed fragment shaders share set 2; the media- and translucent-shadowed one declares all of it.
 namespace scene_shadow_shader = shaders::scene_media_translucent_shadowed_frag;
+// The cloud-shadowed ones add bindings 7–9 of set 2.
+namespace scene_cloud_shadow_shader = shaders::scene_shadowed_cloud_shadowed_frag;
 
 // The media the surfaces' lighting sees in closed form: the global and height fog (the
 // local volumes only through an opacity shadow map, media_shadow).
@@ -101,6 +107,11 @@ struct SceneTable : PassTable {
   SlotHandle translucent_shadow_depth = optional_input("translucent_shadow_depth", ResourceKind::texture2d, Usage::sampled,
                                                        "translucent_shadow_map's depth: only receivers behind its casters are tinted",
                                                        {.format = Format::d32_float});
+  SlotHandle cloud_shadow = optional_input("cloud_shadow", ResourceKind::texture2d, Usage::sampled,
+                                           "cloud_shadow_map's optical depth: the cloud layer dims the sun by exp(−τ)",
+                                           {.format = Format::rgba16_float});
+  SlotHandle cloud_shadow_view = optional_input("cloud_shadow_view", ResourceKind::buffer, Usage::uniform_read,
+                                                "cloud_shadow_map's view (where its square lies, toward which sun)");
   SlotHandle color = output("color", ResourceKind::texture2d, Usage::color_attachment, Format::rgba16_float, SizeSpec::of_output(),
                             "linear radiance", {.format_overridable = true, .size_overridable = true});
   SlotHandle depth = output("depth", ResourceKind::texture2d, Usage::depth_attachment, Format::d32_float, SizeSpec::of_output(),
@@ -121,6 +132,7 @@ class SceneExecution final : public PassExecution {
     shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
     media_shadowed_ = shadowed_ && s.bound(t_.media_shadow);
     translucent_shadowed_ = shadowed_ && s.bound(t_.translucent_shadow) && s.bound(t_.translucent_shadow_depth);
+    cloud_shadowed_ = s.bound(t_.cloud_shadow) && s.bound(t_.cloud_shadow_view);
     RenderPipelineDesc pd;
     pd.label = "scene";
     pd.vertex_buffers = {plumbing::SceneGeometry::vertex_layout()};
@@ -132,6 +144,9 @@ class SceneExecution final : public PassExecution {
     // shadow map's view it reads match the shaders'.
     plumbing::check_wrapped_uniform_mirror<gpu::SceneFrame>(program_, scene_vert_shader::frame, "scene frame");
     if (shadowed_) plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, scene_shadow_shader::shadow, s.name() + " light_view");
+    if (cloud_shadowed_)
+      plumbing::check_wrapped_uniform_mirror<gpu::CloudShadowView>(program_, scene_cloud_shadow_shader::cloud_shadow_view,
+                                                                   s.name() + " cloud_shadow_view");
     frame_ = s.device.create_buffer({"scene frame", sizeof(gpu::SceneFrame), buffer_usage::uniform | buffer_usage::copy_dst});
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, program_);
   }
@@ -149,11 +164,26 @@ class SceneExecution final : public PassExecution {
     c.encoder.begin_render_pass(pass);
     c.encoder.set_pipeline(program_.pipeline);
     c.encoder.set_bind_group(0, c.bind_group(program_, {bind(scene_vert_shader::frame, frame_)}));
+    if (shadowed_ || cloud_shadowed_) c.encoder.set_bind_group(2, c.bind_group(program_, set2(c)));
+    geometry_->draw(c.encoder, 1);
+    c.encoder.end_render_pass();
+  }
+
+ private:
+  // Set 2 as wired: the shadow map (with the media's and the translucent casters' maps), the cloud shadow.
+  std::vector<rhi::BoundResource> set2(PassContext& c) const {
+    std::vector<rhi::BoundResource> shadow;
+    if (cloud_shadowed_) {
+      namespace shader = scene_cloud_shadow_shader;
+      shadow = {bind(shader::cloud_shadow, c.view(t_.cloud_shadow)),
+                bind(shader::cloud_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)),
+                bind(shader::cloud_shadow_view, c.buffer(t_.cloud_shadow_view))};
+    }
     if (shadowed_) {
       namespace shader = scene_shadow_shader;
-      std::vector<rhi::BoundResource> shadow = {bind(shader::shadow_depth, c.view(t_.shadow_map)),
-                                                bind(shader::shadow_sampler, c.sampler(rhi::StockSampler::nearest_clamp)),
-                                                bind(shader::shadow, c.buffer(t_.light_view))};
+      shadow.push_back(bind(shader::shadow_depth, c.view(t_.shadow_map)));
+      shadow.push_back(bind(shader::shadow_sampler, c.sampler(rhi::StockSampler::nearest_clamp)));
+      shadow.push_back(bind(shader::shadow, c.buffer(t_.light_view)));
       if (media_shadowed_) {
         shadow.push_back(bind(shader::media_shadow, c.view(t_.media_shadow)));
         shadow.push_back(bind(shader::media_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)));
@@ -162,18 +192,19 @@ class SceneExecution final : public PassExecution {
         shadow.push_back(bind(shader::translucent_shadow, c.view(t_.translucent_shadow)));
         shadow.push_back(bind(shader::translucent_shadow_depth, c.view(t_.translucent_shadow_depth)));
       }
-      c.encoder.set_bind_group(2, c.bind_group(program_, shadow));
     }
-    geometry_->draw(c.encoder, 1);
-    c.encoder.end_render_pass();
+    return shadow;
   }
 
- private:
-  // Set 2 as wired: the shadow map, with the media's opacity map and the translucent casters' map.
+  // Set 2 as wired: the shadow map, with the media's opacity map and the translucent casters' map, and the cloud shadow.
   const char* fragment_shader() const {
-    if (!shadowed_) return "scene.frag";
-    if (media_shadowed_) return translucent_shadowed_ ? "scene_media_translucent_shadowed.frag" : "scene_media_shadowed.frag";
-    return translucent_shadowed_ ? "scene_translucent_shadowed.frag" : "scene_shadowed.frag";
+    if (!shadowed_) return cloud_shadowed_ ? "scene_cloud_shadowed.frag" : "scene.frag";
+    if (media_shadowed_) {
+      if (translucent_shadowed_) return cloud_shadowed_ ? "scene_media_translucent_shadowed_cloud_shadowed.frag" : "scene_media_translucent_shadowed.frag";
+      return cloud_shadowed_ ? "scene_media_shadowed_cloud_shadowed.frag" : "scene_media_shadowed.frag";
+    }
+    if (translucent_shadowed_) return cloud_shadowed_ ? "scene_translucent_shadowed_cloud_shadowed.frag" : "scene_translucent_shadowed.frag";
+    return cloud_shadowed_ ? "scene_shadowed_cloud_shadowed.frag" : "scene_shadowed.frag";
   }
 
   gpu::SceneFrame frame_of(PassContext& c) {
@@ -191,7 +222,7 @@ class SceneExecution final : public PassExecution {
   }
 
   const SceneTable& t_;
-  bool shadowed_ = false, media_shadowed_ = false, translucent_shadowed_ = false;
+  bool shadowed_ = false, media_shadowed_ = false, translucent_shadowed_ = false, cloud_shadowed_ = false;
   plumbing::RenderProgram program_;
   rhi::BufferId frame_;
   std::unique_ptr<plumbing::SceneGeometry> geometry_;

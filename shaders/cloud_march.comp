@@ -7,7 +7,9 @@
 // found, then one coarse step back and fine steps), a secondary march of `light_steps`
 // toward the sun per fine sample, the lighting of shaders/include/cloud_lighting.h, and
 // Hillaire's energy-conserving step. Writes rgb the in-scattered radiance, a the
-// transmittance (and the transmittance again as rgb in a second image for fog_apply).
+// transmittance (and the transmittance again as rgb in a second image for fog_apply), and
+// the transmittance-weighted mean distance of what the layer sends (the clouds' depth for
+// aerial perspective and reprojection: Hillaire 2016's cloud depth).
 #include "include/cloud_density.h"
 #include "include/cloud_lighting.h"
 #include "include/depth_buffer.glsl"
@@ -25,34 +27,13 @@ layout(set = 0, binding = 5) uniform texture2D curl;
 layout(set = 0, binding = 6) uniform sampler noise;  // linear, repeat: the textures tile
 layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D clouds;
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D cloud_transmittance;
+layout(set = 0, binding = 9, r32f) uniform writeonly image2D cloud_distance;
 
 const float NEGLIGIBLE = 1e-3;    // early termination: below this transmittance nothing behind shows (kept, not zeroed)
 const float HALF_MAX = 65504.0;   // rgba16f's largest value
 const int EMPTY_FINE_STEPS = 6;   // fine samples without cloud before the march goes coarse again
 
-// The planet's centre seen from the world's origin: straight below, the radius plus y = 0's altitude.
-vec3 planet_centre() { return vec3(0.0, -(params.layer.z + params.layer.w), 0.0); }
-
-// The altitude of p above the planet's sphere (m).
-float altitude(vec3 p) { return length(p - planet_centre()) - params.layer.z; }
-
-// Ray o + t·d (d unit) against the sphere of the planet's radius plus `sphere_altitude`,
-// from an origin at altitude `origin_altitude`: the two roots (t0 ≤ t1), or none (false).
-// c = |o|² − r² as (h_o − h_r)(|o| + r) and the roots by the stable quadratic: no
-// cancellation at the planet's scale in float.
-bool sphere_roots(vec3 o, vec3 d, float origin_altitude, float sphere_altitude, out float t0, out float t1) {
-  const vec3 oc = o - planet_centre();
-  const float r = params.layer.z + sphere_altitude;
-  const float b = dot(oc, d);
-  const float c = (origin_altitude - sphere_altitude) * (length(oc) + r);
-  const float disc = b * b - c;
-  if (disc < 0.0) return false;
-  const float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
-  const float ra = q, rb = (q != 0.0) ? c / q : 0.0;
-  t0 = min(ra, rb);
-  t1 = max(ra, rb);
-  return true;
-}
+#include "include/cloud_layer.glsl"
 
 // Whether the ray from o (at altitude h) along d meets the ground ahead.
 bool hits_ground(vec3 o, vec3 d, float h) {
@@ -79,26 +60,6 @@ bool layer_segment(vec3 o, vec3 d, out float t_in, out float t_out) {
     t_out = (meets_bottom && b0 > 0.0) ? b0 : u1;
   }
   return t_out > t_in;
-}
-
-// The noise's coordinates of p: horizontal position and altitude, drifted by the wind.
-vec3 noise_point(vec3 p) { return vec3(p.x, altitude(p), p.z) + params.wind.xyz; }
-
-// The base density only (the coarse steps' test; GPU Pro 7 §4.3.3).
-float base_density(vec3 p, float h) {
-  const vec4 s = texture(sampler3D(shape, noise), noise_point(p) / params.scales.x);
-  return cloud_base_density(s, h, params.cloud.x, params.cloud.y);
-}
-
-// The full density: the base eroded by the curl-distorted detail (GPU Pro 7 §4.3.4).
-float density(vec3 p) {
-  const float h = cloud_height_fraction(altitude(p), params.layer.x, params.layer.y);
-  const float base = base_density(p, h);
-  if (base <= 0.0) return 0.0;
-  const vec3 q = noise_point(p) / params.scales.y;
-  const vec2 swirl = texture(sampler2D(curl, noise), q.xz).xy * 2.0 - 1.0;
-  const vec4 d = texture(sampler3D(detail, noise), q + params.scales.z * vec3(swirl.x, 0.0, swirl.y) * (1.0 - h));
-  return cloud_eroded_density(base, d, h);
 }
 
 // The optical depth toward the sun from p: `light_steps` samples over the light march's
@@ -130,12 +91,21 @@ vec3 source(vec3 p, float rho, float cos_theta) {
   return s;
 }
 
-// Hillaire 2015's energy-conserving step (RTR4 eq. 14.16) for a grey extinction.
-void integrate(inout vec3 radiance, inout float transmittance, vec3 s, float sigma_t, float dt) {
+// The march's running sums: radiance, transmittance and the distances weighted by the
+// opacity each step adds (Σ (T_before − T_after)·t: their mean is the clouds' depth).
+struct MarchSums {
+  vec3 radiance;
+  float transmittance;
+  float weighted_distance;
+};
+
+// Hillaire 2015's energy-conserving step (RTR4 eq. 14.16) for a grey extinction, at distance t.
+void integrate(inout MarchSums sums, vec3 s, float sigma_t, float dt, float t) {
   const float step_t = exp(-sigma_t * dt);
   const vec3 s_int = sigma_t > 0.0 ? (s - s * step_t) / sigma_t : s * dt;
-  radiance += transmittance * s_int;
-  transmittance *= step_t;
+  sums.radiance += sums.transmittance * s_int;
+  sums.weighted_distance += sums.transmittance * (1.0 - step_t) * t;
+  sums.transmittance *= step_t;
 }
 
 // Interleaved gradient noise (Jimenez 2014), scrolled by 5.588238 pixels a frame: in [0, 1)
@@ -154,7 +124,7 @@ float step_jitter(ivec2 texel) {
 // The march over [t_in, t_out]: coarse steps (2 × dt) on the base density until it is
 // non-zero, then one coarse step back and fine steps; back to coarse after
 // EMPTY_FINE_STEPS empty fine samples. Stops when the transmittance is negligible.
-void march(vec3 o, vec3 d, float t_in, float t_out, float jitter, inout vec3 radiance, inout float transmittance) {
+void march(vec3 o, vec3 d, float t_in, float t_out, float jitter, inout MarchSums sums) {
   const int steps = max(params.steps.x, 1);
   const float dt = (t_out - t_in) / float(steps);
   const float cos_theta = dot(params.sun.xyz, d);  // the light's travel −sun against the scattered −d
@@ -173,12 +143,13 @@ void march(vec3 o, vec3 d, float t_in, float t_out, float jitter, inout vec3 rad
       continue;
     }
     const float h = min(dt, t_out - t);
-    const vec3 p = o + (t + jitter * h) * d;
+    const float ts = t + jitter * h;
+    const vec3 p = o + ts * d;
     const float rho = density(p);
     if (rho > 0.0) {
       empty = 0;
-      integrate(radiance, transmittance, source(p, rho, cos_theta), cloud_extinction(params.cloud.z, rho), h);
-      if (transmittance < NEGLIGIBLE) return;
+      integrate(sums, source(p, rho, cos_theta), cloud_extinction(params.cloud.z, rho), h, ts);
+      if (sums.transmittance < NEGLIGIBLE) return;
     } else if (++empty >= EMPTY_FINE_STEPS) {
       coarse = true;
     }
@@ -192,6 +163,14 @@ float finite_in(float v, float hi, float fallback) { return (v >= 0.0 && v <= hi
 vec3 finite_radiance(vec3 l) { return vec3(finite_in(l.r, HALF_MAX, 0.0), finite_in(l.g, HALF_MAX, 0.0), finite_in(l.b, HALF_MAX, 0.0)); }
 float finite_transmittance(float t) { return finite_in(t, 1.0, t < 0.0 ? 0.0 : 1.0); }
 
+// The clouds' depth: the opacity-weighted mean distance of the march's samples; where
+// nothing was extinguished the layer's entry (0 where the ray misses the layer).
+float mean_distance(MarchSums sums, float t_in, float t_out) {
+  const float opacity = 1.0 - sums.transmittance;
+  const float t = opacity > 1e-6 ? sums.weighted_distance / opacity : (t_out > t_in ? t_in : 0.0);
+  return finite_in(t, 3.0e38, 0.0);
+}
+
 void main() {
   const ivec2 texel = ivec2(gl_GlobalInvocationID.xy), size = imageSize(clouds);
   if (any(greaterThanEqual(texel, size))) return;
@@ -199,16 +178,16 @@ void main() {
   const vec3 ray = view_ray(view, grid_ndc(vec2(texel), vec2(0.0), vec2(size)));
   const float ray_length = length(ray);
   const vec3 d = ray / ray_length, o = params.view_position.xyz;
-  vec3 radiance = vec3(0.0);
-  float transmittance = 1.0;
-  float t_in, t_out;
+  MarchSums sums = MarchSums(vec3(0.0), 1.0, 0.0);
+  float t_in = 0.0, t_out = 0.0;
   if (params.cloud.x > 0.0 && layer_segment(o, d, t_in, t_out)) {
     const float depth = covered_depth(scene_depth, nearest, texel, size);
     const float surface = depth < 1.0 ? linear_view_depth(depth, params.view_position.w, params.view_forward.w) * ray_length : 3.0e38;
     t_out = min(t_out, min(surface, params.cloud.w));
-    if (t_out > t_in) march(o, d, t_in, t_out, step_jitter(texel), radiance, transmittance);
+    if (t_out > t_in) march(o, d, t_in, t_out, step_jitter(texel), sums);
   }
-  const float tr = finite_transmittance(transmittance);
-  imageStore(clouds, texel, vec4(finite_radiance(radiance), tr));
+  const float tr = finite_transmittance(sums.transmittance);
+  imageStore(clouds, texel, vec4(finite_radiance(sums.radiance), tr));
   imageStore(cloud_transmittance, texel, vec4(tr, tr, tr, 1.0));
+  imageStore(cloud_distance, texel, vec4(mean_distance(sums, t_in, t_out), 0.0, 0.0, 0.0));
 }

@@ -20,6 +20,7 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
+#include "passes/clouds/cloud_layer.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
 #include "passes/register_pass.h"
@@ -30,9 +31,6 @@ namespace volgraph {
 namespace {
 
 namespace cloud_march_shader = shaders::cloud_march_comp;
-
-constexpr double kEarthRadius = 6360e3;  // m: the planet without an atmosphere (DESIGN.md's units)
-constexpr double kFramesPerSecond = 60;  // the wind's clock: the graph has frames, not seconds
 
 std::vector<ParamProblem> octave_problems(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& params);
 
@@ -72,6 +70,9 @@ struct CloudMarchTable : PassTable {
                              "rgb the layer's in-scattered radiance toward the camera, a the transmittance through it");
   SlotHandle transmittance = output("transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
                                     SizeSpec::of_output(), "the transmittance through the layer in rgb (fog_apply's fog_transmittance)");
+  SlotHandle distance = output("distance", ResourceKind::texture2d, Usage::storage_write, Format::r32_float, SizeSpec::of_output(),
+                               "the clouds' depth: the opacity-weighted mean distance (m) of the march's samples (the layer's entry "
+                               "where it met no cloud, 0 where the ray misses the layer)");
 };
 
 // Wrenninge et al. 2013's energy condition a ≤ b (RTR4 14.4.2): refused with one message.
@@ -89,14 +90,6 @@ std::vector<ParamProblem> octave_problems(const PassDecl& decl, const Scene&, co
 
 void copy4(gpu::vec4& to, const gpu::vec4& from) {
   for (int i = 0; i < 4; ++i) to[i] = from[i];
-}
-
-// The scene's sun: the atmosphere's sun light, else its first directional light; none: -1.
-int sun_index(const Scene& scene) {
-  if (scene.atmosphere && scene.atmosphere->sun_light >= 0) return scene.atmosphere->sun_light;
-  for (size_t i = 0; i < scene.lights.size(); ++i)
-    if (scene.lights[i].type == LightType::directional) return int(i);
-  return -1;
 }
 
 class CloudMarchExecution final : public PassExecution {
@@ -118,7 +111,7 @@ class CloudMarchExecution final : public PassExecution {
                    bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(shader::shape, c.view(t_.shape)),
                    bind(shader::detail, c.view(t_.detail)), bind(shader::curl, c.view(t_.curl)),
                    bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)), bind(shader::clouds, c.view(t_.clouds)),
-                   bind(shader::cloud_transmittance, c.view(t_.transmittance))});
+                   bind(shader::cloud_transmittance, c.view(t_.transmittance)), bind(shader::cloud_distance, c.view(t_.distance))});
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.clouds));
   }
 
@@ -143,7 +136,7 @@ class CloudMarchExecution final : public PassExecution {
     copy4(p.view_forward, view.forward);
     copy4(p.view_right, view.right);
     copy4(p.view_up, view.up);
-    if (const int sun = sun_index(scene); sun >= 0) {
+    if (const int sun = clouds::sun_index(scene); sun >= 0) {
       const Light& light = scene.lights[size_t(sun)];
       const double n = std::sqrt(light.direction[0] * light.direction[0] + light.direction[1] * light.direction[1] +
                                  light.direction[2] * light.direction[2]);
@@ -155,16 +148,14 @@ class CloudMarchExecution final : public PassExecution {
     }
     const std::array<double, 3> ambient = c.param(t_.ambient);
     for (int i = 0; i < 3; ++i) p.ambient[i] = float(ambient[size_t(i)] + air.sky_radiance[size_t(i)]);  // the sky's, added
-    const double radius = scene.atmosphere ? scene.atmosphere->bottom_radius : kEarthRadius;
-    const double origin_altitude = scene.atmosphere ? scene.atmosphere->origin_altitude : 0;
     p.layer[0] = float(layer.bottom_altitude), p.layer[1] = float(layer.top_altitude);
-    p.layer[2] = float(radius), p.layer[3] = float(origin_altitude);
+    p.layer[2] = float(clouds::planet_radius(scene)), p.layer[3] = float(clouds::origin_altitude(scene));
     p.cloud[0] = float(layer.coverage), p.cloud[1] = float(layer.type), p.cloud[2] = float(layer.extinction);
     p.cloud[3] = float(c.param(t_.max_distance));
     p.scales[0] = float(layer.shape_scale), p.scales[1] = float(layer.detail_scale);
     p.scales[2] = float(c.param(t_.curl_strength)), p.scales[3] = float(c.param(t_.light_distance));
-    const double seconds = double(c.frame) / kFramesPerSecond;
-    p.wind[0] = float(layer.wind[0] * seconds), p.wind[1] = float(layer.wind[1] * seconds), p.wind[2] = float(layer.wind[2] * seconds);
+    const std::array<double, 3> wind = clouds::wind_offset(layer, c.frame);
+    p.wind[0] = float(wind[0]), p.wind[1] = float(wind[1]), p.wind[2] = float(wind[2]);
     p.wind[3] = float(c.frame % 64);  // the jitter's frame: interleaved gradient noise scrolls over 64 frames
     p.steps[0] = int32_t(c.param(t_.steps)), p.steps[1] = int32_t(c.param(t_.light_steps)), p.steps[2] = int32_t(c.param(t_.octaves));
     p.steps[3] = c.param(t_.jitter) ? 1 : 0;

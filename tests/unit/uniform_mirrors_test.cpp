@@ -32,6 +32,7 @@
 #include "passes/plumbing/scene_geometry.h"
 #include "passes/plumbing/shadow_view.h"
 #include "passes/uniform_mirrors.h"
+#include "shaders/include/cloud_shadow_view.h"
 #include "shaders/include/scene_frame.h"
 #include "shaders/include/translucency_params.h"
 #include "physics/atmosphere.h"
@@ -202,7 +203,10 @@ std::vector<std::string> nested_errors(std::string_view glsl, std::string_view n
 // The scene pass's frame, and the translucency pass's surfaces that bind the same buffer.
 TEST(UniformMirrors, SceneFrameBlocksMatch) {
   for (const char* shader : {"scene.vert", "scene.frag", "scene_shadowed.frag", "scene_media_shadowed.frag",
-                             "scene_translucent_shadowed.frag", "scene_media_translucent_shadowed.frag", "translucency_refract.frag"}) {
+                             "scene_translucent_shadowed.frag", "scene_media_translucent_shadowed.frag", "scene_cloud_shadowed.frag",
+                             "scene_shadowed_cloud_shadowed.frag", "scene_media_shadowed_cloud_shadowed.frag",
+                             "scene_translucent_shadowed_cloud_shadowed.frag", "scene_media_translucent_shadowed_cloud_shadowed.frag",
+                             "translucency_refract.frag"}) {
     EXPECT_EQ(wrapped_error<gpu::SceneFrame>(shader, 0, 0, "gpu::SceneFrame"), "") << shader;
   }
 }
@@ -255,8 +259,18 @@ TEST(UniformMirrors, ShadowViewBlocksMatch) {
            {"raymarch_fog_shadowed.comp", 1, 2}, {"opacity_shadow_map.comp", 0, 1}, {"light_volume_unproject.frag", 0, 0},
            {"light_volume_cells.frag", 0, 2}, {"light_volume_ends.frag", 0, 3}, {"translucent_shadow.vert", 0, 0},
            {"translucent_shadow.frag", 0, 0}, {"translucent_shadow_depth.frag", 0, 0}, {"scene_translucent_shadowed.frag", 2, 2},
-           {"scene_media_translucent_shadowed.frag", 2, 2}}) {
+           {"scene_media_translucent_shadowed.frag", 2, 2}, {"scene_shadowed_cloud_shadowed.frag", 2, 2},
+           {"scene_media_shadowed_cloud_shadowed.frag", 2, 2}, {"scene_translucent_shadowed_cloud_shadowed.frag", 2, 2},
+           {"scene_media_translucent_shadowed_cloud_shadowed.frag", 2, 2}}) {
     EXPECT_EQ(wrapped_error<plumbing::ShadowViewBlock>(at.shader, at.set, at.binding, "ShadowViewBlock"), "") << at.shader;
+  }
+}
+
+// cloud_shadow_map's view as the scene's cloud-shadowed shaders hold it (set 2, binding 9).
+TEST(UniformMirrors, CloudShadowViewBlocksMatch) {
+  for (const char* shader : {"scene_cloud_shadowed.frag", "scene_shadowed_cloud_shadowed.frag", "scene_media_shadowed_cloud_shadowed.frag",
+                             "scene_translucent_shadowed_cloud_shadowed.frag", "scene_media_translucent_shadowed_cloud_shadowed.frag"}) {
+    EXPECT_EQ(wrapped_error<gpu::CloudShadowView>(shader, 2, 9, "gpu::CloudShadowView"), "") << shader;
   }
 }
 
