@@ -171,20 +171,25 @@ float mean_distance(MarchSums sums, float t_in, float t_out) {
   return finite_in(t, 3.0e38, 0.0);
 }
 
+// The full-resolution pixel small texel `texel` marches this frame: with update_block B, the
+// pixel of its B × B block this frame's Bayer entry names (Schneider & Vos 2015); B = 1: itself.
+ivec2 marched_pixel(ivec2 texel) { return texel * params.block.x + params.block.yz; }
+
 void main() {
-  const ivec2 texel = ivec2(gl_GlobalInvocationID.xy), size = imageSize(clouds);
-  if (any(greaterThanEqual(texel, size))) return;
+  const ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(texel, imageSize(clouds)))) return;
+  const ivec2 size = params.frame.xy, pixel = min(marched_pixel(texel), size - 1);
   const ViewRays view = ViewRays(params.view_position, params.view_forward, params.view_right, params.view_up);
-  const vec3 ray = view_ray(view, grid_ndc(vec2(texel), vec2(0.0), vec2(size)));
+  const vec3 ray = view_ray(view, grid_ndc(vec2(pixel), vec2(0.0), vec2(size)));
   const float ray_length = length(ray);
   const vec3 d = ray / ray_length, o = params.view_position.xyz;
   MarchSums sums = MarchSums(vec3(0.0), 1.0, 0.0);
   float t_in = 0.0, t_out = 0.0;
   if (params.cloud.x > 0.0 && layer_segment(o, d, t_in, t_out)) {
-    const float depth = covered_depth(scene_depth, nearest, texel, size);
+    const float depth = covered_depth(scene_depth, nearest, pixel, size);
     const float surface = depth < 1.0 ? linear_view_depth(depth, params.view_position.w, params.view_forward.w) * ray_length : 3.0e38;
     t_out = min(t_out, min(surface, params.cloud.w));
-    if (t_out > t_in) march(o, d, t_in, t_out, step_jitter(texel), sums);
+    if (t_out > t_in) march(o, d, t_in, t_out, step_jitter(pixel), sums);
   }
   const float tr = finite_transmittance(sums.transmittance);
   imageStore(clouds, texel, vec4(finite_radiance(sums.radiance), tr));

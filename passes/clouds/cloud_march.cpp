@@ -20,6 +20,7 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
+#include "passes/clouds/cloud_blocks.h"
 #include "passes/clouds/cloud_layer.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
@@ -61,16 +62,25 @@ struct CloudMarchTable : PassTable {
       vec3("ambient", {0, 0, 0}, 0, 1e6, "W/(m²·sr)", "uniform radiance the cloud scatters (with an atmosphere: the sky's, added)");
   ParamHandle<bool> jitter = flag("jitter", true,
                                   "sample each fine step at a per-pixel, per-frame point (interleaved gradient noise); off: its midpoint");
+  ParamHandle<int64_t> update_block = integer("update_block", 1, 1, 4, "pixels",
+                                              "march one pixel of each block this wide per frame (Bayer order; 1, 2 or 4): the "
+                                              "outputs are the frame divided by it, cloud_temporal rebuilds the rest");
+  // The outputs' size: the frame divided by update_block (one texel per block).
+  SizeSpec block_size() const {
+    SizeSpec s = SizeSpec::of_output();
+    s.divisor_param = update_block.index;
+    return s;
+  }
   // Slots.
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth", {.format = Format::d32_float});
   SlotHandle shape = input("shape", ResourceKind::texture3d, Usage::sampled, "cloud_noise.shape");
   SlotHandle detail = input("detail", ResourceKind::texture3d, Usage::sampled, "cloud_noise.detail");
   SlotHandle curl = input("curl", ResourceKind::texture2d, Usage::sampled, "cloud_noise.curl");
-  SlotHandle clouds = output("clouds", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(),
+  SlotHandle clouds = output("clouds", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, block_size(),
                              "rgb the layer's in-scattered radiance toward the camera, a the transmittance through it");
   SlotHandle transmittance = output("transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
-                                    SizeSpec::of_output(), "the transmittance through the layer in rgb (fog_apply's fog_transmittance)");
-  SlotHandle distance = output("distance", ResourceKind::texture2d, Usage::storage_write, Format::r32_float, SizeSpec::of_output(),
+                                    block_size(), "the transmittance through the layer in rgb (fog_apply's fog_transmittance)");
+  SlotHandle distance = output("distance", ResourceKind::texture2d, Usage::storage_write, Format::r32_float, block_size(),
                                "the clouds' depth: the opacity-weighted mean distance (m) of the march's samples (the layer's entry "
                                "where it met no cloud, 0 where the ray misses the layer)");
 };
@@ -79,6 +89,10 @@ struct CloudMarchTable : PassTable {
 // The parameters are read through the table's handles, so a misspelt one does not compile.
 std::vector<ParamProblem> octave_problems(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& params) {
   static const CloudMarchTable table;
+  // The Bayer order that names each frame's pixel exists for powers of two only.
+  if (!clouds::valid_update_block(param_in(params, table.update_block))) {
+    return {{param_name(decl, table.update_block), "must be 1, 2 or 4 (the Bayer order of each block's pixels is defined for powers of two)"}};
+  }
   const double a = param_in(params, table.a);
   const double b = param_in(params, table.b);
   if (a <= b) return {};
@@ -131,7 +145,7 @@ class CloudMarchExecution final : public PassExecution {
     const Scene& scene = *c.scene;
     const CloudLayer& layer = *scene.clouds;
     gpu::CloudMarchParams p{};
-    const gpu::ViewRays view = fog::pack_view_rays(scene.camera, c.extent(t_.clouds));
+    const gpu::ViewRays view = fog::pack_view_rays(scene.camera, c.frame_size());
     copy4(p.view_position, view.position);
     copy4(p.view_forward, view.forward);
     copy4(p.view_right, view.right);
@@ -162,6 +176,10 @@ class CloudMarchExecution final : public PassExecution {
     p.octave[0] = float(c.param(t_.a)), p.octave[1] = float(c.param(t_.b)), p.octave[2] = float(c.param(t_.c));
     p.octave[3] = c.param(t_.powder) ? 1.0f : 0.0f;
     p.lobes[0] = float(c.param(t_.g_forward)), p.lobes[1] = float(c.param(t_.g_back)), p.lobes[2] = float(c.param(t_.back_weight));
+    const int block = int(c.param(t_.update_block));
+    const std::array<int32_t, 2> offset = clouds::marched_offset(c.frame, block);
+    p.block[0] = block, p.block[1] = offset[0], p.block[2] = offset[1];
+    p.frame[0] = int32_t(c.frame_size().width), p.frame[1] = int32_t(c.frame_size().height);
     return p;
   }
 

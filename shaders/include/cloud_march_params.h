@@ -19,6 +19,8 @@ GPU_STRUCT(CloudMarchParams) {
   ivec4 steps;          // x steps, y light_steps, z octaves, w jitter (0 off: midpoints)
   vec4 octave;          // x a, y b, z c, w powder (0 off, 1 on)
   vec4 lobes;           // x g_forward, y g_back, z back_weight
+  ivec4 block;          // x update_block, yz this frame's pixel inside each block (Bayer order), w unused
+  ivec4 frame;          // xy the full-resolution frame (pixels) the blocks tile
 };
 GPU_END
 

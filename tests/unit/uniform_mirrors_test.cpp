@@ -226,7 +226,7 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
   for (const At at : std::initializer_list<At>{
            {"froxel_voxelize.comp", 0}, {"froxel_scatter.comp", 0}, {"froxel_scatter_shadowed.comp", 0},
            {"froxel_scatter_media_shadowed.comp", 0}, {"scatter_integrate.comp", 0}, {"froxel_temporal.comp", 0},
-           {"pixel_temporal.comp", 0}, {"opacity_shadow_map.comp", 0}, {"depth_fog.comp", 0}, {"height_fog.comp", 0},
+           {"pixel_temporal.comp", 0}, {"cloud_temporal.comp", 0}, {"opacity_shadow_map.comp", 0}, {"depth_fog.comp", 0}, {"height_fog.comp", 0},
            {"analytic_fog.comp", 0}, {"raymarch_fog.comp", 0}, {"raymarch_fog_shadowed.comp", 0},
            {"froxel_apply_transmittance.frag", 0}, {"froxel_apply_scattering.frag", 0}, {"light_volume_ends.frag", 0},
            {"light_volume_faces.frag", 4}, {"light_volume_resolve.frag", 3}}) {
