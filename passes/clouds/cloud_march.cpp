@@ -90,8 +90,9 @@ struct CloudMarchTable : PassTable {
 std::vector<ParamProblem> octave_problems(const PassDecl& decl, const Scene&, const std::vector<ParamValue>& params) {
   static const CloudMarchTable table;
   // The Bayer order that names each frame's pixel exists for powers of two only.
-  if (!clouds::valid_update_block(param_in(params, table.update_block))) {
-    return {{param_name(decl, table.update_block), "must be 1, 2 or 4 (the Bayer order of each block's pixels is defined for powers of two)"}};
+  if (const int64_t block = param_in(params, table.update_block); !clouds::valid_update_block(block)) {
+    return {{param_name(decl, table.update_block), "update_block (" + std::to_string(block) +
+                                                       ") must be 1, 2 or 4 (the Bayer order of each block's pixels is defined for powers of two)"}};
   }
   const double a = param_in(params, table.a);
   const double b = param_in(params, table.b);

@@ -161,7 +161,7 @@ TEST_P(CloudTemporal, UpdateBlockThreeIsRefused) {
     Frames frames(device(), cloud_temporal_config(k), registry_);
     FAIL() << "update_block 3 was accepted";
   } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("must be 1, 2 or 4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("update_block (3) must be 1, 2 or 4"), std::string::npos) << e.what();
   }
 }
 
