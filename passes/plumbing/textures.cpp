@@ -76,7 +76,8 @@ Rgba8Image decode_image(const uint8_t* bytes, size_t size, const std::string& de
   if (!pixels) {  // the user's file: bad input, named
     throw ConfigError({{{describe, "", 0}, std::string("not an image volgraph reads (") + stbi_failure_reason() + ")"}});
   }
-  Rgba8Image image{uint32_t(width), uint32_t(height), std::vector<uint8_t>(pixels, pixels + size_t(width) * size_t(height) * 4)};
+  Rgba8Image image{uint32_t(width), uint32_t(height), std::vector<uint8_t>(pixels, pixels + size_t(width) * size_t(height) * 4),
+                   uint32_t(components)};
   stbi_image_free(pixels);
   return image;
 }

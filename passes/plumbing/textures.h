@@ -17,6 +17,7 @@ namespace volgraph::plumbing {
 struct Rgba8Image {
   uint32_t width = 0, height = 0;
   std::vector<uint8_t> texels;  // row 0 at the top, 4 bytes a texel
+  uint32_t channels = 4;        // the file's own channels (1 grey, 2 grey + alpha, 3 RGB, 4 RGBA)
 };
 
 // Decodes PNG, JPEG, BMP, TGA… (stb_image) to RGBA; throws ConfigError (the image is
