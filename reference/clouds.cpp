@@ -8,6 +8,7 @@
 #include <thread>
 #include <type_traits>
 
+#include "passes/clouds/cloud_weather_map.h"
 #include "physics/atmosphere_lighting.h"
 #include "physics/cloud_density.h"
 #include "physics/cloud_lighting.h"
@@ -84,7 +85,7 @@ void read_param(const GraphPass& pass, const std::vector<ParamValue>& values, co
 
 CloudReferenceSettings cloud_reference_settings(const Graph& graph, const std::vector<std::vector<ParamValue>>& params,
                                                 CloudReferenceSettings k) {
-  bool noise = false, march = false;
+  bool noise = false, march = false, weather = false;
   for (size_t i = 0; i < graph.passes.size(); ++i) {
     const GraphPass& pass = graph.passes[i];
     if (!pass.decl) continue;
@@ -106,6 +107,11 @@ CloudReferenceSettings cloud_reference_settings(const Graph& graph, const std::v
       read_param(pass, v, "curl_strength", k.curl_strength), read_param(pass, v, "a", k.a), read_param(pass, v, "b", k.b);
       read_param(pass, v, "c", k.c), read_param(pass, v, "g_forward", k.g_forward), read_param(pass, v, "g_back", k.g_back);
       read_param(pass, v, "back_weight", k.back_weight), read_param(pass, v, "ambient", k.ambient);
+    } else if (!weather && pass.decl->name == "cloud_weather_map") {
+      weather = true;
+      int64_t size = k.weather_size;
+      read_param(pass, v, "size", size);
+      k.weather_size = int(size);
     }
   }
   return k;
@@ -163,6 +169,18 @@ CloudTexture cloud_curl_texture(int size, uint32_t seed) {
   return t;
 }
 
+// cloud_weather_map's texture of the map: the same texels, the same rgba8 storage.
+CloudTexture cloud_weather_texture(const CloudWeatherMap& map, int size) {
+  const std::vector<uint8_t> texels = clouds::weather_texels(plumbing::read_image_file(map.image), uint32_t(size));
+  CloudTexture t(size, size, 1);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const uint8_t* b = &texels[(size_t(y) * size_t(size) + size_t(x)) * 4];
+      t.store(x, y, 0, {b[0] / 255.0f, b[1] / 255.0f, b[2] / 255.0f, b[3] / 255.0f});
+    }
+  return t;
+}
+
 // The sun as cloud_march takes it: the atmosphere's sun light, else the first directional one.
 CloudReference::CloudReference(const Scene& scene, const CloudReferenceSettings& settings)
     : layer_(scene.clouds ? *scene.clouds : throw std::invalid_argument("CloudReference: the scene has no cloud layer")),
@@ -173,6 +191,7 @@ CloudReference::CloudReference(const Scene& scene, const CloudReferenceSettings&
       shape_(cloud_shape_texture(settings.shape_size, settings.seed)),
       detail_(cloud_detail_texture(settings.detail_size, settings.seed)),
       curl_(cloud_curl_texture(settings.curl_size, settings.seed)) {
+  if (layer_.weather_map) weather_ = cloud_weather_texture(*layer_.weather_map, settings.weather_size);
   int sun = scene.atmosphere ? scene.atmosphere->sun_light : -1;
   for (size_t i = 0; sun < 0 && i < scene.lights.size(); ++i)
     if (scene.lights[i].type == LightType::directional) sun = int(i);
@@ -217,6 +236,16 @@ bool CloudReference::segment(const Vec3& o, const Vec3& d, double& t_in, double&
   return t_out > t_in;
 }
 
+// cloud_layer.glsl's coverage_and_type() at the noise's point (wind included): the layer's,
+// or with a weather map coverage × r and mix(type, g, a) at (x + offset x, z + offset z) / size.
+std::array<float, 2> CloudReference::coverage_and_type(const Vec3& np) const {
+  if (!weather_) return {float(layer_.coverage), float(layer_.type)};
+  const CloudWeatherMap& map = *layer_.weather_map;
+  const float inverse_size = float(1.0 / map.size);  // the shader's params.weather.x
+  const std::array<float, 4> w = weather_->sample((np[0] + map.offset[0]) * inverse_size, (np[2] + map.offset[1]) * inverse_size, 0);
+  return {float(layer_.coverage) * w[0], float(layer_.type) * (1 - w[3]) + w[1] * w[3]};
+}
+
 // cloud_march.comp's density(): the shape's base, eroded by the curl-shifted detail.
 double CloudReference::density(const Vec3& p) const {
   const double a = altitude(p);
@@ -224,7 +253,8 @@ double CloudReference::density(const Vec3& p) const {
   const Vec3 np{p[0] + layer_.wind[0] * seconds, a + layer_.wind[1] * seconds, p[2] + layer_.wind[2] * seconds};
   const float h = density_fn::cloud_height_fraction(float(a), float(layer_.bottom_altitude), float(layer_.top_altitude));
   const std::array<float, 4> s = shape_.sample(np[0] / layer_.shape_scale, np[1] / layer_.shape_scale, np[2] / layer_.shape_scale);
-  const float base = density_fn::cloud_base_density(glm::vec4(s[0], s[1], s[2], s[3]), h, float(layer_.coverage), float(layer_.type));
+  const std::array<float, 2> here = coverage_and_type(np);
+  const float base = density_fn::cloud_base_density(glm::vec4(s[0], s[1], s[2], s[3]), h, here[0], here[1]);
   if (base <= 0) return 0;
   const Vec3 q = scaled(np, 1 / layer_.detail_scale);
   const std::array<float, 4> c = curl_.sample(q[0], q[2], 0);

@@ -4,6 +4,9 @@
 //   cloud_noise pass's sizes and stored as the GPU stores them (rgba8 unorm: each channel
 //   rounded to the nearest of 255 steps), sampled as cloud_march's `noise` sampler does
 //   (trilinear, repeat, level 0) with the same wind and curl offsets.
+// - A weather map (scene.clouds.weather_map) is held as cloud_weather_map stores it (the
+//   texels of passes/clouds/cloud_weather_map.h, rgba8) and sampled bilinearly with repeat
+//   as cloud_layer.glsl does: coverage × r, type mix(the layer's, g, a).
 // - The density is cloud_density.h's, the lighting cloud_lighting.h's (dual-lobe HG,
 //   Wrenninge's octaves, powder off), the sun's optical depth over the same light_distance.
 // - The quadrature: the view segment in `view_steps` equal steps with no empty-space
@@ -17,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "graph/graph.h"
@@ -37,6 +41,7 @@ struct CloudReferenceSettings {
   int octaves = 3;
   double a = 0.5, b = 0.5, c = 0.5, g_forward = 0.8, g_back = -0.3, back_weight = 0.2;
   Vec3 ambient{0, 0, 0};
+  int weather_size = 128;  // cloud_weather_map's size: the weather texture's side (texels)
   double seconds = 0;  // the wind's clock: frame / 60 on the GPU; frame 0 here
   // The quadrature (not the GPU's): equal steps over the view segment and toward the sun.
   int view_steps = 2048, light_steps = 128;
@@ -110,6 +115,7 @@ class CloudReference {
  private:
   double altitude(const Vec3& p) const;
   double sun_optical_depth(const Vec3& p) const;
+  std::array<float, 2> coverage_and_type(const Vec3& noise_point) const;
   Vec3 source(const Vec3& p, double rho, double cos_theta) const;
 
   CloudLayer layer_;
@@ -119,6 +125,7 @@ class CloudReference {
   bool has_sun_ = false;
   Vec3 to_sun_{0, 1, 0}, sun_irradiance_{0, 0, 0};
   CloudTexture shape_, detail_, curl_;
+  std::optional<CloudTexture> weather_;  // cloud_weather_map's texture, when the layer has a weather map
 };
 
 }  // namespace volgraph::reference

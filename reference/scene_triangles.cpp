@@ -19,11 +19,13 @@ using physics::Mat4;
 class ImageTable {
  public:
   explicit ImageTable(std::vector<LinearImage>& images) : images_(images) {}
-  int index(const std::string& key, const std::function<plumbing::Rgba8Image()>& load) {
-    const auto found = indices_.find(key);
+  // `data`: stored linear (no sRGB decode), kept apart from a colour use of the same image.
+  int index(const std::string& key, const std::function<plumbing::Rgba8Image()>& load, bool data = false) {
+    const std::string entry = data ? "data " + key : key;
+    const auto found = indices_.find(entry);
     if (found != indices_.end()) return found->second;
-    images_.push_back(linear_image(load()));
-    return indices_[key] = int(images_.size() - 1);
+    images_.push_back(data ? data_image(load()) : linear_image(load()));
+    return indices_[entry] = int(images_.size() - 1);
   }
 
  private:
@@ -74,13 +76,15 @@ uint32_t add_gltf_material(SceneTriangles& out, ImageTable& table, const plumbin
   set_translucency(m, p.translucency, scale);
   m.albedo = p.base_color;
   m.emissive = p.emissive;
-  auto image = [&](const plumbing::GltfTexture& texture) {
+  auto image = [&](const plumbing::GltfTexture& texture, bool data) {
     if (!texture) return -1;
     const plumbing::GltfImage& source = model.images[size_t(texture.image)];
-    return table.index(source.name + "#" + std::to_string(texture.image), [&source] { return source.decode(); });
+    return table.index(source.name + "#" + std::to_string(texture.image), [&source] { return source.decode(); }, data);
   };
-  m.base_color_image = image(p.base_color_texture);
-  m.emissive_image = image(p.emissive_texture);
+  m.base_color_image = image(p.base_color_texture, false);
+  m.emissive_image = image(p.emissive_texture, false);
+  m.transmission_image = image(p.transmission_texture, true);
+  m.thickness_image = image(p.thickness_texture, true);
   m.wrap = p.base_color_texture ? p.base_color_texture.wrap : p.emissive_texture.wrap;  // one sampler, as the GPU
   out.materials.push_back(m);
   return uint32_t(out.materials.size() - 1);
@@ -148,6 +152,14 @@ Vec3 albedo_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, 
 
 Vec3 emission_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {
   return textured(scene, m.emissive, m.emissive_image, m.wrap, u, v);
+}
+
+double transmission_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {
+  return textured(scene, {1, 1, 1}, m.transmission_image, m.wrap, u, v)[0] * m.translucency.transmission;
+}
+
+double thickness_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v) {
+  return textured(scene, {1, 1, 1}, m.thickness_image, m.wrap, u, v)[1] * m.translucency.thickness;
 }
 
 }  // namespace volgraph::reference

@@ -21,6 +21,8 @@ struct SurfaceMaterial {
   Vec3 emissive{0, 0, 0};
   int base_color_image = -1;  // index into SceneTriangles::images, −1 for none
   int emissive_image = -1;
+  int transmission_image = -1;  // stored linear: red × the transmission factor
+  int thickness_image = -1;     // stored linear: green × the thickness factor
   plumbing::SamplerWrap wrap;
   // How it passes light, its lengths in world metres: thickness times the object's
   // length scale (physics::length_scale), σt per channel from attenuation_color at
@@ -52,6 +54,10 @@ SceneTriangles scene_triangles(const Scene& scene);
 // A material's albedo and emission at texture coordinate (u, v).
 Vec3 albedo_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
 Vec3 emission_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
+// Its transmission factor and thickness (world m) at (u, v): the factors times their textures'
+// red and green channels (KHR_materials_transmission, KHR_materials_volume).
+double transmission_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
+double thickness_at(const SceneTriangles& scene, const SurfaceMaterial& m, double u, double v);
 
 // Whether a surface of this material is drawn as a layer (blends or transmits); its
 // coverage at (u, v), α times the base colour texture's alpha; a layer's coverage, that

@@ -34,6 +34,17 @@ LinearImage linear_image(const plumbing::Rgba8Image& encoded) {
   return image;
 }
 
+LinearImage data_image(const plumbing::Rgba8Image& stored) {
+  LinearImage image{stored.width, stored.height, {}};
+  image.rgb.resize(size_t(stored.width) * stored.height * 3);
+  image.alpha.resize(size_t(stored.width) * stored.height);
+  for (size_t texel = 0; texel < size_t(stored.width) * stored.height; ++texel) {
+    for (size_t c = 0; c < 3; ++c) image.rgb[texel * 3 + c] = stored.texels[texel * 4 + c] / 255.0f;
+    image.alpha[texel] = stored.texels[texel * 4 + 3] / 255.0f;
+  }
+  return image;
+}
+
 Vec3 sample_bilinear(const LinearImage& image, plumbing::SamplerWrap wrap, double u, double v) {
   if (image.width == 0 || image.height == 0 || !std::isfinite(u) || !std::isfinite(v)) return {1, 1, 1};
   const double x = u * image.width - 0.5, y = v * image.height - 0.5;

@@ -19,6 +19,8 @@ struct LinearImage {
 };
 
 LinearImage linear_image(const plumbing::Rgba8Image& encoded);
+// Data stored linear (glTF's transmission and thickness textures): the stored values / 255.
+LinearImage data_image(const plumbing::Rgba8Image& stored);
 
 // The image at texture coordinate (u, v) (0, 0 the top-left corner, texel centres at
 // half-integers of the texel grid), bilinear between the four nearest texels.

@@ -81,7 +81,7 @@ double Renderer::solid_chord(const SurfaceHit& entry, const Ray& ray) const {
     if (kind == SurfaceKind::solid_back_face && triangles_.attributes[h->triangle].object == object) return h->t - entry.t;
     r.t_min = past(h->t);
   }
-  return std::isfinite(ray.t_max) ? ray.t_max - entry.t : material_of(entry).translucency.thickness;
+  return std::isfinite(ray.t_max) ? ray.t_max - entry.t : thickness_at(triangles_, material_of(entry), entry.u, entry.v);
 }
 
 // Beer–Lambert inside the material over `length` m: e^(−σt·length) per channel (RTR4
@@ -105,7 +105,7 @@ physics::LayerInputs<double> Renderer::layer_inputs(const SurfaceHit& hit, const
   const double cos_view = std::clamp(-dot(hit.normal, direction), 0.0, 1.0);
   physics::LayerInputs<double> in;
   in.alpha = layer_coverage(triangles_, m, hit.u, hit.v);
-  in.transmission = tr.transmission;
+  in.transmission = transmission_at(triangles_, m, hit.u, hit.v);
   in.albedo = albedo_at(triangles_, m, hit.u, hit.v);
   if (lit) {
     in.emissive = emission_at(triangles_, m, hit.u, hit.v);
@@ -114,7 +114,7 @@ physics::LayerInputs<double> Renderer::layer_inputs(const SurfaceHit& hit, const
   }
   in.reflectance = physics::interface_reflectance(tr.ior, cos_view);
   double path = 0;
-  if (tr.volume == VolumeKind::shell) path = physics::shell_path_length(tr.thickness, tr.ior, cos_view);
+  if (tr.volume == VolumeKind::shell) path = physics::shell_path_length(thickness_at(triangles_, m, hit.u, hit.v), tr.ior, cos_view);
   if (tr.volume == VolumeKind::solid) path = physics::solid_path_length(chord, tr.ior, cos_view);  // refracted, as the passes
   in.path_transmittance = inside_transmittance(m, path);
   return in;

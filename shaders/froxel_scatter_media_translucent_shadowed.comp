@@ -2,26 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // froxel_scatter with one light shadowed by a shadow map, by the media through an opacity
 // shadow map, and tinted by the translucent casters through a translucent_shadow_map, all of
-// the same light view (set 1).
-#include "include/opacity_shadow.glsl"
-#include "include/shadow_lookup.glsl"
-#include "include/translucent_shadow_lookup.glsl"
-
-layout(set = 1, binding = 0) uniform texture2D shadow_depth;
-layout(set = 1, binding = 1) uniform sampler shadow_sampler;
-layout(set = 1, binding = 2) uniform ShadowBlock { ShadowView view; } shadow;
-layout(set = 1, binding = 3) uniform texture3D media_shadow;
-layout(set = 1, binding = 4) uniform sampler media_shadow_sampler;
-layout(set = 1, binding = 5) uniform texture2D translucent_shadow;
-layout(set = 1, binding = 6) uniform texture2D translucent_shadow_depth;
-
-vec3 light_visibility(int light, vec3 p) {
-  if (!shadows_light(shadow.view, light)) return vec3(1.0);
-  return shadow_visibility(shadow_depth, shadow_sampler, shadow.view, p) *
-         opacity_map_transmittance(media_shadow, media_shadow_sampler, shadow.view, p) *
-         translucent_shadow_transmittance(translucent_shadow, translucent_shadow_depth, shadow_sampler, shadow.view, p);
-}
-
-bool media_shadow_mapped(int light) { return shadows_light(shadow.view, light); }
-
+// the same light view (set 1: include/froxel_scatter_visibility.glsl).
+#define FROXEL_SHADOW_MAP
+#define FROXEL_MEDIA_SHADOW
+#define FROXEL_TRANSLUCENT_SHADOW
+#include "include/froxel_scatter_visibility.glsl"
 #include "include/froxel_scatter_body.glsl"

@@ -5,7 +5,7 @@
 // and the optical depth −ln T per channel (target 1), whose sum gives the transmittances'
 // product exactly in any order (McGuire 2015's coloured transmission; a sum, so both
 // targets blend alike). Opacity is 1 − the mean transmittance; w is oit_weight's.
-#include "include/shadow_set.glsl"
+#include "include/translucency_shadow_set.glsl"
 #include "include/translucency.glsl"
 
 layout(location = 0) out vec4 accumulation;

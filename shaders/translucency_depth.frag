@@ -4,7 +4,7 @@
 // surface, their depth and their distance from the camera (float32: the solids' paths end
 // there). The surface body runs for its sets (the same layouts as the surfaces' draws) and
 // its discard.
-#include "include/shadow_set.glsl"
+#include "include/translucency_shadow_set.glsl"
 #include "include/translucency.glsl"
 
 layout(location = 0) out vec4 distance_out;  // r32f: the kept surface's distance (m), the solids' path ends

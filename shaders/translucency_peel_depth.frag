@@ -6,7 +6,7 @@
 // (float32); the depth test keeps the farthest. The surface body runs for its sets and its
 // discards.
 #define TRANSLUCENT_PEELING
-#include "include/shadow_set.glsl"
+#include "include/translucency_shadow_set.glsl"
 #include "include/translucency.glsl"
 
 layout(location = 0) out vec4 distance_out;  // r32f: the kept surface's distance (m), the solids' path ends

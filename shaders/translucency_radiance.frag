@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Translucency, a surface's second draw: the layer's radiance added (source + destination).
-#include "include/shadow_set.glsl"
+#include "include/translucency_shadow_set.glsl"
 #include "include/translucency.glsl"
 
 layout(location = 0) out vec4 radiance;

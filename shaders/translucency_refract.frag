@@ -8,7 +8,7 @@
 // slab_exit_offset), then reaches the opaque surface behind as the straight ray would,
 // displaced. Depth-aware rejection: a sample that lands on something in front of the
 // refractor, or off the screen, falls back to the straight sample.
-#include "include/shadow_set.glsl"
+#include "include/translucency_shadow_set.glsl"
 #include "include/translucency.glsl"
 #include "include/surface_point.glsl"
 

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Translucency, a surface's first draw: what lies behind times the layer's transmittance
 // (blended as destination × source).
-#include "include/shadow_set.glsl"
+#include "include/translucency_shadow_set.glsl"
 #include "include/translucency.glsl"
 
 layout(location = 0) out vec4 factor;

@@ -624,10 +624,40 @@ void read_atmosphere(const Node& n, Scene& scene) {
   scene.atmosphere = a;
 }
 
+// scene.clouds.weather_map: an existing image, the metres it spans (> 0) and an [x, z] offset.
+std::optional<CloudWeatherMap> read_weather_map(const Node& n) {
+  if (!n.object({"image", "size", "offset"})) return std::nullopt;
+  CloudWeatherMap w;
+  w.where = n.where();
+  const auto image = n.member("image");
+  if (!image) {
+    n.error("missing key \"image\" (the weather map's image file, relative to the config)");
+    return std::nullopt;
+  }
+  const auto path = image->existing_path();
+  if (!path) return std::nullopt;
+  w.image = *path;
+  if (!read_in(n, "size", w.size, {0, 1e7, true, false, " m"})) return std::nullopt;
+  if (auto offset = n.member("offset")) {
+    const bool pair = offset->array() && offset->size() == 2 && offset->json()[0].is_number() && offset->json()[1].is_number();
+    if (!pair) {
+      offset->error("expected an array of 2 numbers [x, z] in metres, got " + offset->json().dump());
+      return std::nullopt;
+    }
+    for (size_t i = 0; i < 2; ++i) {
+      const auto v = offset->element(i).number(-1e9, 1e9);
+      if (!v) return std::nullopt;
+      w.offset[i] = *v;
+    }
+  }
+  return w;
+}
+
 // The cloud layer (scene.clouds): altitudes in metres above the ground, the top above the
 // bottom and both within 100 km (the layer lies in the air, not in space).
 void read_clouds(const Node& n, Scene& scene) {
-  if (!n.object({"bottom_altitude", "top_altitude", "coverage", "type", "extinction", "shape_scale", "detail_scale", "wind"})) return;
+  if (!n.object({"bottom_altitude", "top_altitude", "coverage", "type", "extinction", "shape_scale", "detail_scale", "wind", "weather_map"}))
+    return;
   CloudLayer c;
   c.where = n.where();
   const Interval altitude{0, 100000, false, false, " m"};
@@ -639,6 +669,10 @@ void read_clouds(const Node& n, Scene& scene) {
   read_in(n, "shape_scale", c.shape_scale, {1, 1e7, false, false, " m"});
   read_in(n, "detail_scale", c.detail_scale, {0.1, 1e6, false, false, " m"});
   read(n, "wind", c.wind, -1000, 1000);
+  if (auto weather = n.member("weather_map")) {
+    c.weather_map = read_weather_map(*weather);
+    if (!c.weather_map) return;
+  }
   if (bottom_read && top_read && c.top_altitude <= c.bottom_altitude) {
     first_member(n, {"top_altitude", "bottom_altitude"})
         .error("top_altitude (" + full_number(c.top_altitude) + " m) must exceed bottom_altitude (" + full_number(c.bottom_altitude) + " m)");

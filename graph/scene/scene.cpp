@@ -195,6 +195,10 @@ void hash_clouds(SceneHasher& h, const std::optional<CloudLayer>& clouds) {
   const CloudLayer& c = *clouds;
   for (const double v : {c.bottom_altitude, c.top_altitude, c.coverage, c.type, c.extinction, c.shape_scale, c.detail_scale}) h.add(v);
   h.add(c.wind);
+  h.add(c.weather_map.has_value());
+  if (!c.weather_map) return;
+  h.add(c.weather_map->image);
+  for (const double v : {c.weather_map->size, c.weather_map->offset[0], c.weather_map->offset[1]}) h.add(v);
 }
 
 }  // namespace

@@ -185,6 +185,16 @@ struct Atmosphere {
   Where where;
 };
 
+// A weather map over the cloud layer (Schneider & Vos 2015): an image tiled over the ground
+// plane, r the coverage multiplier (coverage here = the layer's coverage × r), g the cloud
+// type where the image has colour channels (a grey image: the layer's type everywhere).
+struct CloudWeatherMap {
+  std::string image;                   // path as resolved against the config's folder
+  double size = 20000;                 // m: the ground the image spans (it tiles)
+  std::array<double, 2> offset{0, 0};  // m: added to (x, z) before the lookup
+  Where where;                         // where the config gives the map
+};
+
 // A layer of clouds between two altitudes above the ground (Schneider & Vos 2015; RTR4
 // 14.4.2), on the atmosphere's spherical planet (Earth's 6360 km without one). Its density
 // is the base shape × the height signal of `type` × `coverage`, eroded by the detail noise;
@@ -198,6 +208,7 @@ struct CloudLayer {
   double shape_scale = 20000;     // m: the shape noise's tile, horizontally and vertically
   double detail_scale = 2000;     // m: the detail noise's tile
   Vec3 wind{10, 0, 0};            // m/s: the noise's drift with time
+  std::optional<CloudWeatherMap> weather_map;  // none: one coverage and type everywhere
   Where where;                    // where the config gives the layer
 };
 

@@ -8,7 +8,9 @@
 // optional powder term) plus the ambient radiance, integrated by Hillaire's step.
 // Outputs: `clouds` (rgb in-scattered radiance, a transmittance) and `transmittance` (the
 // transmittance in rgb), the pair fog_apply composites (fog_scattering ← clouds,
-// fog_transmittance ← transmittance). Shader: shaders/cloud_march.comp.
+// fog_transmittance ← transmittance). Optional input `weather` (cloud_weather_map's): the
+// coverage and type read there. Shaders: shaders/cloud_march.comp, cloud_march_weather.comp
+// (include/cloud_march_body.glsl).
 #include <array>
 #include <optional>
 #include <cmath>
@@ -22,11 +24,13 @@
 #include "graph/scene/scene.h"
 #include "passes/clouds/cloud_blocks.h"
 #include "passes/clouds/cloud_layer.h"
+#include "passes/clouds/cloud_weather_map.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
 #include "passes/register_pass.h"
 #include "physics/atmosphere_lighting.h"
 #include "shaders/bindings/cloud_march.comp.h"
+#include "shaders/bindings/cloud_march_weather.comp.h"
 
 namespace volgraph {
 namespace {
@@ -76,6 +80,8 @@ struct CloudMarchTable : PassTable {
   SlotHandle shape = input("shape", ResourceKind::texture3d, Usage::sampled, "cloud_noise.shape");
   SlotHandle detail = input("detail", ResourceKind::texture3d, Usage::sampled, "cloud_noise.detail");
   SlotHandle curl = input("curl", ResourceKind::texture2d, Usage::sampled, "cloud_noise.curl");
+  SlotHandle weather = optional_input("weather", ResourceKind::texture2d, Usage::sampled,
+                                      "cloud_weather_map.weather: coverage and type per place (unbound: the layer's everywhere)");
   SlotHandle clouds = output("clouds", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, block_size(),
                              "rgb the layer's in-scattered radiance toward the camera, a the transmittance through it");
   SlotHandle transmittance = output("transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
@@ -112,7 +118,8 @@ class CloudMarchExecution final : public PassExecution {
   explicit CloudMarchExecution(const CloudMarchTable& table) : t_(table) {}
 
   void setup(PassSetup& s) override {
-    program_ = plumbing::create_compute_program(s.device, "cloud_march.comp");
+    weathered_ = s.bound(t_.weather);
+    program_ = plumbing::create_compute_program(s.device, weathered_ ? "cloud_march_weather.comp" : "cloud_march.comp");
     plumbing::check_wrapped_uniform_mirror<gpu::CloudMarchParams>(program_, cloud_march_shader::params, s.name() + " params");
     params_ = s.device.create_buffer({s.name() + " params", sizeof(gpu::CloudMarchParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
@@ -121,12 +128,14 @@ class CloudMarchExecution final : public PassExecution {
     namespace shader = cloud_march_shader;
     const gpu::CloudMarchParams params = march_params(c, layer_light(*c.scene));
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
-    const rhi::BindGroupId group = c.bind_group(
-        program_, {bind(shader::params, params_), bind(shader::scene_depth, c.view(t_.depth)),
-                   bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(shader::shape, c.view(t_.shape)),
-                   bind(shader::detail, c.view(t_.detail)), bind(shader::curl, c.view(t_.curl)),
-                   bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)), bind(shader::clouds, c.view(t_.clouds)),
-                   bind(shader::cloud_transmittance, c.view(t_.transmittance)), bind(shader::cloud_distance, c.view(t_.distance))});
+    std::vector<rhi::BoundResource> entries = {
+        bind(shader::params, params_), bind(shader::scene_depth, c.view(t_.depth)),
+        bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(shader::shape, c.view(t_.shape)),
+        bind(shader::detail, c.view(t_.detail)), bind(shader::curl, c.view(t_.curl)),
+        bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)), bind(shader::clouds, c.view(t_.clouds)),
+        bind(shader::cloud_transmittance, c.view(t_.transmittance)), bind(shader::cloud_distance, c.view(t_.distance))};
+    if (weathered_) entries.push_back(bind(shaders::cloud_march_weather_comp::weather, c.view(t_.weather)));
+    const rhi::BindGroupId group = c.bind_group(program_, entries);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.clouds));
   }
 
@@ -172,6 +181,8 @@ class CloudMarchExecution final : public PassExecution {
     const std::array<double, 3> wind = clouds::wind_offset(layer, c.frame);
     p.wind[0] = float(wind[0]), p.wind[1] = float(wind[1]), p.wind[2] = float(wind[2]);
     p.wind[3] = float(c.frame % 64);  // the jitter's frame: interleaved gradient noise scrolls over 64 frames
+    const std::array<float, 4> weather = clouds::weather_lookup(layer);
+    for (int i = 0; i < 4; ++i) p.weather[i] = weather[size_t(i)];
     p.steps[0] = int32_t(c.param(t_.steps)), p.steps[1] = int32_t(c.param(t_.light_steps)), p.steps[2] = int32_t(c.param(t_.octaves));
     p.steps[3] = c.param(t_.jitter) ? 1 : 0;
     p.octave[0] = float(c.param(t_.a)), p.octave[1] = float(c.param(t_.b)), p.octave[2] = float(c.param(t_.c));
@@ -185,6 +196,7 @@ class CloudMarchExecution final : public PassExecution {
   }
 
   const CloudMarchTable& t_;
+  bool weathered_ = false;  // the weather input bound: cloud_march_weather.comp
   std::optional<uint64_t> light_hash_;
   physics::LightAtAltitude light_;
   plumbing::ComputeProgram program_;

@@ -4,17 +4,22 @@
 // the texel's point q on the layer's bottom plane through the layer, `steps` midpoint
 // samples, the density cloud_march's (shaders/include/cloud_layer.glsl, the same text). The
 // square's placement is cloud_shadow_view() (passes/clouds/cloud_shadow_view.h), written to
-// `view` for the readers. Shader: shaders/cloud_shadow_map.comp.
+// `view` for the readers. Optional input `weather` (cloud_weather_map's): the coverage and
+// type read there, as cloud_march does. Shaders: shaders/cloud_shadow_map.comp,
+// cloud_shadow_map_weather.comp (include/cloud_shadow_map_body.glsl).
 #include <array>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/clouds/cloud_shadow_view.h"
+#include "passes/clouds/cloud_weather_map.h"
 #include "passes/plumbing/programs.h"
 #include "passes/register_pass.h"
 #include "shaders/bindings/cloud_shadow_map.comp.h"
+#include "shaders/bindings/cloud_shadow_map_weather.comp.h"
 
 namespace volgraph {
 namespace {
@@ -38,6 +43,8 @@ struct CloudShadowMapTable : PassTable {
   SlotHandle shape = input("shape", ResourceKind::texture3d, Usage::sampled, "cloud_noise.shape");
   SlotHandle detail = input("detail", ResourceKind::texture3d, Usage::sampled, "cloud_noise.detail");
   SlotHandle curl = input("curl", ResourceKind::texture2d, Usage::sampled, "cloud_noise.curl");
+  SlotHandle weather = optional_input("weather", ResourceKind::texture2d, Usage::sampled,
+                                      "cloud_weather_map.weather (cloud_march's: keep them equal); unbound: the layer's coverage and type");
   SlotHandle optical_depth = output("optical_depth", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
                                     SizeSpec::square_of(size), "r the optical depth τ toward the sun from the layer's bottom plane");
   SlotHandle view = output("view", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(sizeof(gpu::CloudShadowView)),
@@ -49,7 +56,8 @@ class CloudShadowMapExecution final : public PassExecution {
   explicit CloudShadowMapExecution(const CloudShadowMapTable& table) : t_(table) {}
 
   void setup(PassSetup& s) override {
-    program_ = plumbing::create_compute_program(s.device, "cloud_shadow_map.comp");
+    weathered_ = s.bound(t_.weather);
+    program_ = plumbing::create_compute_program(s.device, weathered_ ? "cloud_shadow_map_weather.comp" : "cloud_shadow_map.comp");
     plumbing::check_wrapped_uniform_mirror<gpu::CloudShadowMapParams>(program_, cloud_shadow_map_shader::params, s.name() + " params");
     params_ = s.device.create_buffer(
         {s.name() + " params", sizeof(gpu::CloudShadowMapParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
@@ -61,10 +69,12 @@ class CloudShadowMapExecution final : public PassExecution {
     const gpu::CloudShadowMapParams params = map_params(c, view);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     c.encoder.update_buffer(c.buffer(t_.view), 0, std::as_bytes(std::span(&view, 1)));  // for the readers
-    const rhi::BindGroupId group = c.bind_group(
-        program_, {bind(shader::params, params_), bind(shader::shape, c.view(t_.shape)), bind(shader::detail, c.view(t_.detail)),
-                   bind(shader::curl, c.view(t_.curl)), bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)),
-                   bind(shader::optical_depth, c.view(t_.optical_depth))});
+    std::vector<rhi::BoundResource> entries = {
+        bind(shader::params, params_), bind(shader::shape, c.view(t_.shape)), bind(shader::detail, c.view(t_.detail)),
+        bind(shader::curl, c.view(t_.curl)), bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)),
+        bind(shader::optical_depth, c.view(t_.optical_depth))};
+    if (weathered_) entries.push_back(bind(shaders::cloud_shadow_map_weather_comp::weather, c.view(t_.weather)));
+    const rhi::BindGroupId group = c.bind_group(program_, entries);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.optical_depth));
   }
 
@@ -82,11 +92,14 @@ class CloudShadowMapExecution final : public PassExecution {
     p.scales[0] = float(layer.shape_scale), p.scales[1] = float(layer.detail_scale), p.scales[2] = float(c.param(t_.curl_strength));
     const std::array<double, 3> wind = clouds::wind_offset(layer, c.frame);  // the clouds and their shadows move together
     for (int i = 0; i < 3; ++i) p.wind[i] = float(wind[size_t(i)]);
+    const std::array<float, 4> weather = clouds::weather_lookup(layer);
+    for (int i = 0; i < 4; ++i) p.weather[i] = weather[size_t(i)];
     p.steps[0] = int32_t(c.param(t_.steps));
     return p;
   }
 
   const CloudShadowMapTable& t_;
+  bool weathered_ = false;  // the weather input bound: cloud_shadow_map_weather.comp
   plumbing::ComputeProgram program_;
   rhi::BufferId params_;
 };

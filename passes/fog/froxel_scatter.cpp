@@ -9,12 +9,14 @@
 // opacity_shadow_map is wired to `media_shadow`, one lookup in that map (the other lights
 // keep the chords). With a translucent_shadow_map of the same light view wired, the
 // translucent casters tint that light's V (RTR4 §14.5.1: the fog behind coloured glass
-// carries its colour).
-// Shaders: shaders/froxel_scatter.comp, froxel_scatter_shadowed.comp,
-// froxel_scatter_media_shadowed.comp, froxel_scatter_translucent_shadowed.comp,
-// froxel_scatter_media_translucent_shadowed.comp (shaders/include/froxel_scatter_body.glsl).
+// carries its colour). With a cloud_shadow_map wired, the cloud layer above dims the sun's V
+// by exp(−τ) (shafts of fog light between the clouds' shadows).
+// Shaders: shaders/froxel_scatter.comp and froxel_scatter_*shadowed.comp, one per set of maps
+// wired (their defines over shaders/include/froxel_scatter_visibility.glsl; the body
+// shaders/include/froxel_scatter_body.glsl).
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "graph/execute/pass_execution.h"
 #include "passes/register_pass.h"
@@ -22,15 +24,15 @@
 #include "passes/uniform_mirrors.h"
 #include "passes/fog/phase_variants.h"
 #include "shaders/bindings/froxel_scatter.comp.h"
-#include "shaders/bindings/froxel_scatter_media_shadowed.comp.h"
-#include "shaders/bindings/froxel_scatter_media_translucent_shadowed.comp.h"
+#include "shaders/bindings/froxel_scatter_media_translucent_shadowed_cloud_shadowed.comp.h"
+#include "shaders/include/cloud_shadow_view.h"
 
 namespace volgraph {
 namespace {
 
 namespace froxel_scatter_shader = shaders::froxel_scatter_comp;
-namespace froxel_scatter_media_shadowed_shader = shaders::froxel_scatter_media_shadowed_comp;
-namespace froxel_scatter_translucent_shader = shaders::froxel_scatter_media_translucent_shadowed_comp;
+// Every map's bindings in set 1, numbered alike in every permutation (froxel_scatter_visibility.glsl).
+namespace froxel_scatter_maps_shader = shaders::froxel_scatter_media_translucent_shadowed_cloud_shadowed_comp;
 
 struct FroxelScatterTable : fog::PhaseTable {
   FroxelScatterTable()
@@ -60,6 +62,11 @@ struct FroxelScatterTable : fog::PhaseTable {
   SlotHandle translucent_shadow_depth = optional_input("translucent_shadow_depth", ResourceKind::texture2d, Usage::sampled,
                                                        "translucent_shadow_map's depth: only froxels behind its casters are tinted",
                                                        {.format = Format::d32_float});
+  SlotHandle cloud_shadow = optional_input("cloud_shadow", ResourceKind::texture2d, Usage::sampled,
+                                           "cloud_shadow_map's optical depth: the cloud layer dims the sun by exp(−τ)",
+                                           {.format = Format::rgba16_float});
+  SlotHandle cloud_shadow_view = optional_input("cloud_shadow_view", ResourceKind::buffer, Usage::uniform_read,
+                                                "cloud_shadow_map's view (where its square lies, toward which sun)");
   SlotHandle in_scatter = output_like("in_scatter", media_scattering, Usage::storage_write, "scattered radiance per metre, rgb");
 };
 
@@ -71,50 +78,65 @@ class FroxelScatterExecution final : public PassExecution {
     shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
     media_shadowed_ = shadowed_ && s.bound(t_.media_shadow);
     translucent_shadowed_ = shadowed_ && s.bound(t_.translucent_shadow) && s.bound(t_.translucent_shadow_depth);
+    cloud_shadowed_ = s.bound(t_.cloud_shadow) && s.bound(t_.cloud_shadow_view);
     program_ = plumbing::create_compute_program(s.device, shader_name());
+    if (cloud_shadowed_)
+      plumbing::check_wrapped_uniform_mirror<gpu::CloudShadowView>(program_, froxel_scatter_maps_shader::cloud_shadow_view,
+                                                                   s.name() + " cloud_shadow_view");
     const gpu::FroxelScatterParams params{{s.variant().shader_code, s.param(t_.skip_empty) ? 1 : 0, 0, 0},
                                         {float(s.param(t_.g_back)), float(s.param(t_.w_forward)), 0, 0},
                                         {float(s.param(t_.shadow_steps)), float(s.param(t_.shadow_distance)), 0, 0}};
     params_ = plumbing::create_shared_uniform_block(s.device, program_, froxel_scatter_shader::params, s.name() + " params", params);
   }
 
-  // Shadow map, opacity map (media), translucent map: each shader holds the ones wired.
+  // Shadow map, opacity map (media), translucent map, cloud shadow: each shader holds the ones wired.
   std::string shader_name() const {
-    if (!shadowed_) return "froxel_scatter.comp";
-    if (translucent_shadowed_) return media_shadowed_ ? "froxel_scatter_media_translucent_shadowed.comp" : "froxel_scatter_translucent_shadowed.comp";
-    return media_shadowed_ ? "froxel_scatter_media_shadowed.comp" : "froxel_scatter_shadowed.comp";
+    std::string name = "froxel_scatter";
+    if (shadowed_) name += media_shadowed_ ? (translucent_shadowed_ ? "_media_translucent_shadowed" : "_media_shadowed")
+                                           : (translucent_shadowed_ ? "_translucent_shadowed" : "_shadowed");
+    if (cloud_shadowed_) name += "_cloud_shadowed";
+    return name + ".comp";
   }
 
   void record(PassContext& c) override {
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
-    // Every variant's shader declares froxel_scatter_body.glsl's set 0; the shadowed ones set 1,
-    // the media-shadowed one's with its media shadow after the shadowed one's.
+    // Every variant's shader declares froxel_scatter_body.glsl's set 0; the shadowed ones set 1.
     const rhi::BindGroupId media = c.bind_group(program_, {bind(froxel_scatter_shader::frame, c.buffer(t_.frame)),
                                                            bind(froxel_scatter_shader::media_scattering, c.view(t_.media_scattering)),
                                                            bind(froxel_scatter_shader::media_emission, c.view(t_.media_emission)), bind(froxel_scatter_shader::nearest, nearest),
                                                            bind(froxel_scatter_shader::in_scatter, c.view(t_.in_scatter)), bind(froxel_scatter_shader::params, params_)});
-    rhi::BindGroupId shadow;
-    if (shadowed_) {
-      namespace shadowed = froxel_scatter_media_shadowed_shader;
-      std::vector<rhi::BoundResource> entries = {bind(shadowed::shadow_depth, c.view(t_.shadow_map)), bind(shadowed::shadow_sampler, nearest),
-                                                 bind(shadowed::shadow, c.buffer(t_.light_view))};
-      if (media_shadowed_) {
-        entries.push_back(bind(shadowed::media_shadow, c.view(t_.media_shadow)));
-        entries.push_back(bind(shadowed::media_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)));
-      }
-      if (translucent_shadowed_) {
-        namespace tinted = froxel_scatter_translucent_shader;
-        entries.push_back(bind(tinted::translucent_shadow, c.view(t_.translucent_shadow)));
-        entries.push_back(bind(tinted::translucent_shadow_depth, c.view(t_.translucent_shadow_depth)));
-      }
-      shadow = c.bind_group(program_, entries);
-    }
-    plumbing::dispatch(c.encoder, c.name(), program_, {media, shadow}, c.extent(t_.in_scatter));
+    rhi::BindGroupId maps;
+    if (shadowed_ || cloud_shadowed_) maps = c.bind_group(program_, map_entries(c, nearest));
+    plumbing::dispatch(c.encoder, c.name(), program_, {media, maps}, c.extent(t_.in_scatter));
   }
 
  private:
+  // Set 1 as wired: the shadow map with the media's and the translucent casters' maps, the cloud shadow.
+  std::vector<rhi::BoundResource> map_entries(PassContext& c, rhi::SamplerId nearest) const {
+    namespace shader = froxel_scatter_maps_shader;
+    std::vector<rhi::BoundResource> entries;
+    if (shadowed_) {
+      entries = {bind(shader::shadow_depth, c.view(t_.shadow_map)), bind(shader::shadow_sampler, nearest),
+                 bind(shader::shadow, c.buffer(t_.light_view))};
+    }
+    if (media_shadowed_) {
+      entries.push_back(bind(shader::media_shadow, c.view(t_.media_shadow)));
+      entries.push_back(bind(shader::media_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)));
+    }
+    if (translucent_shadowed_) {
+      entries.push_back(bind(shader::translucent_shadow, c.view(t_.translucent_shadow)));
+      entries.push_back(bind(shader::translucent_shadow_depth, c.view(t_.translucent_shadow_depth)));
+    }
+    if (cloud_shadowed_) {
+      entries.push_back(bind(shader::cloud_shadow, c.view(t_.cloud_shadow)));
+      entries.push_back(bind(shader::cloud_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)));
+      entries.push_back(bind(shader::cloud_shadow_view, c.buffer(t_.cloud_shadow_view)));
+    }
+    return entries;
+  }
+
   const FroxelScatterTable& t_;
-  bool shadowed_ = false, media_shadowed_ = false, translucent_shadowed_ = false;
+  bool shadowed_ = false, media_shadowed_ = false, translucent_shadowed_ = false, cloud_shadowed_ = false;
   plumbing::ComputeProgram program_;
   rhi::BufferId params_;
 };

@@ -270,19 +270,13 @@ void check_material_colours(const tinygltf::Model& m) {
   }
 }
 
-// Materials' features the passes do not draw: other extensions, the textures of the drawn
-// ones (their factors alone are used), and primitive modes other than triangles.
+// Materials' features the passes do not draw: other extensions, alpha masks in the shadow
+// maps, and primitive modes other than triangles.
 std::vector<std::string> ignored_features(const tinygltf::Model& m) {
   std::vector<std::string> notes;
   for (const tinygltf::Material& mat : m.materials) {
     for (const auto& [name, value] : mat.extensions) {
       if (!drawn_extension(name)) note_once(notes, name + " (ignored: drawn opaque)");
-    }
-    if (const tinygltf::Value* t = extension(mat, "KHR_materials_transmission"); t && texture_index(*t, "transmissionTexture") >= 0) {
-      note_once(notes, "KHR_materials_transmission transmissionTexture (ignored: the factor alone)");
-    }
-    if (const tinygltf::Value* v = extension(mat, "KHR_materials_volume"); v && texture_index(*v, "thicknessTexture") >= 0) {
-      note_once(notes, "KHR_materials_volume thicknessTexture (ignored: the factor alone)");
     }
     if (mat.alphaMode == "MASK") note_once(notes, "alphaMode MASK (cut in the camera's view; the shadow maps are not cut)");
   }

@@ -7,21 +7,26 @@
 #include "passes/plumbing/meshes.h"
 #include "physics/translucency.h"
 #include "shaders/bindings/scene.frag.h"
+#include "shaders/bindings/translucency_refract.frag.h"
 
 namespace volgraph::plumbing {
 
 // Set 1, the object's, by scene.frag's names: every program drawing SceneGeometry declares
 // it alike (create_render_program's layouts_of checks the programs that share it).
 namespace scene_geometry_object_set = shaders::scene_frag;
+// Its translucent data textures by translucency_refract.frag's names (translucent_material_textures.glsl).
+namespace scene_geometry_translucent_set = shaders::translucency_refract_frag;
 
 using namespace physics;  // the CPU maths these helpers are written in
 namespace {
 
 // Binding 0 is the object block (object_uniforms.glsl); 1, 2 and 3 the material's
-// textures and sampler (material_textures.glsl), declared by passes that shade.
-bool declares_textures(const rhi::BindGroupLayoutDesc& object_set) {
+// textures and sampler (material_textures.glsl), declared by passes that shade; 4 and 5 the
+// translucent data textures (translucent_material_textures.glsl), by passes that draw
+// translucent surfaces.
+bool declares_binding(const rhi::BindGroupLayoutDesc& object_set, uint32_t binding) {
   for (const rhi::LayoutEntry& e : object_set.entries) {
-    if (e.binding == 1) return true;
+    if (e.binding == binding) return true;
   }
   return false;
 }
@@ -38,6 +43,10 @@ MaterialTextures gltf_textures(const GltfModel& model, const GltfPrimitive& p) {
   t.emissive = image(p.emissive_texture);
   if (p.base_color_texture) t.base_color_key = model.images[size_t(p.base_color_texture.image)].name;
   if (p.emissive_texture) t.emissive_key = model.images[size_t(p.emissive_texture.image)].name;
+  t.transmission = image(p.transmission_texture);
+  t.thickness = image(p.thickness_texture);
+  if (p.transmission_texture) t.transmission_key = model.images[size_t(p.transmission_texture.image)].name;
+  if (p.thickness_texture) t.thickness_key = model.images[size_t(p.thickness_texture.image)].name;
   t.wrap = p.base_color_texture ? p.base_color_texture.wrap : p.emissive_texture.wrap;
   return t;
 }
@@ -86,6 +95,12 @@ std::vector<rhi::BoundResource> SceneGeometry::texture_entries(const MaterialTex
           bind(set::material_sampler, textures_->sampler(t.wrap))};
 }
 
+std::vector<rhi::BoundResource> SceneGeometry::translucent_texture_entries(const MaterialTextures& t) {
+  namespace set = scene_geometry_translucent_set;
+  return {bind(set::transmission_texture, t.transmission ? textures_->linear(t.transmission_key, t.transmission) : textures_->white()),
+          bind(set::thickness_texture, t.thickness ? textures_->linear(t.thickness_key, t.thickness) : textures_->white())};
+}
+
 void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
   using namespace rhi;
   Vec3 object_min{1e30, 1e30, 1e30}, object_max{-1e30, -1e30, -1e30};
@@ -125,12 +140,16 @@ void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
   if (textured_) {
     for (const BoundResource& t : texture_entries(object.textures)) resources.push_back(t);
   }
+  if (translucent_textured_) {
+    for (const BoundResource& t : translucent_texture_entries(object.textures)) resources.push_back(t);
+  }
   g.group = device.create_bind_group({"object", layout_, entries_of(resources)});
   objects_.push_back(g);
 }
 
 SceneGeometry::SceneGeometry(rhi::Device& device, const Scene& scene, const RenderProgram& program)
-    : textured_(declares_textures(program.layout_descs.at(1))),
+    : textured_(declares_binding(program.layout_descs.at(1), 1)),
+      translucent_textured_(declares_binding(program.layout_descs.at(1), 4)),
       textures_(std::make_unique<TextureCache>(device)),
       layout_(program.layouts.at(1)) {
   check_wrapped_uniform_mirror<GpuObjectBlock>(program, scene_geometry_object_set::object, "gpu::ObjectUniforms");

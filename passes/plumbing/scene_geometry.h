@@ -64,6 +64,9 @@ struct GpuObject {
 struct MaterialTextures {
   std::function<Rgba8Image()> base_color, emissive;
   std::string base_color_key, emissive_key;
+  // glTF's transmission (red) and thickness (green) textures, stored linear.
+  std::function<Rgba8Image()> transmission, thickness;
+  std::string transmission_key, thickness_key;
   SamplerWrap wrap;
 };
 
@@ -103,8 +106,10 @@ class SceneGeometry {
   };
   void add(rhi::Device& device, const ObjectData& object);
   std::vector<rhi::BoundResource> texture_entries(const MaterialTextures& textures);
+  std::vector<rhi::BoundResource> translucent_texture_entries(const MaterialTextures& textures);
 
   bool textured_ = false;
+  bool translucent_textured_ = false;  // set 1 declares translucent_material_textures.glsl's too
   std::unique_ptr<TextureCache> textures_;
   rhi::BindGroupLayoutId layout_;
   std::vector<GpuObject> objects_;

@@ -39,6 +39,19 @@ LinearLevel to_linear(const Rgba8Image& image) {
   return level;
 }
 
+// Stored values as they are (data, not colour), 4 floats a texel in [0, 1].
+LinearLevel to_unit(const Rgba8Image& image) {
+  LinearLevel level{image.width, image.height, std::vector<float>(image.texels.size())};
+  for (size_t i = 0; i < image.texels.size(); ++i) level.texels[i] = float(image.texels[i]) / 255.0f;
+  return level;
+}
+
+Rgba8Image to_unorm8(const LinearLevel& level) {
+  Rgba8Image image{level.width, level.height, std::vector<uint8_t>(level.texels.size())};
+  for (size_t i = 0; i < level.texels.size(); ++i) image.texels[i] = uint8_t(std::lround(std::clamp(level.texels[i], 0.0f, 1.0f) * 255.0f));
+  return image;
+}
+
 Rgba8Image to_srgb8(const LinearLevel& level) {
   Rgba8Image image{level.width, level.height, std::vector<uint8_t>(level.texels.size())};
   for (size_t i = 0; i < level.texels.size(); ++i) {
@@ -76,7 +89,8 @@ Rgba8Image decode_image(const uint8_t* bytes, size_t size, const std::string& de
   if (!pixels) {  // the user's file: bad input, named
     throw ConfigError({{{describe, "", 0}, std::string("not an image volgraph reads (") + stbi_failure_reason() + ")"}});
   }
-  Rgba8Image image{uint32_t(width), uint32_t(height), std::vector<uint8_t>(pixels, pixels + size_t(width) * size_t(height) * 4)};
+  Rgba8Image image{uint32_t(width), uint32_t(height), std::vector<uint8_t>(pixels, pixels + size_t(width) * size_t(height) * 4),
+                   uint32_t(components)};
   stbi_image_free(pixels);
   return image;
 }
@@ -142,11 +156,22 @@ std::vector<Rgba8Image> srgb_mip_chain(Rgba8Image level0) {
   return chain;
 }
 
-rhi::TextureViewId TextureCache::upload(const std::string& label, Rgba8Image image) {
-  const std::vector<Rgba8Image> chain = srgb_mip_chain(std::move(image));
+// The mip chain of data stored linear: each level the box mean of the stored values.
+std::vector<Rgba8Image> linear_mip_chain(Rgba8Image level0) {
+  std::vector<Rgba8Image> chain;
+  LinearLevel level = to_unit(level0);
+  chain.push_back(std::move(level0));
+  while (level.width > 1 || level.height > 1) {
+    level = half(level);
+    chain.push_back(to_unorm8(level));
+  }
+  return chain;
+}
+
+rhi::TextureViewId TextureCache::upload(const std::string& label, const std::vector<Rgba8Image>& chain, Format format) {
   rhi::TextureDesc desc;
   desc.label = label;
-  desc.format = Format::rgba8_srgb;
+  desc.format = format;
   desc.size = {chain[0].width, chain[0].height, 1};
   desc.usage = rhi::texture_usage::sampled | rhi::texture_usage::copy_dst;
   desc.mip_levels = uint32_t(chain.size());
@@ -158,7 +183,11 @@ rhi::TextureViewId TextureCache::upload(const std::string& label, Rgba8Image ima
 }
 
 rhi::TextureViewId TextureCache::srgb(const std::string& key, const std::function<Rgba8Image()>& load) {
-  return device_.cached_texture_view(key, [&] { return upload(key, load()); });
+  return device_.cached_texture_view(key, [&] { return upload(key, srgb_mip_chain(load()), Format::rgba8_srgb); });
+}
+
+rhi::TextureViewId TextureCache::linear(const std::string& key, const std::function<Rgba8Image()>& load) {
+  return device_.cached_texture_view("linear " + key, [&] { return upload(key, linear_mip_chain(load()), Format::rgba8_unorm); });
 }
 
 rhi::TextureViewId TextureCache::white() {

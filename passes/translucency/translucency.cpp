@@ -4,7 +4,9 @@
 // scene is (the scene pass's own frame block), and seen through the froxel volume's
 // media and the aerial-perspective volume's air in front of it where they are wired
 // (physics::fogged_layer, the fog then the air, as the graphs apply them to the opaque
-// colour). Variants compose the layers:
+// colour); with a translucent_shadow_map wired beside the shadow map, a surface behind
+// other translucent surfaces as the light sees it is lit through their transmittance
+// (RTR4 §14.5.1). Variants compose the layers:
 // - sorted: object by object from the farthest (their bounds' centres) to the nearest,
 //   each drawn twice — × its transmittance, then + its radiance (coloured transmittance
 //   with plain blending) — a double-sided one back faces first. Exact where each object
@@ -83,6 +85,12 @@ struct TranslucencyTable : PassTable {
   SlotHandle shadow_map = optional_input("shadow_map", ResourceKind::texture2d, Usage::sampled, "depth from shadow_map",
                                          {.format = Format::d32_float});
   SlotHandle light_view = optional_input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view");
+  SlotHandle translucent_shadow = optional_input("translucent_shadow", ResourceKind::texture2d, Usage::sampled,
+                                                 "translucent_shadow_map's transmittance over the same light view: a surface behind "
+                                                 "another translucent one as the light sees it is lit through it");
+  SlotHandle translucent_shadow_depth = optional_input("translucent_shadow_depth", ResourceKind::texture2d, Usage::sampled,
+                                                       "translucent_shadow_map's depth: only surfaces behind its casters are tinted",
+                                                       {.format = Format::d32_float});
   SlotHandle fog_frame = optional_input("fog_frame", ResourceKind::buffer, Usage::uniform_read, "froxel_voxelize's frame block");
   SlotHandle integrated_scattering = optional_input("integrated_scattering", ResourceKind::texture3d, Usage::sampled,
                                                     "from scatter_integrate: the media in front of each surface");
@@ -155,7 +163,8 @@ struct TranslucencyTable : PassTable {
   }
   // What every step that shades surfaces reads, beside its own targets.
   std::vector<std::pair<SlotHandle, Usage>> with_surface_inputs(std::vector<std::pair<SlotHandle, Usage>> uses) const {
-    for (const SlotHandle s : {depth, shadow_map, integrated_scattering, integrated_transmittance, aerial_scattering, aerial_transmittance}) {
+    for (const SlotHandle s : {depth, shadow_map, translucent_shadow, translucent_shadow_depth, integrated_scattering,
+                               integrated_transmittance, aerial_scattering, aerial_transmittance}) {
       uses.push_back({s, Usage::sampled});
     }
     for (const SlotHandle s : {frame, light_view, fog_frame, aerial_lookup}) uses.push_back({s, Usage::uniform_read});
@@ -306,6 +315,9 @@ class TranslucencyExecution final : public PassExecution {
     return c.bound(t_.aerial_lookup) && c.bound(t_.aerial_scattering) && c.bound(t_.aerial_transmittance);
   }
   bool shadowed(const PassSetup& c) const { return c.bound(t_.shadow_map) && c.bound(t_.light_view) && c.param(t_.shadows); }
+  bool tinted(const PassSetup& c) const {
+    return shadowed(c) && c.bound(t_.translucent_shadow) && c.bound(t_.translucent_shadow_depth);
+  }
 
   // Sets 0, 2 and 3 of the surface programs; `back` the solid objects' back-face depth and
   // `back_distance` its distance (stand-ins while they are being drawn), `refracted` the
@@ -318,10 +330,12 @@ class TranslucencyExecution final : public PassExecution {
                                                  bind(shader::scene_depth, c.view(t_.depth)), bind(shader::back_depth, back),
                                                  bind(shader::nearest, nearest), bind(shader::refracted_color, refracted),
                                                  bind(shader::back_distance, back_distance)}));
-    const bool shadow = shadowed(c);
-    c.encoder.set_bind_group(2, c.bind_group(p, {bind(shader::shadow_depth, shadow ? c.view(t_.shadow_map) : textures_->white()),
-                                                 bind(shader::shadow_sampler, nearest),
-                                                 bind(shader::shadow, shadow ? c.buffer(t_.light_view) : no_shadow_view_)}));
+    const bool shadow = shadowed(c), tint = tinted(c);
+    c.encoder.set_bind_group(
+        2, c.bind_group(p, {bind(shader::shadow_depth, shadow ? c.view(t_.shadow_map) : textures_->white()),
+                            bind(shader::shadow_sampler, nearest), bind(shader::shadow, shadow ? c.buffer(t_.light_view) : no_shadow_view_),
+                            bind(shader::translucent_shadow, tint ? c.view(t_.translucent_shadow) : textures_->white()),
+                            bind(shader::translucent_shadow_depth, tint ? c.view(t_.translucent_shadow_depth) : textures_->white())}));
     const bool fog = fogged(c), air = aired(c);
     c.encoder.set_bind_group(3, c.bind_group(p, {bind(shader::fog, fog ? c.buffer(t_.fog_frame) : no_fog_frame_),
                                                  bind(shader::integrated_scattering, fog ? c.view(t_.integrated_scattering) : no_volume_),

@@ -5,7 +5,8 @@
 // `params` with vec4 members layer (x bottom, y top altitude, z planet radius, w the altitude
 // of world y = 0), cloud (x coverage, y type), scales (x shape tile, y detail tile, z curl
 // distortion) and wind (xyz the noise's offset), and texture3D shape, detail, texture2D curl
-// and sampler noise (linear, repeat).
+// and sampler noise (linear, repeat). With CLOUD_WEATHER_MAP defined, also texture2D weather
+// (cloud_weather_map's) and params.weather (x 1 / the map's size, yz its offset).
 #ifndef VOLGRAPH_CLOUD_LAYER_GLSL
 #define VOLGRAPH_CLOUD_LAYER_GLSL
 #include "cloud_density.h"
@@ -37,10 +38,23 @@ bool sphere_roots(vec3 o, vec3 d, float origin_altitude, float sphere_altitude, 
 // The noise's coordinates of p: horizontal position and altitude, drifted by the wind.
 vec3 noise_point(vec3 p) { return vec3(p.x, altitude(p), p.z) + params.wind.xyz; }
 
+// The coverage and type at p: the layer's, or with a weather map (Schneider & Vos 2015) the
+// layer's coverage × the map's r and mix(the layer's type, g, a), the map bilinear and
+// repeating at (p.xz + wind.xz + offset) / size: the weather drifts with the clouds.
+#ifdef CLOUD_WEATHER_MAP
+vec2 coverage_and_type(vec3 p) {
+  const vec4 w = texture(sampler2D(weather, noise), (p.xz + params.wind.xz + params.weather.yz) * params.weather.x);
+  return vec2(params.cloud.x * w.r, mix(params.cloud.y, w.g, w.a));
+}
+#else
+vec2 coverage_and_type(vec3 p) { return params.cloud.xy; }
+#endif
+
 // The base density only (the coarse steps' test; GPU Pro 7 §4.3.3).
 float base_density(vec3 p, float h) {
   const vec4 s = texture(sampler3D(shape, noise), noise_point(p) / params.scales.x);
-  return cloud_base_density(s, h, params.cloud.x, params.cloud.y);
+  const vec2 here = coverage_and_type(p);
+  return cloud_base_density(s, h, here.x, here.y);
 }
 
 // The full density: the base eroded by the curl-distorted detail (GPU Pro 7 §4.3.4).

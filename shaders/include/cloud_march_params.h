@@ -16,6 +16,7 @@ GPU_STRUCT(CloudMarchParams) {
   vec4 cloud;           // x coverage, y type, z extinction (1/m at density 1), w max_distance (m)
   vec4 scales;          // x shape tile, y detail tile (m), z curl distortion (detail tiles), w light march length (m)
   vec4 wind;            // xyz the noise's offset (m): wind × time; w the frame index mod 64 (the jitter's)
+  vec4 weather;         // the weather map's lookup (cloud_layer.glsl): x 1 / its size (1/m), yz its offset (m)
   ivec4 steps;          // x steps, y light_steps, z octaves, w jitter (0 off: midpoints)
   vec4 octave;          // x a, y b, z c, w powder (0 off, 1 on)
   vec4 lobes;           // x g_forward, y g_back, z back_weight

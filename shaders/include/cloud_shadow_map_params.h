@@ -12,6 +12,7 @@ GPU_STRUCT(CloudShadowMapParams) {
   vec4 cloud;   // x coverage, y type, z extinction (1/m at density 1)
   vec4 scales;  // x shape tile, y detail tile (m), z curl distortion (detail tiles)
   vec4 wind;    // xyz the noise's offset (m): wind × time
+  vec4 weather; // the weather map's lookup (cloud_layer.glsl): x 1 / its size (1/m), yz its offset (m)
   ivec4 steps;  // x samples along the sun's ray through the layer
 };
 GPU_END

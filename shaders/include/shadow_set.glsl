@@ -1,7 +1,7 @@
 // Set 2 of the passes that shade surfaces with one light shadowed by shadow_map's depth
-// (scene_shadowed.frag, the translucency passes): the map, its sampler and view, and the
+// (scene_shadowed.frag): the map, its sampler and view, and the
 // `light_visibility` surface_irradiance.glsl asks for. A view whose shadowed light index
-// is −1 shadows nothing (the translucency passes bind one when no map is wired).
+// is −1 shadows nothing.
 #ifndef VOLGRAPH_SHADOW_SET_GLSL
 #define VOLGRAPH_SHADOW_SET_GLSL
 #include "shadow_lookup.glsl"

@@ -6,7 +6,7 @@
 // face turned away from the light (the solid is one layer, as the CPU reference's shadow rays cross it).
 #ifndef VOLGRAPH_TRANSLUCENT_CASTER_GLSL
 #define VOLGRAPH_TRANSLUCENT_CASTER_GLSL
-#include "material_textures.glsl"
+#include "translucent_material_textures.glsl"
 #include "object_uniforms.glsl"
 #include "shadow_view.glsl"
 #include "translucency.glsl"
@@ -42,6 +42,8 @@ bool translucent_caster(out vec3 passed) {
   // The textures first (implicit derivatives need uniform control flow: before any return).
   const vec3 albedo = material_albedo(object.albedo.rgb, texture_uv);
   const float texel_coverage = material_coverage(object.translucency.x, texture_uv);
+  const float transmission = material_transmission(object.translucency.y, texture_uv);
+  const float thickness = material_thickness(object.translucency.w, texture_uv);
   const int alpha_mode = int(object.alpha_test.x);
   if (alpha_mode == kAlphaMask && texel_coverage < object.alpha_test.y) return false;
   if (behind_opaque(world_position)) return false;
@@ -50,13 +52,13 @@ bool translucent_caster(out vec3 passed) {
   const int kind = int(object.attenuation.w);
   if (kind == kVolumeSolid && facing < 0.0) return false;  // its exit face: no second interface (KHR_materials_volume)
   const float cos_light = clamp(abs(facing), 0.0, 1.0);
-  const float ior = object.translucency.z, thickness = object.translucency.w;
+  const float ior = object.translucency.z;
   // The path inside: none for a thin wall; the thickness at the refracted angle for a shell and
   // (a known limit: no chord to its back face from the light) a solid.
   const float inside = kind == kVolumeThinWalled ? 0.0 : shell_path_length(thickness, ior, cos_light);
   LayerInputs l;
   l.alpha = alpha_mode == kAlphaBlend ? texel_coverage : 1.0;
-  l.transmission = object.translucency.y;
+  l.transmission = transmission;
   l.albedo = albedo;
   l.emissive = vec3(0.0);
   l.irradiance = vec3(0.0);

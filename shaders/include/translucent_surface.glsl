@@ -12,7 +12,7 @@
 #include "atmosphere_aerial_lookup.glsl"
 #include "depth_buffer.glsl"
 #include "froxel_sample.glsl"
-#include "material_textures.glsl"
+#include "translucent_material_textures.glsl"
 #include "surface_irradiance.glsl"
 #include "translucency.glsl"
 #include "surface_point.glsl"
@@ -45,9 +45,8 @@ float view_depth_of(float depth) { return linear_view_depth(depth, translucency.
 // drawn) — the material's thickness where that back face lies in front of the fragment
 // (another solid's, nearer: back_depth holds one back face a pixel). A back face's end is
 // its float32 distance (back_distance), not its 32-bit depth: ~1e-3 of the path at 30 m.
-float inside_path(float cos_view, float distance_to_fragment) {
+float inside_path(float cos_view, float distance_to_fragment, float thickness) {
   const int kind = int(object.attenuation.w);
-  const float thickness = object.translucency.w;
   if (kind == kVolumeThinWalled) return 0.0;
   if (kind == kVolumeShell) return shell_path_length(thickness, object.translucency.z, cos_view);
   const ivec2 px = ivec2(gl_FragCoord.xy);
@@ -65,6 +64,8 @@ void main() {
   const vec3 emission = material_emission(object.emissive.rgb, texture_uv);
   const int alpha_mode = int(object.alpha_test.x);
   const float texel_coverage = material_coverage(object.translucency.x, texture_uv);
+  const float transmission = material_transmission(object.translucency.y, texture_uv);
+  const float thickness = material_thickness(object.translucency.w, texture_uv);
   // alphaMode mask: a texel below the cutoff is a hole, the rest fully covered; blend: α.
   if (alpha_mode == kAlphaMask && texel_coverage < object.alpha_test.y) discard;
   const float coverage = alpha_mode == kAlphaBlend ? texel_coverage : 1.0;
@@ -80,13 +81,13 @@ void main() {
   const float cos_view = clamp(dot(n, to_camera / distance_to_fragment), 0.0, 1.0);
   LayerInputs l;
   l.alpha = coverage;
-  l.transmission = object.translucency.y;
+  l.transmission = transmission;
   l.albedo = albedo;
   l.emissive = emission;
   l.irradiance = surface_irradiance(world_position, n);
   l.environment = translucency.environment.rgb;
   l.reflectance = interface_reflectance(object.translucency.z, cos_view);
-  const float inside = inside_path(cos_view, distance_to_fragment);  // along the view ray (refraction's offset needs it)
+  const float inside = inside_path(cos_view, distance_to_fragment, thickness);  // along the view ray (refraction's offset needs it)
   const bool solid = int(object.attenuation.w) == kVolumeSolid;
   l.path_transmittance = exp(-object.attenuation.rgb * (solid ? solid_path_length(inside, object.translucency.z, cos_view) : inside));
   SurfaceLayer layer = surface_layer(l);

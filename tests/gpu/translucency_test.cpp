@@ -464,7 +464,7 @@ TEST_P(Translucency, ScreenSpaceRefractionShiftsWhatIsBehindAsTheSlabDoes) {
 // key's colour along the refracted path through the cube's thickness (1.3e-3 off T_key at
 // most here). The answer key row R1 itself, thin-walled cubes tinted by their base colour,
 // must show F L_env + (1 − F) ρ L_behind (one interface, no path). R3 (a thickness texture,
-// not sampled yet) is not checked. Metric: |render − prediction| / prediction per channel, at most 3e-3 (fp16
+// sampled since; its key not derived here) is not checked. Metric: |render − prediction| / prediction per channel, at most 3e-3 (fp16
 // steps and the slab approximation; measured 1.3e-3 at worst on lavapipe, every variant);
 // the prediction × the old exit-interface factor (0.960×) is 3.9e-2 off: fails.
 std::string attenuation_test(const std::string& variant) {

@@ -11,7 +11,9 @@
 #include "physics/lighting.h"
 #include "physics/translucency.h"
 #include "reference/image_render.h"
+#include "passes/plumbing/gltf.h"
 #include "reference/renderer.h"
+#include "reference/scene_triangles.h"
 #include "tests/reference/test_scenes.h"
 #include "tools/image_io.h"
 #include "physics/tonemap.h"
@@ -580,6 +582,41 @@ TEST(TranslucencyReference, StraightModeAgainstTheGpuGoldens) {
                 glass_worst);
     EXPECT_GT(compared, 0u);
   }
+}
+
+}  // namespace
+}  // namespace volgraph::reference
+
+namespace volgraph::reference {
+namespace {
+
+// glTF's transmission texture in the reference: stored linear (no sRGB decode), its red
+// channel × the factor at a texel centre, exactly as stored (TransmissionTest's textured
+// spheres; the GPU reads the same bytes as rgba8 unorm).
+TEST(TranslucencyReference, TheTransmissionTextureIsReadAsStoredData) {
+  const LoadedConfig loaded = load_shipped("demo_transmission_test.json", 12, 8);
+  const SceneTriangles triangles = scene_triangles(loaded.config.scene);
+  int textured = 0;
+  for (const SurfaceMaterial& m : triangles.materials) {
+    if (m.transmission_image < 0) continue;
+    ++textured;
+    const LinearImage& image = triangles.images[size_t(m.transmission_image)];
+    const plumbing::GltfModel model = plumbing::load_gltf(std::string(::volgraph::testing::source_dir()) +
+                                                          "/../shared/assets/gltf/TransmissionTest/TransmissionTest.glb");
+    // The texel (3, 5)'s centre.
+    const double u = (3 + 0.5) / image.width, v = (5 + 0.5) / image.height;
+    const double stored = image.rgb[(size_t(5) * image.width + 3) * 3];
+    EXPECT_NEAR(transmission_at(triangles, m, u, v), m.translucency.transmission * stored, 1e-9);
+    bool found = false;  // the value is a stored byte / 255, not an sRGB decode of it
+    for (const plumbing::GltfPrimitive& p : model.primitives) {
+      if (!p.transmission_texture) continue;
+      const plumbing::Rgba8Image bytes = model.images[size_t(p.transmission_texture.image)].decode();
+      if (bytes.width != image.width || bytes.height != image.height) continue;
+      found |= std::abs(stored - bytes.texels[(size_t(5) * bytes.width + 3) * 4] / 255.0) < 1e-7;
+    }
+    EXPECT_TRUE(found);
+  }
+  EXPECT_GT(textured, 0) << "TransmissionTest has textured transmission";
 }
 
 }  // namespace

@@ -157,7 +157,7 @@ TEST(GltfTranslucency, AttenuationTestsRowsMatchItsAnswerKey) {
   // The labels and the backdrop are opaque.
   EXPECT_FALSE(m.primitives[5].translucency.translucent());
   EXPECT_FALSE(m.primitives[17].translucency.translucent());
-  EXPECT_TRUE(m.primitives[11].thickness_texture);  // R3's texture is loaded (not yet sampled: named in `ignored`)
+  EXPECT_TRUE(m.primitives[11].thickness_texture);  // R3's texture is loaded (sampled by the translucency passes)
 }
 
 TEST(GltfTranslucency, TheVasesMaterialsKeepTheirModes) {

@@ -27,6 +27,16 @@ TEST(Textures, MipChainAveragesInLinearLight) {
   EXPECT_EQ(std::lround(physics::srgb_encode(0.5f) * 255), 188);
 }
 
+// Data stored linear (glTF's transmission and thickness textures): the same block's mean is
+// the stored values' mean, 127.5 → 128 in every channel, not sRGB's 188.
+TEST(Textures, ADataTexturesMipIsTheMeanOfItsStoredValues) {
+  const Rgba8Image top = image(2, 2, {0, 0, 0, 0, 255, 255, 255, 255, 255, 255, 255, 255, 0, 0, 0, 0});
+  const std::vector<Rgba8Image> chain = linear_mip_chain(top);
+  ASSERT_EQ(chain.size(), 2u);
+  EXPECT_EQ(chain[0].texels, top.texels);
+  EXPECT_EQ(chain[1].texels, (std::vector<uint8_t>{128, 128, 128, 128}));
+}
+
 TEST(Textures, MipChainGoesDownToOneTexelFromAnySize) {
   const std::vector<Rgba8Image> chain = srgb_mip_chain(image(5, 3, std::vector<uint8_t>(5 * 3 * 4, 200)));
   ASSERT_EQ(chain.size(), 3u);  // 5×3, 2×1, 1×1

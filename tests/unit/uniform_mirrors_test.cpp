@@ -225,7 +225,10 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
   };
   for (const At at : std::initializer_list<At>{
            {"froxel_voxelize.comp", 0}, {"froxel_scatter.comp", 0}, {"froxel_scatter_shadowed.comp", 0},
-           {"froxel_scatter_media_shadowed.comp", 0}, {"scatter_integrate.comp", 0}, {"froxel_temporal.comp", 0},
+           {"froxel_scatter_media_shadowed.comp", 0}, {"froxel_scatter_translucent_shadowed.comp", 0},
+           {"froxel_scatter_media_translucent_shadowed.comp", 0}, {"froxel_scatter_cloud_shadowed.comp", 0},
+           {"froxel_scatter_shadowed_cloud_shadowed.comp", 0}, {"froxel_scatter_media_shadowed_cloud_shadowed.comp", 0},
+           {"froxel_scatter_translucent_shadowed_cloud_shadowed.comp", 0}, {"froxel_scatter_media_translucent_shadowed_cloud_shadowed.comp", 0}, {"scatter_integrate.comp", 0}, {"froxel_temporal.comp", 0},
            {"pixel_temporal.comp", 0}, {"cloud_temporal.comp", 0}, {"opacity_shadow_map.comp", 0}, {"depth_fog.comp", 0}, {"height_fog.comp", 0},
            {"analytic_fog.comp", 0}, {"raymarch_fog.comp", 0}, {"raymarch_fog_shadowed.comp", 0},
            {"froxel_apply_transmittance.frag", 0}, {"froxel_apply_scattering.frag", 0}, {"light_volume_ends.frag", 0},
@@ -256,6 +259,8 @@ TEST(UniformMirrors, ShadowViewBlocksMatch) {
   for (const At at : std::initializer_list<At>{
            {"shadow.vert", 0, 0}, {"scene_shadowed.frag", 2, 2}, {"scene_media_shadowed.frag", 2, 2},
            {"froxel_scatter_shadowed.comp", 1, 2}, {"froxel_scatter_media_shadowed.comp", 1, 2},
+           {"froxel_scatter_translucent_shadowed.comp", 1, 2}, {"froxel_scatter_media_translucent_shadowed.comp", 1, 2},
+           {"froxel_scatter_shadowed_cloud_shadowed.comp", 1, 2}, {"froxel_scatter_media_translucent_shadowed_cloud_shadowed.comp", 1, 2},
            {"raymarch_fog_shadowed.comp", 1, 2}, {"opacity_shadow_map.comp", 0, 1}, {"light_volume_unproject.frag", 0, 0},
            {"light_volume_cells.frag", 0, 2}, {"light_volume_ends.frag", 0, 3}, {"translucent_shadow.vert", 0, 0},
            {"translucent_shadow.frag", 0, 0}, {"translucent_shadow_depth.frag", 0, 0}, {"scene_translucent_shadowed.frag", 2, 2},
@@ -266,8 +271,14 @@ TEST(UniformMirrors, ShadowViewBlocksMatch) {
   }
 }
 
-// cloud_shadow_map's view as the scene's cloud-shadowed shaders hold it (set 2, binding 9).
+// cloud_shadow_map's view as the scene's cloud-shadowed shaders (set 2, binding 9) and
+// froxel_scatter's (set 1) hold it.
 TEST(UniformMirrors, CloudShadowViewBlocksMatch) {
+  for (const char* shader : {"froxel_scatter_cloud_shadowed.comp", "froxel_scatter_shadowed_cloud_shadowed.comp",
+                             "froxel_scatter_media_shadowed_cloud_shadowed.comp", "froxel_scatter_translucent_shadowed_cloud_shadowed.comp",
+                             "froxel_scatter_media_translucent_shadowed_cloud_shadowed.comp"}) {
+    EXPECT_EQ(wrapped_error<gpu::CloudShadowView>(shader, 1, 9, "gpu::CloudShadowView"), "") << shader;
+  }
   for (const char* shader : {"scene_cloud_shadowed.frag", "scene_shadowed_cloud_shadowed.frag", "scene_media_shadowed_cloud_shadowed.frag",
                              "scene_translucent_shadowed_cloud_shadowed.frag", "scene_media_translucent_shadowed_cloud_shadowed.frag"}) {
     EXPECT_EQ(wrapped_error<gpu::CloudShadowView>(shader, 2, 9, "gpu::CloudShadowView"), "") << shader;

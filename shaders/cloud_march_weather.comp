@@ -1,0 +1,5 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// cloud_march: the cloud layer, coverage and type read from the weather map (cloud_layer.glsl).
+#define CLOUD_WEATHER_MAP
+#include "include/cloud_march_body.glsl"
