@@ -9,8 +9,12 @@
 // Outputs: `clouds` (rgb in-scattered radiance, a transmittance) and `transmittance` (the
 // transmittance in rgb), the pair fog_apply composites (fog_scattering ← clouds,
 // fog_transmittance ← transmittance). Optional input `weather` (cloud_weather_map's): the
-// coverage and type read there. Shaders: shaders/cloud_march.comp, cloud_march_weather.comp
-// (include/cloud_march_body.glsl).
+// coverage and type read there. Variant `transmittance_map` (Schneider & Vos 2015): the
+// sun's optical depth read trilinearly from cloud_shadow_map's optical_depth_layers (inputs
+// sun_optical_depth and sun_optical_depth_view, required there) at the sample's column and
+// altitude, the secondary march only outside the map. Shaders: shaders/cloud_march.comp,
+// cloud_march_weather.comp, cloud_march_transmittance_map.comp,
+// cloud_march_weather_transmittance_map.comp (include/cloud_march_body.glsl).
 #include <array>
 #include <optional>
 #include <cmath>
@@ -30,7 +34,10 @@
 #include "passes/register_pass.h"
 #include "physics/atmosphere_lighting.h"
 #include "shaders/bindings/cloud_march.comp.h"
+#include "shaders/bindings/cloud_march_transmittance_map.comp.h"
 #include "shaders/bindings/cloud_march_weather.comp.h"
+#include "shaders/bindings/cloud_march_weather_transmittance_map.comp.h"
+#include "shaders/include/cloud_shadow_view.h"
 
 namespace volgraph {
 namespace {
@@ -48,10 +55,13 @@ struct CloudMarchTable : PassTable {
   }
   // Variants.
   VariantHandle march = variant("march", "the sun's visibility by a secondary march of light_steps toward it");
+  VariantHandle transmittance_map = variant("transmittance_map",
+                                            "the sun's optical depth read from cloud_shadow_map's optical_depth_layers, made once per "
+                                            "frame (Schneider & Vos 2015); the secondary march only outside the map");
   // Parameters.
   ParamHandle<int64_t> steps = integer("steps", 64, 1, 1024, "", "equal steps over the ray's segment inside the layer");
-  ParamHandle<int64_t> light_steps = integer("light_steps", 16, 1, 64, "", "samples of the density toward the sun per step");
-  ParamHandle<double> light_distance = number("light_distance", 2000, 1, 1e5, "m", "how far toward the sun the light march reaches");
+  ParamHandle<int64_t> light_steps = integer("light_steps", 16, 1, 64, "", "samples of the density toward the sun per step (march; transmittance_map: outside the map only)");
+  ParamHandle<double> light_distance = number("light_distance", 2000, 1, 1e5, "m", "how far toward the sun the light march reaches (march; transmittance_map: outside the map only)");
   ParamHandle<int64_t> octaves = integer("octaves", 3, 1, 8, "", "Wrenninge's multiple-scattering octaves (1: single scattering)");
   ParamHandle<double> a = number("a", 0.5, 0, 1, "", "each octave's optical-depth scale (a ≤ b)");
   ParamHandle<double> b = number("b", 0.5, 0, 1, "", "each octave's energy scale");
@@ -82,6 +92,13 @@ struct CloudMarchTable : PassTable {
   SlotHandle curl = input("curl", ResourceKind::texture2d, Usage::sampled, "cloud_noise.curl");
   SlotHandle weather = optional_input("weather", ResourceKind::texture2d, Usage::sampled,
                                       "cloud_weather_map.weather: coverage and type per place (unbound: the layer's everywhere)");
+  SlotHandle sun_optical_depth =
+      optional_input("sun_optical_depth", ResourceKind::texture3d, Usage::sampled,
+                     "cloud_shadow_map.optical_depth_layers (layers > 0): τ toward the sun per column and altitude, for transmittance_map",
+                     {.required_in = {transmittance_map}});
+  SlotHandle sun_optical_depth_view = optional_input("sun_optical_depth_view", ResourceKind::buffer, Usage::uniform_read,
+                                                     "cloud_shadow_map.view: the map's placement, for transmittance_map",
+                                                     {.required_in = {transmittance_map}});
   SlotHandle clouds = output("clouds", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, block_size(),
                              "rgb the layer's in-scattered radiance toward the camera, a the transmittance through it");
   SlotHandle transmittance = output("transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
@@ -119,8 +136,12 @@ class CloudMarchExecution final : public PassExecution {
 
   void setup(PassSetup& s) override {
     weathered_ = s.bound(t_.weather);
-    program_ = plumbing::create_compute_program(s.device, weathered_ ? "cloud_march_weather.comp" : "cloud_march.comp");
+    mapped_ = s.variant_is(t_.transmittance_map);
+    program_ = plumbing::create_compute_program(s.device, shader_name());
     plumbing::check_wrapped_uniform_mirror<gpu::CloudMarchParams>(program_, cloud_march_shader::params, s.name() + " params");
+    if (mapped_)
+      plumbing::check_wrapped_uniform_mirror<gpu::CloudShadowView>(program_, shaders::cloud_march_transmittance_map_comp::sun_optical_depth_view,
+                                                                   s.name() + " sun_optical_depth_view");
     params_ = s.device.create_buffer({s.name() + " params", sizeof(gpu::CloudMarchParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
   }
 
@@ -135,11 +156,23 @@ class CloudMarchExecution final : public PassExecution {
         bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)), bind(shader::clouds, c.view(t_.clouds)),
         bind(shader::cloud_transmittance, c.view(t_.transmittance)), bind(shader::cloud_distance, c.view(t_.distance))};
     if (weathered_) entries.push_back(bind(shaders::cloud_march_weather_comp::weather, c.view(t_.weather)));
+    if (mapped_) {
+      namespace mapped = shaders::cloud_march_transmittance_map_comp;
+      entries.push_back(bind(mapped::sun_optical_depth, c.view(t_.sun_optical_depth)));
+      entries.push_back(bind(mapped::sun_optical_depth_view, c.buffer(t_.sun_optical_depth_view)));
+      entries.push_back(bind(mapped::map_linear, c.sampler(rhi::StockSampler::linear_clamp)));
+    }
     const rhi::BindGroupId group = c.bind_group(program_, entries);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.clouds));
   }
 
  private:
+  // The permutation: the weather map bound, the variant transmittance_map.
+  const char* shader_name() const {
+    if (mapped_) return weathered_ ? "cloud_march_weather_transmittance_map.comp" : "cloud_march_transmittance_map.comp";
+    return weathered_ ? "cloud_march_weather.comp" : "cloud_march.comp";
+  }
+
   // The atmosphere's light at the layer's middle altitude (physics/atmosphere_lighting.h),
   // kept until the atmosphere, its sun or the layer changes: Ψ_ms costs the CPU ~10 ms.
   const physics::LightAtAltitude& layer_light(const Scene& scene) {
@@ -196,7 +229,8 @@ class CloudMarchExecution final : public PassExecution {
   }
 
   const CloudMarchTable& t_;
-  bool weathered_ = false;  // the weather input bound: cloud_march_weather.comp
+  bool weathered_ = false;  // the weather input bound: cloud_march_weather*.comp
+  bool mapped_ = false;     // the variant transmittance_map: cloud_march*_transmittance_map.comp
   std::optional<uint64_t> light_hash_;
   physics::LightAtAltitude light_;
   plumbing::ComputeProgram program_;

@@ -5,7 +5,10 @@
 // samples, the density cloud_march's (shaders/include/cloud_layer.glsl, the same text). The
 // square's placement is cloud_shadow_view() (passes/clouds/cloud_shadow_view.h), written to
 // `view` for the readers. Optional input `weather` (cloud_weather_map's): the coverage and
-// type read there, as cloud_march does. Shaders: shaders/cloud_shadow_map.comp,
+// type read there, as cloud_march does. With `layers` N > 0 also `optical_depth_layers`
+// (Schneider & Vos 2015's transmittance map, size × size × N): slice k holds τ from the point
+// at altitude bottom + (k + ½)/N · (top − bottom) on the same sun ray to the layer's top, by
+// `steps` midpoint samples (cloud_march's transmittance_map variant reads it). Shaders: shaders/cloud_shadow_map.comp,
 // cloud_shadow_map_weather.comp (include/cloud_shadow_map_body.glsl).
 #include <array>
 #include <cstddef>
@@ -39,6 +42,8 @@ struct CloudShadowMapTable : PassTable {
   ParamHandle<double> extent = number("extent", 40000, 1, 1e6, "m", "side of the square the map covers, centred under the camera");
   ParamHandle<int64_t> steps = integer("steps", 32, 1, 1024, "", "samples of the density along the sun's ray through the layer");
   ParamHandle<double> curl_strength = number("curl_strength", 0.1, 0, 1, "detail tiles", "cloud_march's curl_strength (keep them equal)");
+  ParamHandle<int64_t> layers = integer("layers", 0, 0, 256, "",
+                                        "slices of optical_depth_layers, the transmittance map (0: none, one unwritten slice)");
   // Slots.
   SlotHandle shape = input("shape", ResourceKind::texture3d, Usage::sampled, "cloud_noise.shape");
   SlotHandle detail = input("detail", ResourceKind::texture3d, Usage::sampled, "cloud_noise.detail");
@@ -47,6 +52,11 @@ struct CloudShadowMapTable : PassTable {
                                       "cloud_weather_map.weather (cloud_march's: keep them equal); unbound: the layer's coverage and type");
   SlotHandle optical_depth = output("optical_depth", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
                                     SizeSpec::square_of(size), "r the optical depth τ toward the sun from the layer's bottom plane");
+  SlotHandle optical_depth_layers =
+      output("optical_depth_layers", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float, SizeSpec::square_layers_of(size, layers),
+             "r τ toward the sun from altitude bottom + (k + ½)/layers · (top − bottom) on the texel's sun ray, slice k (layers > 0)",
+             // Never aliased: bound (and written) even where nothing reads it, which an aliased transient's barriers miss.
+             {.persistent = true});
   SlotHandle view = output("view", ResourceKind::buffer, Usage::copy_dst, Format::undefined, SizeSpec::bytes(sizeof(gpu::CloudShadowView)),
                            "the map's placement (shaders/include/cloud_shadow_view.h), for the passes that read it");
 };
@@ -72,7 +82,7 @@ class CloudShadowMapExecution final : public PassExecution {
     std::vector<rhi::BoundResource> entries = {
         bind(shader::params, params_), bind(shader::shape, c.view(t_.shape)), bind(shader::detail, c.view(t_.detail)),
         bind(shader::curl, c.view(t_.curl)), bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)),
-        bind(shader::optical_depth, c.view(t_.optical_depth))};
+        bind(shader::optical_depth, c.view(t_.optical_depth)), bind(shader::optical_depth_layers, c.view(t_.optical_depth_layers))};
     if (weathered_) entries.push_back(bind(shaders::cloud_shadow_map_weather_comp::weather, c.view(t_.weather)));
     const rhi::BindGroupId group = c.bind_group(program_, entries);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.optical_depth));
@@ -95,6 +105,7 @@ class CloudShadowMapExecution final : public PassExecution {
     const std::array<float, 4> weather = clouds::weather_lookup(layer);
     for (int i = 0; i < 4; ++i) p.weather[i] = weather[size_t(i)];
     p.steps[0] = int32_t(c.param(t_.steps));
+    p.steps[1] = int32_t(c.param(t_.layers));
     return p;
   }
 

@@ -1,5 +1,8 @@
 // cloud_march (passes/clouds/cloud_march.cpp; wrapped by cloud_march.comp, and by
-// cloud_march_weather.comp with CLOUD_WEATHER_MAP: the weather map bound): per pixel, the view ray through the cloud
+// cloud_march_weather.comp with CLOUD_WEATHER_MAP: the weather map bound; the variant
+// transmittance_map by cloud_march_transmittance_map.comp and cloud_march_weather_transmittance_map.comp
+// with CLOUD_TRANSMITTANCE_MAP: the sun's optical depth read from cloud_shadow_map's
+// optical_depth_layers, the secondary march only outside it): per pixel, the view ray through the cloud
 // layer (Schneider & Vos 2015; RTR4 14.4.2): the segment between the layer's two spheres
 // (clipped by the scene's surface and max_distance), marched in `steps` equal steps with
 // empty-space skipping (coarse steps of 2 × the step on the base density until some is
@@ -14,6 +17,9 @@
 #include "include/depth_buffer.glsl"
 #include "include/view_rays.glsl"
 #include "include/cloud_march_params.h"
+#ifdef CLOUD_TRANSMITTANCE_MAP
+#include "include/cloud_shadow_view.h"
+#endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -29,6 +35,11 @@ layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D cloud_transmitta
 layout(set = 0, binding = 9, r32f) uniform writeonly image2D cloud_distance;
 #ifdef CLOUD_WEATHER_MAP
 layout(set = 0, binding = 10) uniform texture2D weather;  // cloud_weather_map.weather: r coverage, g type, a type weight
+#endif
+#ifdef CLOUD_TRANSMITTANCE_MAP
+layout(set = 0, binding = 11) uniform texture3D sun_optical_depth;  // cloud_shadow_map.optical_depth_layers: r τ to the layer's top
+layout(set = 0, binding = 12) uniform SunOpticalDepthViewBlock { CloudShadowView view; } sun_optical_depth_view;
+layout(set = 0, binding = 13) uniform sampler map_linear;  // linear, clamp: trilinear within the map
 #endif
 
 const float NEGLIGIBLE = 1e-3;    // early termination: below this transmittance nothing behind shows (kept, not zeroed)
@@ -64,16 +75,39 @@ bool layer_segment(vec3 o, vec3 d, out float t_in, out float t_out) {
   return t_out > t_in;
 }
 
-// The optical depth toward the sun from p: `light_steps` samples over the light march's
-// length, infinite where the ground hides the sun.
-float sun_optical_depth(vec3 p) {
+// The optical depth toward the sun from p by the secondary march: `light_steps` samples
+// over the light march's length.
+float marched_sun_optical_depth(vec3 p) {
   const vec3 to_sun = params.sun.xyz;
-  if (hits_ground(p, to_sun, altitude(p))) return 1e30;
   const int n = max(params.steps.y, 1);
   const float ds = params.scales.w / float(n);
   float tau = 0.0;
   for (int j = 0; j < n; ++j) tau += cloud_extinction(params.cloud.z, density(p + (float(j) + 0.5) * ds * to_sun)) * ds;
   return tau;
+}
+
+#ifdef CLOUD_TRANSMITTANCE_MAP
+// The transmittance map's τ at p (Schneider & Vos 2015): p's column (carried along to_sun
+// onto the bottom plane, cloud_shadow_lookup.glsl's rule) and p's altitude fraction, read
+// trilinearly (slice k's centre at (k + ½)/N: the fraction itself); outside the map (or
+// with its sun below the horizon) the secondary march.
+float sun_optical_depth_at(vec3 p) {
+  const CloudShadowView view = sun_optical_depth_view.view;
+  if (view.to_sun.y <= 0.0) return marched_sun_optical_depth(p);
+  const float s = (view.plane.y - p.y) / view.to_sun.y;
+  const vec2 uv = (p.xz + s * view.to_sun.xz - view.plane.xz) / view.plane.w + 0.5;
+  const float f = cloud_height_fraction(altitude(p), params.layer.x, params.layer.y);
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return marched_sun_optical_depth(p);
+  return textureLod(sampler3D(sun_optical_depth, map_linear), vec3(uv, f), 0.0).r;  // level 0: no derivatives (WGSL)
+}
+#else
+float sun_optical_depth_at(vec3 p) { return marched_sun_optical_depth(p); }
+#endif
+
+// The optical depth toward the sun from p, infinite where the ground hides the sun.
+float optical_depth_toward_sun(vec3 p) {
+  if (hits_ground(p, params.sun.xyz, altitude(p))) return 1e30;
+  return sun_optical_depth_at(p);
 }
 
 // Radiance per metre the cloud sends toward the camera at p (density > 0): the sun through
@@ -83,7 +117,7 @@ vec3 source(vec3 p, float rho, float cos_theta) {
   const float sigma_s = cloud_scattering(params.cloud.z, rho);
   vec3 s = params.ambient.rgb * sigma_s;
   if (params.sun.w > 0.5) {
-    const float tau = sun_optical_depth(p);
+    const float tau = optical_depth_toward_sun(p);
     if (tau < 1e29) {
       const float lit = cloud_octaves(sigma_s, tau, cos_theta, params.lobes.x, params.lobes.y, params.lobes.z, params.steps.z,
                                       params.octave.x, params.octave.y, params.octave.z) * cloud_powder(tau, params.octave.w);

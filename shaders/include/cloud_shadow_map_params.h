@@ -13,7 +13,7 @@ GPU_STRUCT(CloudShadowMapParams) {
   vec4 scales;  // x shape tile, y detail tile (m), z curl distortion (detail tiles)
   vec4 wind;    // xyz the noise's offset (m): wind × time
   vec4 weather; // the weather map's lookup (cloud_layer.glsl): x 1 / its size (1/m), yz its offset (m)
-  ivec4 steps;  // x samples along the sun's ray through the layer
+  ivec4 steps;  // x samples along the sun's ray through the layer, y layers (0: no transmittance map)
 };
 GPU_END
 

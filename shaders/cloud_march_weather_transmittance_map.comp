@@ -1,0 +1,6 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// cloud_march's transmittance_map variant, coverage and type read from the weather map (cloud_layer.glsl).
+#define CLOUD_WEATHER_MAP
+#define CLOUD_TRANSMITTANCE_MAP
+#include "include/cloud_march_body.glsl"
