@@ -283,6 +283,10 @@ TEST(UniformMirrors, CloudShadowViewBlocksMatch) {
                              "scene_translucent_shadowed_cloud_shadowed.frag", "scene_media_translucent_shadowed_cloud_shadowed.frag"}) {
     EXPECT_EQ(wrapped_error<gpu::CloudShadowView>(shader, 2, 9, "gpu::CloudShadowView"), "") << shader;
   }
+  // cloud_march's transmittance_map variant: the map's placement (sun_optical_depth_view).
+  for (const char* shader : {"cloud_march_transmittance_map.comp", "cloud_march_weather_transmittance_map.comp"}) {
+    EXPECT_EQ(wrapped_error<gpu::CloudShadowView>(shader, 0, 12, "gpu::CloudShadowView"), "") << shader;
+  }
 }
 
 // The reader agrees with reflection where both see a struct: FogFrame is Frame's only
