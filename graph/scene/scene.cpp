@@ -146,6 +146,7 @@ void hash_geometry(SceneHasher& h, const Scene& scene) {
     h.add(t.alpha_cutoff);
     h.add(t.transmission);
     h.add(t.ior);
+    h.add(t.dispersion);
     h.add(t.attenuation_color);
     h.add(t.attenuation_distance);
     h.add(int64_t(t.volume));
