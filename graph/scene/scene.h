@@ -228,6 +228,8 @@ struct Scene {
   // a change to any value in a part changes it (but for collisions, 1 in 2^64).
   uint64_t hash(ScenePartMask parts) const;
   const Material* find_material(const std::string& name) const;
+  // The sun: the atmosphere's sun light, else the first directional light; none: −1.
+  int sun_light() const;
 };
 
 }  // namespace volgraph
