@@ -127,6 +127,16 @@ Vec3Of<Real> slab_exit_offset(const Vec3Of<Real>& to_incident, const Vec3Of<Real
   return exit;
 }
 
+// The IOR per colour channel (red, green, blue) of a dispersive medium: KHR_materials_dispersion's
+// `dispersion` = 20/V_d spreads it as the extension's sample implementation does,
+// halfSpread = (ior − 1)·0.025·dispersion, red ior − halfSpread, green ior, blue ior + halfSpread.
+// Dispersion 0 gives the one IOR in all three.
+template <typename Real>
+Vec3Of<Real> dispersed_iors(Real ior, Real dispersion) {
+  const Real half_spread = (ior - Real(1)) * Real(0.025) * dispersion;
+  return Vec3Of<Real>{ior - half_spread, ior, ior + half_spread};
+}
+
 // What a translucent surface does to a ray, per channel: it adds `radiance` and passes
 // `transmittance` of what lies behind it, C = radiance + transmittance ⊙ C_behind (one
 // layer of RTR4 §14.5.1's blending; the blending passes compose layers by it).

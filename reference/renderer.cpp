@@ -37,6 +37,13 @@ std::vector<Triangle> shadow_casters(const SceneTriangles& scene) {
   return casters;
 }
 
+bool any_dispersive(const SceneTriangles& scene) {
+  for (const SurfaceMaterial& m : scene.materials) {
+    if (m.translucency.dispersion > 0) return true;
+  }
+  return false;
+}
+
 bool any_see_through(const SceneTriangles& scene, const std::vector<uint32_t>& casters) {
   for (const uint32_t i : casters) {
     const SurfaceMaterial& m = scene.materials[scene.attributes[i].material];
@@ -105,6 +112,7 @@ Renderer::Renderer(const Scene& scene, const IntegrationSettings& integration, c
       shadow_bvh_(shadow_casters(triangles_)),
       shadow_triangles_(shadow_caster_indices(triangles_)),
       see_through_casters_(any_see_through(triangles_, shadow_triangles_)),
+      dispersive_(any_dispersive(triangles_)),
       environment_(scene.atmosphere ? sky_ambient_ : scene.background),
       media_(scene.media),
       integration_(integration) {}

@@ -176,7 +176,7 @@ class Renderer {
   SurfaceKind surface_kind(const SurfaceHit& hit) const;
   const SurfaceMaterial& material_of(const SurfaceHit& hit) const;
   double solid_chord(const SurfaceHit& entry, const Ray& ray) const;
-  physics::LayerInputs<double> layer_inputs(const SurfaceHit& hit, const Vec3& direction, double chord, bool lit) const;
+  physics::LayerInputs<double> layer_inputs(const SurfaceHit& hit, const Vec3& direction, double chord, bool lit, int channel = -1) const;
   Vec3 shadow_ray_transmittance(const Ray& ray) const;
   Vec3 inside_transmittance(const SurfaceMaterial& m, double length) const;
   LayeredRay layers_along(const Vec3& direction) const;
@@ -185,7 +185,9 @@ class Renderer {
   struct PathState {
     uint32_t layers = 0, bounces = 0;
     double weight = 1;
+    int channel = -1;  // the one colour channel traced (a dispersive scene's), −1: all three at one IOR
   };
+  Vec3 refracted_trace_per_channel(const Ray& ray) const;
   Vec3 refracted_trace(const Ray& ray, double segment_start, PathState state) const;
   Vec3 enter_solid(const SurfaceHit& entry, const Vec3& direction, PathState state) const;
   Vec3 inside_solid(const Ray& ray, uint32_t object, const SurfaceMaterial& medium, PathState state) const;
@@ -203,6 +205,7 @@ class Renderer {
   Bvh shadow_bvh_;  // the triangles of shadow-casting objects
   std::vector<uint32_t> shadow_triangles_;  // shadow_bvh_'s triangle k is triangles_' shadow_triangles_[k]
   bool see_through_casters_ = false;        // a shadow caster is translucent or masked
+  bool dispersive_ = false;                 // a material has dispersion > 0: refracted mode traces each channel apart
   Vec3 environment_{0, 0, 0};
   SceneMedia media_;
   IntegrationSettings integration_;

@@ -42,6 +42,13 @@ Ray secondary_ray(const Vec3& point, const Vec3& direction) {
 // The mirror direction of unit `d` about unit `n`: d − 2(d·n) n (RTR4 eq. 11.1's form).
 Vec3 reflect(const Vec3& d, const Vec3& n) { return sub(d, scaled(n, 2 * dot(d, n))); }
 
+// The IOR a ray of one colour channel sees (KHR_materials_dispersion's spread,
+// physics::dispersed_iors); channel −1 (all three traced together): the one IOR.
+double channel_ior(const Translucency& t, int channel) {
+  if (channel < 0 || t.dispersion <= 0) return t.ior;
+  return physics::dispersed_iors(t.ior, t.dispersion)[size_t(channel)];
+}
+
 // The normal an interface refracts about: the shading normal, or the triangle's plane
 // where the shading normal faces away from `to_incident` (silhouettes of smooth meshes).
 Vec3 interface_normal(const SurfaceHit& hit, const Vec3& to_incident) {
@@ -99,9 +106,10 @@ Vec3 Renderer::inside_transmittance(const SurfaceMaterial& m, double length) con
 // normal (turned toward the ray's origin) and the way back (one interface: no exit F), the
 // path inside by the volume kind (`chord` for a solid, taken at the refracted angle). `lit`: the
 // radiance's inputs too (irradiance, environment, emission), else only the transmittance's.
-physics::LayerInputs<double> Renderer::layer_inputs(const SurfaceHit& hit, const Vec3& direction, double chord, bool lit) const {
+physics::LayerInputs<double> Renderer::layer_inputs(const SurfaceHit& hit, const Vec3& direction, double chord, bool lit, int channel) const {
   const SurfaceMaterial& m = material_of(hit);
   const Translucency& tr = m.translucency;
+  const double ior = channel_ior(tr, channel);
   const double cos_view = std::clamp(-dot(hit.normal, direction), 0.0, 1.0);
   physics::LayerInputs<double> in;
   in.alpha = layer_coverage(triangles_, m, hit.u, hit.v);
@@ -112,10 +120,10 @@ physics::LayerInputs<double> Renderer::layer_inputs(const SurfaceHit& hit, const
     in.irradiance = surface_irradiance(hit.position, hit.normal);
     in.environment = environment_;
   }
-  in.reflectance = physics::interface_reflectance(tr.ior, cos_view);
+  in.reflectance = physics::interface_reflectance(ior, cos_view);
   double path = 0;
-  if (tr.volume == VolumeKind::shell) path = physics::shell_path_length(thickness_at(triangles_, m, hit.u, hit.v), tr.ior, cos_view);
-  if (tr.volume == VolumeKind::solid) path = physics::solid_path_length(chord, tr.ior, cos_view);  // refracted, as the passes
+  if (tr.volume == VolumeKind::shell) path = physics::shell_path_length(thickness_at(triangles_, m, hit.u, hit.v), ior, cos_view);
+  if (tr.volume == VolumeKind::solid) path = physics::solid_path_length(chord, ior, cos_view);  // refracted, as the passes
   in.path_transmittance = inside_transmittance(m, path);
   return in;
 }
@@ -216,7 +224,20 @@ Vec3 Renderer::refracted_ray_radiance(const Vec3& direction) const {
   const Camera& camera = scene_.camera;
   const double along_axis = dot(direction, physics::normalize(sub(camera.target, camera.position)));
   if (along_axis <= 0) return ray_end_radiance(direction, std::nullopt);
-  return refracted_trace({camera.position, direction, camera.near / along_axis, camera.far / along_axis}, 0, {});
+  const Ray ray{camera.position, direction, camera.near / along_axis, camera.far / along_axis};
+  return dispersive_ ? refracted_trace_per_channel(ray) : refracted_trace(ray, 0, {});
+}
+
+// A dispersive scene (KHR_materials_dispersion): each channel's ray is traced on its own,
+// every medium at that channel's IOR (physics::dispersed_iors), and keeps its own channel.
+Vec3 Renderer::refracted_trace_per_channel(const Ray& ray) const {
+  Vec3 c{0, 0, 0};
+  for (int channel = 0; channel < 3; ++channel) {
+    PathState state;
+    state.channel = channel;
+    c[size_t(channel)] = refracted_trace(ray, 0, state)[size_t(channel)];
+  }
+  return c;
 }
 
 // The radiance arriving at the ray's point `segment_start` along it: surfaces as in
@@ -229,7 +250,7 @@ Vec3 Renderer::refracted_trace(const Ray& ray, double segment_start, PathState s
   beyond.t_min = past(hit->t);
   const SurfaceKind kind = surface_kind(*hit);
   const SurfaceMaterial& m = material_of(*hit);
-  const bool interface = m.translucency.volume == VolumeKind::solid && m.translucency.ior != 1;
+  const bool interface = m.translucency.volume == VolumeKind::solid && channel_ior(m.translucency, state.channel) != 1;
   if (kind == SurfaceKind::opaque) return segment_with_media(ray, segment_start, end, surface_radiance(*hit));
   if (kind == SurfaceKind::hole || (kind == SurfaceKind::solid_back_face && !interface)) {
     return refracted_trace(beyond, segment_start, state);
@@ -241,7 +262,7 @@ Vec3 Renderer::refracted_trace(const Ray& ray, double segment_start, PathState s
   if (interface) return segment_with_media(ray, segment_start, end, enter_solid(*hit, ray.direction, state));
   // A thin wall, a shell or a solid of ior 1: a layer, as in straight mode.
   const double chord = m.translucency.volume == VolumeKind::solid ? solid_chord(*hit, ray) : 0;
-  const physics::SurfaceLayer<double> layer = physics::surface_layer(layer_inputs(*hit, ray.direction, chord, true));
+  const physics::SurfaceLayer<double> layer = physics::surface_layer(layer_inputs(*hit, ray.direction, chord, true, state.channel));
   if (is_identity(layer)) return segment_with_media(ray, segment_start, end, refracted_trace(beyond, end, state));
   if (++state.layers > integration_.max_layers) return segment_with_media(ray, segment_start, end, miss_radiance(ray.direction));
   state.weight *= largest(layer.transmittance);
@@ -255,12 +276,12 @@ Vec3 Renderer::refracted_trace(const Ray& ray, double segment_start, PathState s
 // applied along the refracted path. The uncovered part (α < 1) enters refracted too.
 Vec3 Renderer::enter_solid(const SurfaceHit& entry, const Vec3& direction, PathState state) const {
   const SurfaceMaterial& m = material_of(entry);
-  physics::LayerInputs<double> in = layer_inputs(entry, direction, 0, true);
+  physics::LayerInputs<double> in = layer_inputs(entry, direction, 0, true, state.channel);
   in.path_transmittance = {1, 1, 1};
   const physics::SurfaceLayer<double> layer = physics::surface_layer(in);
   if (++state.bounces > integration_.max_bounces) return layer.radiance;
   const Vec3 to_incident = scaled(direction, -1);
-  const std::optional<Vec3> inside = physics::refract_bec(to_incident, interface_normal(entry, to_incident), 1 / m.translucency.ior);
+  const std::optional<Vec3> inside = physics::refract_bec(to_incident, interface_normal(entry, to_incident), 1 / channel_ior(m.translucency, state.channel));
   if (!inside || is_zero(layer.transmittance)) return layer.radiance;
   state.weight *= largest(layer.transmittance);
   const Vec3 through = inside_solid(secondary_ray(entry.position, physics::normalize(*inside)), triangles_.attributes[entry.triangle].object, m, state);
@@ -294,10 +315,11 @@ Vec3 Renderer::leave_solid(const SurfaceHit& exit, const Vec3& direction, PathSt
   const Vec3 to_incident = scaled(direction, -1);
   const Vec3 n = interface_normal(exit, to_incident);
   const Vec3 mirrored = physics::normalize(reflect(direction, n));
-  const std::optional<Vec3> out = physics::refract_bec(to_incident, n, m.translucency.ior);
+  const double ior = channel_ior(m.translucency, state.channel);
+  const std::optional<Vec3> out = physics::refract_bec(to_incident, n, ior);
   if (!out) return inside_solid(secondary_ray(exit.position, mirrored), object, m, state);  // total internal reflection
   const Vec3 outward = physics::normalize(*out);
-  const double f = physics::interface_reflectance(m.translucency.ior, std::abs(dot(outward, n)));
+  const double f = physics::interface_reflectance(ior, std::abs(dot(outward, n)));
   PathState outside = state;
   outside.weight *= 1 - f;
   Vec3 c = scaled(refracted_trace(secondary_ray(exit.position, outward), 0, outside), 1 - f);

@@ -1,8 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // froxel_scatter with one light shadowed by a shadow map and by the media through an opacity
-// shadow map of the same light view (set 1: include/froxel_scatter_visibility.glsl).
-#define FROXEL_SHADOW_MAP
-#define FROXEL_MEDIA_SHADOW
-#include "include/froxel_scatter_visibility.glsl"
+// shadow map of the same light view (set 1: include/fog_light_visibility.glsl).
+#define FOG_SHADOW_MAP
+#define FOG_MEDIA_SHADOW
+#include "include/fog_light_visibility.glsl"
 #include "include/froxel_scatter_body.glsl"

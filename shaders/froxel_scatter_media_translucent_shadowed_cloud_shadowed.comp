@@ -3,10 +3,10 @@
 // froxel_scatter with one light shadowed by a shadow map, by the media through an opacity
 // shadow map, and tinted by the translucent casters through a translucent_shadow_map, all of
 // the same light view, and the sun dimmed by the cloud layer above through a cloud_shadow_map
-// (set 1: include/froxel_scatter_visibility.glsl).
-#define FROXEL_SHADOW_MAP
-#define FROXEL_MEDIA_SHADOW
-#define FROXEL_TRANSLUCENT_SHADOW
-#define FROXEL_CLOUD_SHADOW
-#include "include/froxel_scatter_visibility.glsl"
+// (set 1: include/fog_light_visibility.glsl).
+#define FOG_SHADOW_MAP
+#define FOG_MEDIA_SHADOW
+#define FOG_TRANSLUCENT_SHADOW
+#define FOG_CLOUD_SHADOW
+#include "include/fog_light_visibility.glsl"
 #include "include/froxel_scatter_body.glsl"

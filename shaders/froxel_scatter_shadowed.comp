@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // froxel_scatter with one light shadowed by a shadow map (set 1:
-// include/froxel_scatter_visibility.glsl).
-#define FROXEL_SHADOW_MAP
-#include "include/froxel_scatter_visibility.glsl"
+// include/fog_light_visibility.glsl).
+#define FOG_SHADOW_MAP
+#include "include/fog_light_visibility.glsl"
 #include "include/froxel_scatter_body.glsl"

@@ -3,8 +3,8 @@
 // froxel_scatter with one light shadowed by a shadow map and tinted by the translucent casters
 // between it and each froxel through a translucent_shadow_map of the same light view (RTR4
 // §14.5.1: the fog behind coloured glass carries its tint) (set 1:
-// include/froxel_scatter_visibility.glsl).
-#define FROXEL_SHADOW_MAP
-#define FROXEL_TRANSLUCENT_SHADOW
-#include "include/froxel_scatter_visibility.glsl"
+// include/fog_light_visibility.glsl).
+#define FOG_SHADOW_MAP
+#define FOG_TRANSLUCENT_SHADOW
+#include "include/fog_light_visibility.glsl"
 #include "include/froxel_scatter_body.glsl"

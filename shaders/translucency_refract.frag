@@ -20,7 +20,16 @@ void write_layer(SurfaceLayer layer, SurfacePoint point) { factor = vec4(layer.t
 
 #include "include/translucent_surface.glsl"
 
+// Each channel's own refracted sample where the material disperses (KHR_materials_dispersion:
+// one lookup per channel at its IOR), else the one IOR's.
+vec3 refracted_sample_at(SurfacePoint p, float ior);
 vec3 refracted_sample(SurfacePoint p) {
+  if (!dispersive()) return refracted_sample_at(p, object.translucency.z);
+  const vec3 iors = channel_iors();
+  return vec3(refracted_sample_at(p, iors.r).r, refracted_sample_at(p, iors.g).g, refracted_sample_at(p, iors.b).b);
+}
+
+vec3 refracted_sample_at(SurfacePoint p, float ior) {
   const ivec2 size = textureSize(sampler2D(scene_depth, nearest), 0);
   const ivec2 here = ivec2(gl_FragCoord.xy);
   const vec3 straight = texelFetch(sampler2D(refracted_color, nearest), here, 0).rgb;
@@ -28,7 +37,7 @@ vec3 refracted_sample(SurfacePoint p) {
   // The opaque surface behind along the straight ray, then displaced across it.
   const float opaque_depth = view_depth_of(texelFetch(sampler2D(scene_depth, nearest), here, 0).r);
   const float behind = opaque_depth * p.distance / p.view_depth;  // view depth to distance along this ray
-  const vec3 offset = slab_exit_offset(p.to_camera, p.normal, object.translucency.z, p.inside);
+  const vec3 offset = slab_exit_offset(p.to_camera, p.normal, ior, p.inside);
   if (offset == vec3(0.0)) return straight;  // IOR 1 or head-on: exactly the straight sample
   const vec4 clip = frame.view_projection * vec4(translucency.camera.xyz - p.to_camera * behind + offset, 1.0);
   if (clip.w <= 0.0) return straight;

@@ -391,6 +391,7 @@ int run_view(const Args& args, const PassRegistry& registry) {
   if (!args.script.empty() && args.view_frames > 0) {
     throw UsageError("--script and --frames: the script's `frames N` lines say how many frames to render");
   }
+  if (args.backend == "webgpu" && args.device >= 0) throw UsageError("--device picks a Vulkan device; WebGPU uses Dawn's default adapter");
   viewer::ViewOptions options;
   options.scripted = !args.script.empty();
   if (options.scripted) options.script = viewer::read_script(args.script);

@@ -18,6 +18,13 @@ const Material* Scene::find_material(const std::string& name) const {
   return nullptr;
 }
 
+int Scene::sun_light() const {
+  if (atmosphere && atmosphere->sun_light >= 0) return atmosphere->sun_light;
+  for (size_t i = 0; i < lights.size(); ++i)
+    if (lights[i].type == LightType::directional) return int(i);
+  return -1;
+}
+
 SceneFeatures Scene::features() const {
   SceneFeatures f = 0;
   if (!objects.empty()) f |= feature_bit(SceneFeature::geometry);
@@ -146,6 +153,7 @@ void hash_geometry(SceneHasher& h, const Scene& scene) {
     h.add(t.alpha_cutoff);
     h.add(t.transmission);
     h.add(t.ior);
+    h.add(t.dispersion);
     h.add(t.attenuation_color);
     h.add(t.attenuation_distance);
     h.add(int64_t(t.volume));

@@ -51,6 +51,7 @@ struct Translucency {
   double alpha_cutoff = 0.5;  // mask: coverage below it is a hole
   double transmission = 0;    // 0–1 of the light the interface does not reflect
   double ior = 1.5;
+  double dispersion = 0;  // KHR_materials_dispersion: 20/V_d (Abbe number), 0 = one IOR for all channels
   Vec3 attenuation_color{1, 1, 1};     // transmittance after attenuation_distance inside
   double attenuation_distance = 1e30;  // m (1e30: no absorption)
   VolumeKind volume = VolumeKind::thin_walled;
@@ -227,6 +228,8 @@ struct Scene {
   // a change to any value in a part changes it (but for collisions, 1 in 2^64).
   uint64_t hash(ScenePartMask parts) const;
   const Material* find_material(const std::string& name) const;
+  // The sun: the atmosphere's sun light, else the first directional light; none: −1.
+  int sun_light() const;
 };
 
 }  // namespace volgraph

@@ -14,13 +14,8 @@ namespace volgraph::clouds {
 constexpr double kEarthRadius = 6360e3;   // m: the planet without an atmosphere (DESIGN.md's units)
 constexpr double kFramesPerSecond = 60;   // the wind's clock: the graph has frames, not seconds
 
-// The layer's sun: the atmosphere's sun light, else the scene's first directional light; none: -1.
-inline int sun_index(const Scene& scene) {
-  if (scene.atmosphere && scene.atmosphere->sun_light >= 0) return scene.atmosphere->sun_light;
-  for (size_t i = 0; i < scene.lights.size(); ++i)
-    if (scene.lights[i].type == LightType::directional) return int(i);
-  return -1;
-}
+// The layer's sun: the scene's (Scene::sun_light).
+inline int sun_index(const Scene& scene) { return scene.sun_light(); }
 
 // The planet's radius (m): the atmosphere's ground, else Earth's.
 inline double planet_radius(const Scene& scene) { return scene.atmosphere ? scene.atmosphere->bottom_radius : kEarthRadius; }

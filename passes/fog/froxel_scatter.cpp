@@ -12,7 +12,7 @@
 // carries its colour). With a cloud_shadow_map wired, the cloud layer above dims the sun's V
 // by exp(−τ) (shafts of fog light between the clouds' shadows).
 // Shaders: shaders/froxel_scatter.comp and froxel_scatter_*shadowed.comp, one per set of maps
-// wired (their defines over shaders/include/froxel_scatter_visibility.glsl; the body
+// wired (their defines over shaders/include/fog_light_visibility.glsl; the body
 // shaders/include/froxel_scatter_body.glsl).
 #include <cstddef>
 #include <string>
@@ -31,7 +31,7 @@ namespace volgraph {
 namespace {
 
 namespace froxel_scatter_shader = shaders::froxel_scatter_comp;
-// Every map's bindings in set 1, numbered alike in every permutation (froxel_scatter_visibility.glsl).
+// Every map's bindings in set 1, numbered alike in every permutation (fog_light_visibility.glsl).
 namespace froxel_scatter_maps_shader = shaders::froxel_scatter_media_translucent_shadowed_cloud_shadowed_comp;
 
 struct FroxelScatterTable : fog::PhaseTable {

@@ -13,8 +13,11 @@
 // fog_apply's two images: in-scattered radiance and transmittance.
 // With a translucent_shadow_map of the shadow map's light view wired, the translucent casters
 // tint that light at each sample (RTR4 §14.5.1).
-// Shaders: shaders/raymarch_fog.comp, raymarch_fog_shadowed.comp, raymarch_fog_translucent_shadowed.comp
-// (shaders/include/raymarch_fog_body.glsl, in_scattering.glsl, light_transmittance.glsl).
+// With a cloud_shadow_map wired, the cloud layer above dims the sun at each sample by exp(−τ).
+// Shaders: shaders/raymarch_fog.comp and raymarch_fog_*shadowed.comp, one per set of maps
+// wired (their defines over shaders/include/fog_light_visibility.glsl; the march
+// shaders/include/raymarch_fog_body.glsl, in_scattering.glsl, light_transmittance.glsl).
+#include <string>
 #include <vector>
 #include <cstddef>
 
@@ -25,14 +28,14 @@
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
 #include "passes/fog/phase_variants.h"
-#include "shaders/bindings/raymarch_fog_shadowed.comp.h"
-#include "shaders/bindings/raymarch_fog_translucent_shadowed.comp.h"
+#include "shaders/bindings/raymarch_fog_translucent_shadowed_cloud_shadowed.comp.h"
+#include "shaders/include/cloud_shadow_view.h"
 
 namespace volgraph {
 namespace {
 
-namespace raymarch_fog_shadowed_shader = shaders::raymarch_fog_shadowed_comp;
-namespace raymarch_fog_tinted_shader = shaders::raymarch_fog_translucent_shadowed_comp;
+// Every binding by the fullest permutation's names: the others number theirs alike (fog_light_visibility.glsl).
+namespace raymarch_fog_shader = shaders::raymarch_fog_translucent_shadowed_cloud_shadowed_comp;
 
 // The outputs' size (parameter "resolution").
 enum class Resolution : uint8_t { full, half };
@@ -75,6 +78,11 @@ struct RaymarchFogTable : fog::PhaseTable {
   SlotHandle translucent_shadow_depth = optional_input("translucent_shadow_depth", ResourceKind::texture2d, Usage::sampled,
                                                        "translucent_shadow_map's depth: only samples behind its casters are tinted",
                                                        {.format = Format::d32_float});
+  SlotHandle cloud_shadow = optional_input("cloud_shadow", ResourceKind::texture2d, Usage::sampled,
+                                           "cloud_shadow_map's optical depth: the cloud layer dims the sun by exp(−τ)",
+                                           {.format = Format::rgba16_float});
+  SlotHandle cloud_shadow_view = optional_input("cloud_shadow_view", ResourceKind::buffer, Usage::uniform_read,
+                                                "cloud_shadow_map's view (where its square lies, toward which sun)");
   SlotHandle fog_scattering = output("fog_scattering", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
                                      fog_image_size(), "in-scattered radiance toward the camera, rgb");
   SlotHandle fog_transmittance = output("fog_transmittance", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
@@ -92,10 +100,11 @@ class RaymarchFogExecution final : public PassExecution {
     using namespace rhi;
     shadowed_ = s.bound(t_.shadow_map) && s.bound(t_.light_view) && s.param(t_.shadows);
     tinted_ = shadowed_ && s.bound(t_.translucent_shadow) && s.bound(t_.translucent_shadow_depth);
-    program_ = plumbing::create_compute_program(s.device, tinted_     ? "raymarch_fog_translucent_shadowed.comp"
-                                                          : shadowed_ ? "raymarch_fog_shadowed.comp"
-                                                                      : "raymarch_fog.comp");
-    plumbing::check_wrapped_uniform_mirror<gpu::RaymarchParams>(program_, raymarch_fog_shadowed_shader::params, s.name() + " params");
+    cloud_shadowed_ = s.bound(t_.cloud_shadow) && s.bound(t_.cloud_shadow_view);
+    program_ = plumbing::create_compute_program(s.device, shader_name());
+    if (cloud_shadowed_)
+      plumbing::check_wrapped_uniform_mirror<gpu::CloudShadowView>(program_, raymarch_fog_shader::cloud_shadow_view, s.name() + " cloud_shadow_view");
+    plumbing::check_wrapped_uniform_mirror<gpu::RaymarchParams>(program_, raymarch_fog_shader::params, s.name() + " params");
     plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(program_, 0, 0, s.name() + " frame");
     phase_ = {s.variant().shader_code, float(s.param(t_.g_back)), float(s.param(t_.w_forward))};
     frame_ = s.device.create_buffer({"raymarch_fog frame", sizeof(gpu::FogFrame), buffer_usage::uniform | buffer_usage::copy_dst});
@@ -109,25 +118,44 @@ class RaymarchFogExecution final : public PassExecution {
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
     // Both variants' shaders declare raymarch_fog_body.glsl's set 0; the shadowed one set 1.
-    const rhi::BindGroupId group = c.bind_group(program_, {bind(raymarch_fog_shadowed_shader::frame, frame_), bind(raymarch_fog_shadowed_shader::scene_depth, c.view(t_.depth)),
-                                                           bind(raymarch_fog_shadowed_shader::nearest, nearest), bind(raymarch_fog_shadowed_shader::fog_scattering, c.view(t_.fog_scattering)),
-                                                           bind(raymarch_fog_shadowed_shader::fog_transmittance, c.view(t_.fog_transmittance)),
-                                                           bind(raymarch_fog_shadowed_shader::params, params_)});
-    rhi::BindGroupId shadow;
-    if (shadowed_) {
-      std::vector<rhi::BoundResource> entries = {bind(raymarch_fog_shadowed_shader::shadow_depth, c.view(t_.shadow_map)),
-                                                 bind(raymarch_fog_shadowed_shader::shadow_sampler, nearest),
-                                                 bind(raymarch_fog_shadowed_shader::shadow, c.buffer(t_.light_view))};
-      if (tinted_) {
-        entries.push_back(bind(raymarch_fog_tinted_shader::translucent_shadow, c.view(t_.translucent_shadow)));
-        entries.push_back(bind(raymarch_fog_tinted_shader::translucent_shadow_depth, c.view(t_.translucent_shadow_depth)));
-      }
-      shadow = c.bind_group(program_, entries);
-    }
-    plumbing::dispatch(c.encoder, c.name(), program_, {group, shadow}, c.extent(t_.fog_scattering));
+    const rhi::BindGroupId group = c.bind_group(program_, {bind(raymarch_fog_shader::frame, frame_), bind(raymarch_fog_shader::scene_depth, c.view(t_.depth)),
+                                                           bind(raymarch_fog_shader::nearest, nearest), bind(raymarch_fog_shader::fog_scattering, c.view(t_.fog_scattering)),
+                                                           bind(raymarch_fog_shader::fog_transmittance, c.view(t_.fog_transmittance)),
+                                                           bind(raymarch_fog_shader::params, params_)});
+    rhi::BindGroupId maps;
+    if (shadowed_ || cloud_shadowed_) maps = c.bind_group(program_, map_entries(c, nearest));
+    plumbing::dispatch(c.encoder, c.name(), program_, {group, maps}, c.extent(t_.fog_scattering));
   }
 
  private:
+  // Shadow map, translucent casters' map, cloud shadow: each shader holds the ones wired.
+  std::string shader_name() const {
+    std::string name = "raymarch_fog";
+    if (shadowed_) name += tinted_ ? "_translucent_shadowed" : "_shadowed";
+    if (cloud_shadowed_) name += "_cloud_shadowed";
+    return name + ".comp";
+  }
+
+  // Set 1 as wired.
+  std::vector<rhi::BoundResource> map_entries(PassContext& c, rhi::SamplerId nearest) const {
+    namespace shader = raymarch_fog_shader;
+    std::vector<rhi::BoundResource> entries;
+    if (shadowed_) {
+      entries = {bind(shader::shadow_depth, c.view(t_.shadow_map)), bind(shader::shadow_sampler, nearest),
+                 bind(shader::shadow, c.buffer(t_.light_view))};
+    }
+    if (tinted_) {
+      entries.push_back(bind(shader::translucent_shadow, c.view(t_.translucent_shadow)));
+      entries.push_back(bind(shader::translucent_shadow_depth, c.view(t_.translucent_shadow_depth)));
+    }
+    if (cloud_shadowed_) {
+      entries.push_back(bind(shader::cloud_shadow, c.view(t_.cloud_shadow)));
+      entries.push_back(bind(shader::cloud_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)));
+      entries.push_back(bind(shader::cloud_shadow_view, c.buffer(t_.cloud_shadow_view)));
+    }
+    return entries;
+  }
+
   // The frame block's camera, lights, media and ambient radiance (its froxel grid is
   // unused here: the output's size stands in for it).
   fog::FogFrameInputs frame_inputs(const PassContext& c) const {
@@ -162,7 +190,7 @@ class RaymarchFogExecution final : public PassExecution {
   };
 
   const RaymarchFogTable& t_;
-  bool shadowed_ = false, tinted_ = false;
+  bool shadowed_ = false, tinted_ = false, cloud_shadowed_ = false;
   Phase phase_;
   plumbing::ComputeProgram program_;
   plumbing::SceneLighting lighting_;

@@ -142,7 +142,7 @@ AlphaMode alpha_mode(const std::string& gltf_mode) {
   return AlphaMode::opaque;
 }
 
-// glTF 2.0's alphaMode, KHR_materials_transmission, _ior and _volume as scene.h's
+// glTF 2.0's alphaMode, KHR_materials_transmission, _ior, _dispersion and _volume as scene.h's
 // Translucency; the volume's thickness carried from the mesh's space into the model's by
 // the node's `thickness_scale` (KHR_materials_volume: thicknessFactor is in the mesh's
 // space, attenuationDistance in the world's).
@@ -157,6 +157,8 @@ void read_translucency(const tinygltf::Model& m, const tinygltf::Material& mat, 
     out.transmission_texture = texture(m, texture_index(*transmission, "transmissionTexture"));
   }
   if (const tinygltf::Value* ior = extension(mat, "KHR_materials_ior")) t.ior = std::clamp(number(*ior, "ior", 1.5), 1.0, 4.0);
+  // KHR_materials_dispersion: 20/V_d, ≥ 0 by its schema (a negative one is held at 0, as the other factors are clamped).
+  if (const tinygltf::Value* d = extension(mat, "KHR_materials_dispersion")) t.dispersion = std::max(number(*d, "dispersion", 0), 0.0);
   if (const tinygltf::Value* volume = extension(mat, "KHR_materials_volume")) {
     t.thickness = std::max(number(*volume, "thicknessFactor", 0), 0.0) * thickness_scale;
     t.volume = t.thickness > 0 ? VolumeKind::solid : VolumeKind::thin_walled;
@@ -243,7 +245,8 @@ void note_once(std::vector<std::string>& notes, std::string note) {
 
 // The material extensions the passes draw (the translucency passes, scene.h's Translucency).
 bool drawn_extension(const std::string& name) {
-  return name == "KHR_materials_transmission" || name == "KHR_materials_ior" || name == "KHR_materials_volume";
+  return name == "KHR_materials_transmission" || name == "KHR_materials_ior" || name == "KHR_materials_volume" ||
+         name == "KHR_materials_dispersion";
 }
 
 // Half float's largest value: the colour targets hold radiance in it (higher is clamped).

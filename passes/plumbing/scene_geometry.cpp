@@ -71,6 +71,10 @@ void pack_translucency(const Translucency& t, double scale, GpuObjectBlock& bloc
   block.attenuation[3] = float(int(t.volume));
   block.alpha_test[0] = float(int(t.alpha_mode));
   block.alpha_test[1] = float(t.alpha_cutoff);
+  // KHR_materials_dispersion: the red and blue channels' IORs (the translucency shaders' channel_iors).
+  const std::array<double, 3> iors = physics::dispersed_iors(t.ior, t.dispersion);
+  block.alpha_test[2] = float(iors[0]);
+  block.alpha_test[3] = float(iors[2]);
 }
 
 }  // namespace

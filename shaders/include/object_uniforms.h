@@ -11,7 +11,7 @@ GPU_STRUCT(ObjectUniforms) {
   vec4 emissive;       // radiance
   vec4 translucency;   // coverage α, transmission, IOR, thickness (m)
   vec4 attenuation;    // σt per channel (1/m), volume kind
-  vec4 alpha_test;     // alpha mode, cutoff
+  vec4 alpha_test;     // alpha mode, cutoff, the red and blue channels' IORs (dispersion)
 };
 GPU_END
 

@@ -45,10 +45,10 @@ float view_depth_of(float depth) { return linear_view_depth(depth, translucency.
 // drawn) — the material's thickness where that back face lies in front of the fragment
 // (another solid's, nearer: back_depth holds one back face a pixel). A back face's end is
 // its float32 distance (back_distance), not its 32-bit depth: ~1e-3 of the path at 30 m.
-float inside_path(float cos_view, float distance_to_fragment, float thickness) {
+float inside_path(float cos_view, float distance_to_fragment, float thickness, float ior) {
   const int kind = int(object.attenuation.w);
   if (kind == kVolumeThinWalled) return 0.0;
-  if (kind == kVolumeShell) return shell_path_length(thickness, object.translucency.z, cos_view);
+  if (kind == kVolumeShell) return shell_path_length(thickness, ior, cos_view);
   const ivec2 px = ivec2(gl_FragCoord.xy);
   const float back = texelFetch(sampler2D(back_depth, nearest), px, 0).r, opaque = texelFetch(sampler2D(scene_depth, nearest), px, 0).r;
   const float end = min(back, opaque);
@@ -56,6 +56,20 @@ float inside_path(float cos_view, float distance_to_fragment, float thickness) {
   if (back < opaque) return max(texelFetch(sampler2D(back_distance, nearest), px, 0).r - distance_to_fragment, 0.0);
   const float z = view_depth_of(gl_FragCoord.z);
   return (view_depth_of(end) - z) * distance_to_fragment / z;  // view depth to distance along this ray
+}
+
+// The IOR of each colour channel (KHR_materials_dispersion; spread on the CPU by
+// physics::dispersed_iors and packed by scene_geometry.cpp): red and blue in alpha_test.zw,
+// green the IOR itself; without dispersion all three are the one IOR.
+vec3 channel_iors() { return vec3(object.alpha_test.z, object.translucency.z, object.alpha_test.w); }
+bool dispersive() { return object.alpha_test.z != object.alpha_test.w; }
+
+// The layer where the interface has index `ior`: Fresnel and the path inside at that IOR.
+SurfaceLayer layer_at_ior(LayerInputs l, float ior, float cos_view, float inside) {
+  l.reflectance = interface_reflectance(ior, cos_view);
+  const bool solid = int(object.attenuation.w) == kVolumeSolid;
+  l.path_transmittance = exp(-object.attenuation.rgb * (solid ? solid_path_length(inside, ior, cos_view) : inside));
+  return surface_layer(l);
 }
 
 void main() {
@@ -86,11 +100,18 @@ void main() {
   l.emissive = emission;
   l.irradiance = surface_irradiance(world_position, n);
   l.environment = translucency.environment.rgb;
-  l.reflectance = interface_reflectance(object.translucency.z, cos_view);
-  const float inside = inside_path(cos_view, distance_to_fragment, thickness);  // along the view ray (refraction's offset needs it)
-  const bool solid = int(object.attenuation.w) == kVolumeSolid;
-  l.path_transmittance = exp(-object.attenuation.rgb * (solid ? solid_path_length(inside, object.translucency.z, cos_view) : inside));
-  SurfaceLayer layer = surface_layer(l);
+  const float inside = inside_path(cos_view, distance_to_fragment, thickness, object.translucency.z);  // along the view ray (refraction's offset needs it)
+  SurfaceLayer layer = layer_at_ior(l, object.translucency.z, cos_view, inside);
+  if (dispersive()) {
+    // Dispersion: red and blue each take their own IOR's layer (Fresnel and path per channel).
+    const vec3 iors = channel_iors();
+    for (int c = 0; c < 3; c += 2) {
+      const float ior = iors[c];
+      const SurfaceLayer at_ior = layer_at_ior(l, ior, cos_view, inside_path(cos_view, distance_to_fragment, thickness, ior));
+      layer.radiance[c] = at_ior.radiance[c];
+      layer.transmittance[c] = at_ior.transmittance[c];
+    }
+  }
   const float z = view_depth_of(gl_FragCoord.z);
   const vec2 uv = gl_FragCoord.xy / vec2(textureSize(sampler2D(scene_depth, nearest), 0));
   if (translucency.options.x > 0.5) {

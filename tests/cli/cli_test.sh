@@ -297,6 +297,14 @@ got: $(cat "$tmp/err")"
       --dump lit.color="$tmp/lit.pfm" >"$tmp/out" 2>"$tmp/err" || fail "render --backend webgpu: $(cat "$tmp/err")"
     [ "$(head -c 2 "$tmp/out.pfm")" = "PF" ] && [ "$(head -c 2 "$tmp/lit.pfm")" = "PF" ] || fail "webgpu wrote no PFM"
     grep -q '"backend": "webgpu"' "$tmp/out" && grep -q '"gpu_ms"' "$tmp/out" || fail "--timings printed: $(cat "$tmp/out")"
+    # --device picks a Vulkan device: refused with the WebGPU backend, by render and view alike (exit 2, one message).
+    for command in "render -o $tmp/refused.pfm" "view --frames 1"; do
+      # shellcheck disable=SC2086  # the command and its own options, split on purpose
+      "$volgraph" $command "$config" --backend webgpu --device 0 >"$tmp/out" 2>"$tmp/err"
+      code=$?
+      [ "$code" -eq 2 ] && grep -q "WebGPU uses Dawn's default adapter" "$tmp/err" && [ ! -e "$tmp/refused.pfm" ] ||
+        fail "$command --backend webgpu --device 0: exit $code, stderr: $(cat "$tmp/err")"
+    done
     "$volgraph" plan "$config" --backend webgpu >"$tmp/out" || fail "plan --backend webgpu"
     head -1 "$tmp/out" | grep -q "backend webgpu: no placed memory" || fail "plan --backend webgpu: $(head -1 "$tmp/out")"
     rm -f "$tmp"/*.pfm

@@ -14,6 +14,7 @@
 #include "passes/passes.h"
 #include "reference/clouds.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/cloud_shadow_twin.h"
 
 namespace volgraph::testing {
 namespace {
@@ -71,16 +72,6 @@ class CloudShadowMap : public OnEachBackend<> {
 };
 
 float shadow_tau_at(const Texels& t, uint32_t i, uint32_t j) { return t.rgba[(size_t(j) * t.width + i) * 4]; }
-
-// The map's τ at (u, v) as a linear_clamp sampler reads it (texel centres at (i + ½)/size).
-double bilinear_tau(const Texels& t, double u, double v) {
-  const double x = u * t.width - 0.5, y = v * t.height - 0.5;
-  const int i0 = std::clamp(int(std::floor(x)), 0, int(t.width) - 1), j0 = std::clamp(int(std::floor(y)), 0, int(t.height) - 1);
-  const int i1 = std::min(i0 + 1, int(t.width) - 1), j1 = std::min(j0 + 1, int(t.height) - 1);
-  const double fx = std::clamp(x - i0, 0.0, 1.0), fy = std::clamp(y - j0, 0.0, 1.0);
-  const auto at = [&](int i, int j) { return double(shadow_tau_at(t, uint32_t(i), uint32_t(j))); };
-  return (1 - fy) * ((1 - fx) * at(i0, j0) + fx * at(i1, j0)) + fy * ((1 - fx) * at(i0, j1) + fx * at(i1, j1));
-}
 
 TEST_P(CloudShadowMap, TheCaseCastsShadow) {  // so the identities below could fail
   const ShadowRun r = run({});
@@ -158,9 +149,9 @@ void expect_ground_dimmed_by_the_map(const ShadowRun& r) {
   const double s = (view.plane[1] - 0.0) / view.to_sun[1];  // the ground point ≈ the origin
   const double u = (s * view.to_sun[0] - view.plane[0]) / view.plane[3] + 0.5, v = (s * view.to_sun[2] - view.plane[2]) / view.plane[3] + 0.5;
   ASSERT_TRUE(u > 0 && u < 1 && v > 0 && v < 1);
-  const double expected = std::exp(-bilinear_tau(r.tau, u, v));
-  const double spread = std::abs(std::exp(-bilinear_tau(r.tau, u + 1.0 / r.tau.width, v)) - expected) +
-                        std::abs(std::exp(-bilinear_tau(r.tau, u, v + 1.0 / r.tau.height)) - expected);
+  const double expected = std::exp(-cloud_shadow_tau_at(r.tau, u, v));
+  const double spread = std::abs(std::exp(-cloud_shadow_tau_at(r.tau, u + 1.0 / r.tau.width, v)) - expected) +
+                        std::abs(std::exp(-cloud_shadow_tau_at(r.tau, u, v + 1.0 / r.tau.height)) - expected);
   for (size_t p = 0; p < r.lit.rgba.size(); p += 4) {
     const double bare = r.bare.rgba[p], lit = r.lit.rgba[p];
     ASSERT_GT(bare, 0.1) << "pixel " << p / 4 << " sees the ground";

@@ -410,6 +410,29 @@ TEST(TranslucencyReference, RefractedSlabSumsItsInternalReflections) {
   }
 }
 
+// Dispersion (KHR_materials_dispersion) in refracted mode: each channel is traced on its
+// own at its IOR, so a dispersive slab's image is, channel by channel, exactly the plain
+// images at ior − halfSpread (red), ior (green) and ior + halfSpread (blue).
+TEST(TranslucencyReference, DispersionTracesEachChannelAtItsOwnIor) {
+  IntegrationSettings refracted;
+  refracted.translucency = TranslucencyMode::refracted;
+  Scene dispersive = edge_scene(1.5);
+  dispersive.materials.back().translucency.dispersion = 4;  // V_d = 5: strong, so the channels part visibly
+  const Vec3 iors = physics::dispersed_iors(1.5, 4.0);
+  EXPECT_EQ(iors[0], 1.5 - 0.5 * 0.025 * 4);
+  EXPECT_EQ(iors[2], 1.5 + 0.5 * 0.025 * 4);
+  const ReferenceImage got = render(dispersive, refracted);
+  const ReferenceImage plain = render(edge_scene(1.5), refracted);
+  for (size_t c = 0; c < 3; ++c) {
+    const ReferenceImage at = render(edge_scene(iors[c]), refracted);
+    if (c != 1) ASSERT_NE(at.rgb, plain.rgb) << c;  // else the identity below could not fail
+    for (size_t p = c; p < got.rgb.size(); p += 3) ASSERT_EQ(got.rgb[p], at.rgb[p]) << "channel " << c << ", value " << p / 3;
+  }
+  // Dispersion 0 is the one IOR, bit for bit.
+  dispersive.materials.back().translucency.dispersion = 0;
+  EXPECT_EQ(render(dispersive, refracted).rgb, plain.rgb);
+}
+
 TEST(TranslucencyReference, RefractedEqualsStraightAtIorOne) {
   Material m = glass("clearish", 1, VolumeKind::thin_walled);
   m.albedo = {0.9, 0.7, 0.5};

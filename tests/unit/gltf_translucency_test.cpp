@@ -69,18 +69,20 @@ std::string refusal(const std::string& path) {
 
 constexpr const char* kGlassMaterial = R"({ "pbrMetallicRoughness": { "baseColorFactor": [1, 1, 1, 1] },
   "extensions": { "KHR_materials_transmission": { "transmissionFactor": 1 }, "KHR_materials_ior": { "ior": 1.4 },
-                  "KHR_materials_volume": { "thicknessFactor": 0.5 } } })";
+                  "KHR_materials_dispersion": { "dispersion": 0.75 }, "KHR_materials_volume": { "thicknessFactor": 0.5 } } })";
 
 // glTF 2.0 §3.12: a loader refuses a file only for required extensions it does not
 // support; volgraph draws transmission, ior and volume.
 TEST(GltfTranslucency, RequiredTranslucencyExtensionsAreAccepted) {
   const std::string path = write_triangle_gltf(
-      "required_translucency", kGlassMaterial, R"(["KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_ior"])");
+      "required_translucency", kGlassMaterial, R"(["KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_ior", "KHR_materials_dispersion"])");
   ASSERT_EQ(refusal(path), "");
   const GltfModel m = load_gltf(path);
   ASSERT_EQ(m.primitives.size(), 1u);
   EXPECT_EQ(m.primitives[0].translucency.transmission, 1);
   EXPECT_EQ(m.primitives[0].translucency.ior, 1.4);
+  EXPECT_EQ(m.primitives[0].translucency.dispersion, 0.75);  // KHR_materials_dispersion, drawn (not listed as ignored)
+  EXPECT_TRUE(m.ignored.empty()) << m.ignored.front();
   EXPECT_EQ(m.primitives[0].translucency.volume, VolumeKind::solid);
   // One it does not draw is still refused, by name.
   const std::string other = write_triangle_gltf("required_other", kGlassMaterial, R"(["KHR_materials_transmission", "KHR_texture_basisu"])");

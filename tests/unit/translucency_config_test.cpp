@@ -57,6 +57,7 @@ TEST_F(TranslucencyConfig, AMaterialWithoutTheKeysIsOpaqueWithScenesDefaults) {
   EXPECT_EQ(t.alpha_cutoff, d.alpha_cutoff);
   EXPECT_EQ(t.transmission, 0);
   EXPECT_EQ(t.ior, 1.5);
+  EXPECT_EQ(t.dispersion, 0);
   EXPECT_EQ(t.attenuation_distance, d.attenuation_distance);
   EXPECT_EQ(t.volume, VolumeKind::thin_walled);
   EXPECT_FALSE(t.translucent());
@@ -65,13 +66,14 @@ TEST_F(TranslucencyConfig, AMaterialWithoutTheKeysIsOpaqueWithScenesDefaults) {
 
 TEST_F(TranslucencyConfig, EveryKeyLandsInTheMaterial) {
   const Translucency t = translucency(R"({ "alpha": 0.75, "alpha_mode": "mask", "alpha_cutoff": 0.25,
-    "transmission": 0.9, "ior": 1.33, "attenuation_color": [0.5, 0.25, 0], "attenuation_distance": 2,
+    "transmission": 0.9, "ior": 1.33, "dispersion": 0.5, "attenuation_color": [0.5, 0.25, 0], "attenuation_distance": 2,
     "volume": "shell", "thickness": 0.01 })");
   EXPECT_EQ(t.alpha, 0.75);
   EXPECT_EQ(t.alpha_mode, AlphaMode::mask);  // named: it wins over the alpha's blend
   EXPECT_EQ(t.alpha_cutoff, 0.25);
   EXPECT_EQ(t.transmission, 0.9);
   EXPECT_EQ(t.ior, 1.33);
+  EXPECT_EQ(t.dispersion, 0.5);
   EXPECT_EQ(t.attenuation_color, (Vec3{0.5, 0.25, 0}));
   EXPECT_EQ(t.attenuation_distance, 2);
   EXPECT_EQ(t.volume, VolumeKind::shell);
@@ -103,6 +105,7 @@ TEST_F(TranslucencyConfig, BadValuesGetOneClearMessage) {
   EXPECT_EQ(error(R"({ "transmission": 1, "volume": "shell" })"),
             "/scene/materials/glass/volume: a shell needs its wall's thickness; expected \"thickness\" > 0 m beside \"volume\": \"shell\"");
   EXPECT_NE(error(R"({ "ior": 0.5 })").find("/scene/materials/glass/ior: "), std::string::npos);
+  EXPECT_NE(error(R"({ "dispersion": -1 })").find("/scene/materials/glass/dispersion: "), std::string::npos) << error(R"({ "dispersion": -1 })");
   EXPECT_NE(error(R"({ "alpha": 1.5 })").find("/scene/materials/glass/alpha: "), std::string::npos);
   EXPECT_NE(error(R"({ "attenuation_distance": 0 })").find("/scene/materials/glass/attenuation_distance: "), std::string::npos);
   EXPECT_NE(error(R"({ "attenuation_color": [0.5, 2, 0.5] })").find("/scene/materials/glass/attenuation_color"), std::string::npos);

@@ -231,6 +231,8 @@ TEST(UniformMirrors, FogFrameBlocksMatch) {
            {"froxel_scatter_translucent_shadowed_cloud_shadowed.comp", 0}, {"froxel_scatter_media_translucent_shadowed_cloud_shadowed.comp", 0}, {"scatter_integrate.comp", 0}, {"froxel_temporal.comp", 0},
            {"pixel_temporal.comp", 0}, {"cloud_temporal.comp", 0}, {"opacity_shadow_map.comp", 0}, {"depth_fog.comp", 0}, {"height_fog.comp", 0},
            {"analytic_fog.comp", 0}, {"raymarch_fog.comp", 0}, {"raymarch_fog_shadowed.comp", 0},
+           {"raymarch_fog_translucent_shadowed.comp", 0}, {"raymarch_fog_cloud_shadowed.comp", 0},
+           {"raymarch_fog_shadowed_cloud_shadowed.comp", 0}, {"raymarch_fog_translucent_shadowed_cloud_shadowed.comp", 0},
            {"froxel_apply_transmittance.frag", 0}, {"froxel_apply_scattering.frag", 0}, {"light_volume_ends.frag", 0},
            {"light_volume_faces.frag", 4}, {"light_volume_resolve.frag", 3}}) {
     EXPECT_EQ(wrapped_error<gpu::FogFrame>(at.shader, 0, at.binding, "gpu::FogFrame"), "") << at.shader;
@@ -276,7 +278,8 @@ TEST(UniformMirrors, ShadowViewBlocksMatch) {
 TEST(UniformMirrors, CloudShadowViewBlocksMatch) {
   for (const char* shader : {"froxel_scatter_cloud_shadowed.comp", "froxel_scatter_shadowed_cloud_shadowed.comp",
                              "froxel_scatter_media_shadowed_cloud_shadowed.comp", "froxel_scatter_translucent_shadowed_cloud_shadowed.comp",
-                             "froxel_scatter_media_translucent_shadowed_cloud_shadowed.comp"}) {
+                             "froxel_scatter_media_translucent_shadowed_cloud_shadowed.comp", "raymarch_fog_cloud_shadowed.comp",
+                             "raymarch_fog_shadowed_cloud_shadowed.comp", "raymarch_fog_translucent_shadowed_cloud_shadowed.comp"}) {
     EXPECT_EQ(wrapped_error<gpu::CloudShadowView>(shader, 1, 9, "gpu::CloudShadowView"), "") << shader;
   }
   for (const char* shader : {"scene_cloud_shadowed.frag", "scene_shadowed_cloud_shadowed.frag", "scene_media_shadowed_cloud_shadowed.frag",

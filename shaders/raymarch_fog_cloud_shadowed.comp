@@ -1,0 +1,8 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// raymarch_fog with the sun dimmed by the cloud layer above through a cloud_shadow_map, no
+// shadow map (set 1: include/fog_light_visibility.glsl). The march:
+// shaders/include/raymarch_fog_body.glsl.
+#define FOG_CLOUD_SHADOW
+#include "include/fog_light_visibility.glsl"
+#include "include/raymarch_fog_body.glsl"
