@@ -2,12 +2,17 @@
 // first output: what tests of one pass's output under a small hand-written graph share.
 #pragma once
 
+#include <cmath>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "graph/config/config.h"
 #include "graph/execute/executor.h"
 #include "passes/passes.h"
+#include "physics/translucency.h"
 #include "tests/gpu/backends.h"
+#include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
 
@@ -34,6 +39,32 @@ inline std::string tint_pass(bool tinted) {
 }
 inline std::string tint_inputs(bool tinted) {
   return tinted ? R"(, "translucent_shadow": "tint.transmittance", "translucent_shadow_depth": "tint.depth")" : "";
+}
+
+// The red sheet's transmittance for the sun of red_glass_in_fog: its normal +y, the sun 45°
+// off it, (1 − F)·ρ with one interface (ρ red = 1).
+inline double red_glass_transmittance() { return 1.0 - physics::interface_reflectance(1.5, std::sqrt(0.5)); }
+
+// `tinted` (with the sheet's translucent shadow) against `plain` (without), texel by texel:
+// each texel that changed is one behind the red sheet as the sun sees it — red exactly
+// red_glass_transmittance() × plain's (two fp16 steps), green and blue 0 — and at least
+// `at_least` texels (`what`) are. Every other texel is bit for bit plain's.
+inline void expect_tinted_by_red_glass(const Texels& plain, const Texels& tinted, int at_least, const std::string& what) {
+  ASSERT_EQ(plain.rgba.size(), tinted.rgba.size());
+  const double red = red_glass_transmittance();
+  int behind = 0, otherwise_changed = 0;
+  for (size_t p = 0; p < plain.rgba.size(); p += 4) {
+    const bool same = plain.rgba[p] == tinted.rgba[p] && plain.rgba[p + 1] == tinted.rgba[p + 1] && plain.rgba[p + 2] == tinted.rgba[p + 2];
+    if (same) continue;
+    if (tinted.rgba[p + 1] != 0.0f || tinted.rgba[p + 2] != 0.0f || plain.rgba[p + 1] <= 0.0f) {
+      ++otherwise_changed;
+      continue;
+    }
+    ++behind;
+    EXPECT_NEAR(tinted.rgba[p], red * plain.rgba[p], fp16_steps(red * plain.rgba[p])) << what << " " << p / 4;
+  }
+  EXPECT_GT(behind, at_least) << what << "s behind the sheet";
+  EXPECT_EQ(otherwise_changed, 0) << what << "s changed other than by the sheet's transmittance";
 }
 
 class ConfigOutputOnEachBackend : public OnEachBackend<Backend> {

@@ -34,23 +34,7 @@ class FroxelScatterTranslucentShadow : public ConfigOutputOnEachBackend {
 };
 
 TEST_P(FroxelScatterTranslucentShadow, TheFogBehindRedGlassCarriesItsTransmittance) {
-  const Texels plain = in_scatter(false), tinted = in_scatter(true);
-  ASSERT_EQ(plain.rgba.size(), tinted.rgba.size());
-  // The sheet's normal is +y, the sun 45° off it: (1 − F)·ρ with one interface.
-  const double red = 1.0 - physics::interface_reflectance(1.5, std::sqrt(0.5));
-  int behind = 0, otherwise_changed = 0;
-  for (size_t p = 0; p < plain.rgba.size(); p += 4) {
-    const bool same = plain.rgba[p] == tinted.rgba[p] && plain.rgba[p + 1] == tinted.rgba[p + 1] && plain.rgba[p + 2] == tinted.rgba[p + 2];
-    if (same) continue;
-    if (tinted.rgba[p + 1] != 0.0f || tinted.rgba[p + 2] != 0.0f || plain.rgba[p + 1] <= 0.0f) {
-      ++otherwise_changed;
-      continue;
-    }
-    ++behind;
-    EXPECT_NEAR(tinted.rgba[p], red * plain.rgba[p], fp16_steps(red * plain.rgba[p])) << "froxel " << p / 4;
-  }
-  EXPECT_GT(behind, 20) << "froxels in the sheet's beam";
-  EXPECT_EQ(otherwise_changed, 0) << "froxels changed other than by the sheet's transmittance";
+  expect_tinted_by_red_glass(in_scatter(false), in_scatter(true), 20, "froxel");
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, FroxelScatterTranslucentShadow, ::testing::ValuesIn(gpu_backends()),

@@ -56,23 +56,7 @@ class TranslucencyTranslucentShadow : public OnEachBackend<std::tuple<Backend, c
 };
 
 TEST_P(TranslucencyTranslucentShadow, TheVeilBehindRedGlassIsLitThroughIt) {
-  const Texels plain = color(false), tinted = color(true);
-  ASSERT_EQ(plain.rgba.size(), tinted.rgba.size());
-  // The sheet's normal is +y, the sun 45° off it: (1 − F)·ρ with one interface.
-  const double red = 1.0 - physics::interface_reflectance(1.5, std::sqrt(0.5));
-  int behind = 0, otherwise_changed = 0;
-  for (size_t p = 0; p < plain.rgba.size(); p += 4) {
-    const bool same = plain.rgba[p] == tinted.rgba[p] && plain.rgba[p + 1] == tinted.rgba[p + 1] && plain.rgba[p + 2] == tinted.rgba[p + 2];
-    if (same) continue;
-    if (tinted.rgba[p + 1] != 0.0f || tinted.rgba[p + 2] != 0.0f || plain.rgba[p + 1] <= 0.0f) {
-      ++otherwise_changed;
-      continue;
-    }
-    ++behind;
-    EXPECT_NEAR(tinted.rgba[p], red * plain.rgba[p], fp16_steps(red * plain.rgba[p])) << "pixel " << p / 4;
-  }
-  EXPECT_GT(behind, 60) << "veil pixels in the sheet's shadow";
-  EXPECT_EQ(otherwise_changed, 0) << "pixels changed other than by the sheet's transmittance";
+  expect_tinted_by_red_glass(color(false), color(true), 60, "pixel");
 }
 
 // The map's known limit: one product of every caster's transmittance along the light's ray
@@ -81,7 +65,7 @@ TEST_P(TranslucencyTranslucentShadow, TheVeilBehindRedGlassIsLitThroughIt) {
 // caster lies in front of it; the CPU reference's shadow rays start past the receiver.
 TEST_P(TranslucencyTranslucentShadow, AReceiverThatCastsIsTintedByItselfToo) {
   const Texels plain = color(false, true), tinted = color(true, true);
-  const double red = 1.0 - physics::interface_reflectance(1.5, std::sqrt(0.5));
+  const double red = red_glass_transmittance();
   int behind = 0;
   for (size_t p = 0; p < plain.rgba.size(); p += 4) {
     if (plain.rgba[p] == tinted.rgba[p] || tinted.rgba[p + 1] != 0.0f) continue;
