@@ -148,6 +148,7 @@ SlotHandle PassTable::add_slot(SlotDecl slot, const SlotOptions& options) {
   slot.format_overridable = options.format_overridable;
   slot.size_overridable = options.size_overridable;
   for (const VariantHandle v : options.required_in) decl.variants.at(v.index).needs_inputs.push_back(slot.name);
+  for (const VariantHandle v : options.read_in) slot.read_in.push_back(v.index);
   decl.slots.push_back(std::move(slot));
   return {uint16_t(decl.slots.size() - 1)};
 }

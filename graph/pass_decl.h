@@ -72,6 +72,7 @@ struct SlotDecl {
   bool size_overridable = false;      // outputs: config may choose another size
   std::string like;                   // outputs: take kind, format and size from this input slot
   std::string history_of;             // history: the output slot whose previous frame it reads
+  std::vector<uint16_t> read_in;      // optional inputs: the variants that read it (empty: every one); wired in another, refused
   std::string doc;
 };
 
@@ -193,6 +194,7 @@ struct SlotOptions {
   bool format_overridable = false;    // outputs: the config may choose another format
   bool size_overridable = false;      // outputs: the config may choose another size
   std::vector<VariantHandle> required_in = {};  // optional inputs: the variants that need it wired
+  std::vector<VariantHandle> read_in = {};      // optional inputs: the only variants that read it (wired in another: refused)
 };
 
 // A pass type's declaration written as one table: a pass derives a struct from

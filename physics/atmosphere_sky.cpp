@@ -151,7 +151,11 @@ ScatteringAlong scattering_along(const Atmosphere& a, double r, double mu, doubl
     const double sun_mu = mu_s_at(r, mu, mu_s, nu, t);
     const Vec3 rayleigh = rayleigh_scattering_at(a, altitude), mie_s = mie_scattering_at(a, altitude);
     const Vec3 extinction = extinction_at(a, altitude);
-    const Vec3 sun = sun_transmittance(a, rd, sun_mu);
+    Vec3 sun = sun_transmittance(a, rd, sun_mu);
+    if (sampling.sun_visibility) {
+      const double visible = sampling.sun_visibility(t);
+      for (double& channel : sun) channel *= visible;
+    }
     const Vec3 psi = multiscattering ? multiscattering(rd, sun_mu) : Vec3{0, 0, 0};
     for (size_t c = 0; c < 3; ++c) {
       const double source = (rayleigh[c] * rayleigh_phase + mie_s[c] * mie) * sun[c] + (rayleigh[c] + mie_s[c]) * psi[c];

@@ -25,6 +25,10 @@ struct SkySampling {
   double min_samples = 40, max_samples = 40;  // Hillaire 2020's RayMarchMinMaxSPP: 4, 14
   double full_samples_length = 100e3;         // m: rays this long or longer take max_samples
   double sample_offset = 0.5;                 // where in its step each sample sits (Hillaire 2020: 0.3)
+  // The fraction of the sun that reaches the sample at distance t (m) along the ray: the
+  // clouds' shadow (include/atmosphere_sky.glsl's sun-visibility hook). It dims the single
+  // scattering only, not Ψ_ms. Empty: 1.
+  std::function<double(double t)> sun_visibility = {};
 };
 
 // Ψ_ms(r, mu_s) for a sun of unit illuminance; empty for single scattering alone.

@@ -27,7 +27,7 @@ void main() {
   const float r = params.camera.x, mu_s = params.camera.y;
   const vec2 direction = sky_view_lut_direction(atmosphere.a, r, (vec2(texel) + 0.5) / vec2(size), size);
   const float nu = view_sun_cosine(direction.x, direction.y, mu_s);
-  const SkySampling sampling = SkySampling(params.sampling.x, params.sampling.y, params.sampling.z, params.placement.x, params.sampling.w > 0.5);
+  const SkySampling sampling = SkySampling(params.sampling.x, params.sampling.y, params.sampling.z, params.placement.x, params.sampling.w > 0.5, vec3(0.0), vec3(0.0));
   const vec3 radiance = sky_scattering(atmosphere.a, transmittance, nearest, multiscattering, linear, r, direction.x, mu_s, nu, sampling);
   imageStore(sky_view, texel, vec4(radiance, 1.0));
 }

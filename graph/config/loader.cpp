@@ -304,6 +304,18 @@ std::vector<std::string> names_of(const auto& items) {
   return out;
 }
 
+// Whether variant `variant` reads optional input `slot` (SlotOptions::read_in; none named: every variant).
+bool read_in_variant(const SlotDecl& slot, uint16_t variant) {
+  return slot.read_in.empty() || std::find(slot.read_in.begin(), slot.read_in.end(), variant) != slot.read_in.end();
+}
+
+// "\"a\"" or "\"a\" or \"b\"": the variants of `decl` at `indices`, quoted.
+std::string variant_names(const PassDecl& decl, const std::vector<uint16_t>& indices) {
+  std::string text;
+  for (size_t i = 0; i < indices.size(); ++i) text += (i ? " or \"" : "\"") + decl.variants.at(indices[i]).name + "\"";
+  return text;
+}
+
 // A parameter value of the declared type and range, or a diagnostic.
 std::optional<ParamValue> checked_param(const ParamDecl& decl, const ParamValue& raw, const Where& where,
                                         Diagnostics& diags) {
@@ -553,6 +565,12 @@ class Wiring {
       if (decl.slots[size_t(i)].direction == SlotDirection::history) {
         diags_.error(w.where, "slot \"" + w.slot + "\" of \"" + decl.name + "\" is the previous frame of its output \"" +
                                   decl.slots[size_t(i)].history_of + "\"; the graph binds it, it cannot be wired");
+        continue;
+      }
+      if (!read_in_variant(decl.slots[size_t(i)], variants_[p])) {
+        diags_.error(w.where, "input \"" + w.slot + "\" of \"" + decl.name + "\" is read only in variant " +
+                                  variant_names(decl, decl.slots[size_t(i)].read_in) + "; variant \"" +
+                                  decl.variants[variants_[p]].name + "\" would ignore it (unwire it or choose that variant)");
         continue;
       }
       inputs_[p][size_t(i)] = resolve_source(w.source, w.where);

@@ -10,8 +10,12 @@
 // volumes from Bruneton 2017's precomputed scattering table
 // (atmosphere_bruneton_tables.scattering and .single_mie_scattering: GetSkyRadianceToPoint, the scattering to the
 // ray's boundary from the camera less the transmittance times that from
-// the texel's point). Cached on the atmosphere and the camera. Shaders:
-// shaders/atmosphere_aerial_perspective.comp, atmosphere_aerial_perspective_bruneton.comp.
+// the texel's point). Cached on the atmosphere and the camera. With cloud_shadow_map wired
+// (hillaire only: Bruneton's tables hold unshadowed light) the cloud layer dims the sun at
+// each sample by exp(−τ), so the air under the clouds' shadow scatters only the light the
+// air itself has already scattered (Ψ_ms): include/atmosphere_sky.glsl's sun-visibility hook.
+// Shaders: shaders/atmosphere_aerial_perspective.comp, atmosphere_aerial_perspective_cloud_shadowed.comp
+// (include/atmosphere_aerial_perspective_body.glsl), atmosphere_aerial_perspective_bruneton.comp.
 #include <algorithm>
 
 #include "graph/execute/pass_execution.h"
@@ -26,12 +30,15 @@
 #include "physics/atmosphere_sky.h"
 #include "shaders/bindings/atmosphere_aerial_perspective.comp.h"
 #include "shaders/bindings/atmosphere_aerial_perspective_bruneton.comp.h"
+#include "shaders/bindings/atmosphere_aerial_perspective_cloud_shadowed.comp.h"
+#include "shaders/include/cloud_shadow_view.h"
 
 namespace volgraph {
 namespace {
 
 namespace atmosphere_aerial_perspective_shader = shaders::atmosphere_aerial_perspective_comp;
 namespace atmosphere_aerial_perspective_bruneton_shader = shaders::atmosphere_aerial_perspective_bruneton_comp;
+namespace aerial_cloud_shadowed_shader = shaders::atmosphere_aerial_perspective_cloud_shadowed_comp;
 
 struct AerialPerspectiveTable : PassTable {
   AerialPerspectiveTable()
@@ -59,6 +66,12 @@ struct AerialPerspectiveTable : PassTable {
                                          "bruneton: the scattering table (atmosphere_bruneton_tables.scattering)", {.required_in = {bruneton}});
   SlotHandle single_mie_scattering = optional_input("single_mie_scattering", ResourceKind::texture3d, Usage::sampled,
                                                     "bruneton: the single Mie table (atmosphere_bruneton_tables.single_mie_scattering)", {.required_in = {bruneton}});
+  SlotHandle cloud_shadow = optional_input("cloud_shadow", ResourceKind::texture2d, Usage::sampled,
+                                           "hillaire: cloud_shadow_map's optical depth: the cloud layer dims the sun by exp(−τ) at each sample",
+                                           {.format = Format::rgba16_float, .read_in = {hillaire}});
+  SlotHandle cloud_shadow_view = optional_input("cloud_shadow_view", ResourceKind::buffer, Usage::uniform_read,
+                                                "hillaire: cloud_shadow_map's view (where its square lies, toward which sun)",
+                                                {.read_in = {hillaire}});
   SlotHandle aerial_scattering = output("aerial_scattering", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
                                         SizeSpec::square_layers_of(resolution, slices),
                                         "rgb scattered toward the camera from it to each texel, for a sun of unit illuminance");
@@ -74,8 +87,11 @@ class AerialPerspectiveExecution final : public PassExecution {
 
   void setup(PassSetup& s) override {
     bruneton_ = s.variant_is(t_.bruneton);  // the loader made sure the variant's input is wired
-    program_ = plumbing::create_compute_program(s.device, bruneton_ ? "atmosphere_aerial_perspective_bruneton.comp" : "atmosphere_aerial_perspective.comp");
+    cloud_shadowed_ = s.bound(t_.cloud_shadow) && s.bound(t_.cloud_shadow_view);  // hillaire only (SlotOptions::read_in)
+    program_ = plumbing::create_compute_program(s.device, shader_name());
     atmosphere_.setup(s, program_);
+    if (cloud_shadowed_)
+      plumbing::check_wrapped_uniform_mirror<gpu::CloudShadowView>(program_, aerial_cloud_shadowed_shader::cloud_shadow_view, s.name() + " cloud_shadow_view");
     plumbing::check_wrapped_uniform_mirror<gpu::AerialPerspectiveFrame>(program_, 0, 1, s.name() + " frame");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(gpu::AerialPerspectiveFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
     if (bruneton_) table_ = plumbing::create_shared_uniform_block(s.device, program_, atmosphere_aerial_perspective_bruneton_shader::table, s.name() + " table", table_shape(s));
@@ -97,11 +113,22 @@ class AerialPerspectiveExecution final : public PassExecution {
          bind(atmosphere_aerial_perspective_shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp)), bind(atmosphere_aerial_perspective_shader::multiscattering, c.view(t_.multiscattering)),
          bind(atmosphere_aerial_perspective_shader::linear, c.sampler(rhi::StockSampler::linear_clamp)), bind(atmosphere_aerial_perspective_shader::aerial_scattering, c.view(t_.aerial_scattering)),
          bind(atmosphere_aerial_perspective_shader::aerial_transmittance, c.view(t_.aerial_transmittance))});
+    rhi::BindGroupId cloud_shadow;
+    if (cloud_shadowed_) {
+      cloud_shadow = c.bind_group(program_, {bind(aerial_cloud_shadowed_shader::cloud_shadow, c.view(t_.cloud_shadow)),
+                                             bind(aerial_cloud_shadowed_shader::cloud_shadow_sampler, c.sampler(rhi::StockSampler::linear_clamp)),
+                                             bind(aerial_cloud_shadowed_shader::cloud_shadow_view, c.buffer(t_.cloud_shadow_view))});
+    }
     const Extent size = c.extent(t_.aerial_scattering);
-    plumbing::dispatch(c.encoder, c.name(), program_, {group}, {size.width, size.height, size.depth});
+    plumbing::dispatch(c.encoder, c.name(), program_, {group, cloud_shadow}, {size.width, size.height, size.depth});
   }
 
  private:
+  const char* shader_name() const {
+    if (bruneton_) return "atmosphere_aerial_perspective_bruneton.comp";
+    return cloud_shadowed_ ? "atmosphere_aerial_perspective_cloud_shadowed.comp" : "atmosphere_aerial_perspective.comp";
+  }
+
   // bruneton: the scattering table's shape, its nu slices those of the tables pass that
   // made it (atmosphere_bruneton_tables.nu: one source, so a reader never disagrees).
   gpu::BrunetonTableParams table_shape(const PassSetup& s) const {
@@ -149,6 +176,7 @@ class AerialPerspectiveExecution final : public PassExecution {
 
   const AerialPerspectiveTable& t_;
   bool bruneton_ = false;
+  bool cloud_shadowed_ = false;  // cloud_shadow and its view wired: atmosphere_aerial_perspective_cloud_shadowed.comp
   plumbing::ComputeProgram program_;
   atmosphere::AtmosphereBlock atmosphere_;
   rhi::BufferId frame_, table_;

@@ -10,7 +10,24 @@ struct SkySampling {
   float min_samples, max_samples, full_samples_length;  // Hillaire 2020: 4, 14, 100 km
   float sample_offset;                                  // within each step (Hillaire 2020: 0.3)
   bool multiscattering;                                 // false: single scattering alone
+  vec3 world_origin, world_direction;                   // the ray in the scene's world (m): for the sun-visibility hook
 };
+
+// The sun-visibility hook: a shader that shadows the air's sunlight (the clouds' shadow)
+// defines ATMOSPHERE_SUN_VISIBILITY and, after including this file, the function below: the
+// fraction of the sun that reaches world point p. It dims the single-scattering source
+// only (Ψ_ms, the light the air has already scattered, stays: Hillaire 2020's volumetric
+// shadows in the aerial-perspective volume do the same). Without it the visibility is 1.
+#ifdef ATMOSPHERE_SUN_VISIBILITY
+float atmosphere_sun_visibility(vec3 p);
+#endif
+float sun_visibility_along(SkySampling sampling, float t) {
+#ifdef ATMOSPHERE_SUN_VISIBILITY
+  return atmosphere_sun_visibility(sampling.world_origin + t * sampling.world_direction);
+#else
+  return 1.0;
+#endif
+}
 
 float view_sun_cosine(float mu, float cos_azimuth, float mu_s) {
   return clamp(sqrt(max(0.0, 1.0 - mu * mu)) * sqrt(max(0.0, 1.0 - mu_s * mu_s)) * cos_azimuth + mu * mu_s, -1.0, 1.0);
@@ -42,7 +59,7 @@ ScatteringAlong scattering_along(AtmosphereParameters a, texture2D transmittance
     const float sun_mu = mu_s_at(r, mu, mu_s, nu, t);
     const vec3 rayleigh = rayleigh_scattering_at(a, altitude), mie_s = mie_scattering_at(a, altitude);
     const vec3 extinction = extinction_at(a, altitude);
-    const vec3 sun = sun_transmittance_lookup(a, transmittance_lut, nearest, rd, sun_mu);
+    const vec3 sun = sun_transmittance_lookup(a, transmittance_lut, nearest, rd, sun_mu) * sun_visibility_along(sampling, t);
     vec3 psi = vec3(0.0);
     if (sampling.multiscattering) {
       psi = textureLod(sampler2D(multiscattering_lut, linear), multiscattering_lut_uv(a, rd, sun_mu, ms_size), 0.0).rgb;

@@ -20,7 +20,7 @@ SkyFrame sky_frame(SkyPassFrame f, bool clamped) {
 }
 
 SkyViewOptions sky_view_options(SkyPassFrame f) {
-  const SkySampling sampling = SkySampling(f.sampling.x, f.sampling.y, f.sampling.z, f.sampling.w, f.camera.y > 0.5);
+  const SkySampling sampling = SkySampling(f.sampling.x, f.sampling.y, f.sampling.z, f.sampling.w, f.camera.y > 0.5, vec3(0.0), vec3(0.0));
   return SkyViewOptions(sampling, f.sun_disk.y > 0.5, f.sun_disk.z > 0.5, f.sun_disk.w > 0.5, f.sun_disk.x);
 }
 
