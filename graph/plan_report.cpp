@@ -102,6 +102,8 @@ std::string plan_text(const Graph& g, const Plan& plan, const PlanReportContext&
   for (const CulledPass& c : plan.culled) {
     o << "  " << g.passes[c.pass].name << "  " << cull_reason_name(c.reason) << ": " << cull_detail(g, c) << "\n";
   }
+  if (!plan.setup_notes.empty()) o << "\nset up on the device:\n";
+  for (const SetupNote& n : plan.setup_notes) o << "  " << g.passes[n.pass].name << "  " << n.text << "\n";
   o << "\nresources (lifetime in plan positions):\n";
   for (uint32_t r = 0; r < g.resources.size(); ++r) {
     const Lifetime& l = plan.lifetimes[r];
@@ -161,6 +163,9 @@ std::string plan_json(const Graph& g, const Plan& plan, const PlanReportContext&
     culled.push_back({{"pass", g.passes[c.pass].name}, {"reason", cull_reason_name(c.reason)}, {"detail", cull_detail(g, c)}});
   }
   j["culled"] = culled;
+  Json notes = Json::array();
+  for (const SetupNote& n : plan.setup_notes) notes.push_back({{"pass", g.passes[n.pass].name}, {"note", n.text}});
+  if (!plan.setup_notes.empty()) j["setup_notes"] = notes;
   Json resources = Json::array();
   for (uint32_t r = 0; r < g.resources.size(); ++r) {
     const ResourceDesc& d = g.resources[r].desc;
