@@ -10,8 +10,8 @@
 // - sorted: object by object from the farthest (their bounds' centres) to the nearest,
 //   each drawn twice — × its transmittance, then + its radiance (coloured transmittance
 //   with plain blending) — a double-sided one back faces first; or, where the device
-//   offers dual-source blending (`dual_source`), once: radiance + colour × transmittance
-//   (the fragment's second output the destination's factor). Exact where each object
+//   offers dual-source blending (`dual_source`), a convex object once: radiance + colour ×
+//   transmittance (the fragment's second output the destination's factor). Exact where each object
 //   covers a pixel at most once per face set (convex objects, planes).
 // - weighted_oit: every surface in one draw in any order (McGuire & Bavoil 2013, with
 //   McGuire 2015's coloured transmission): the transmittances multiply exactly (their
@@ -290,7 +290,8 @@ class TranslucencyExecution final : public PassExecution {
                     " device does not offer dual-source blending");
     }
     s.note("one draw a layer (radiance + colour × transmittance): dual-source blending, offered by the " + s.device.info().backend +
-           " device");
+           " device" +
+           (s.variant_is(t_.sorted) ? " (non-convex objects: two, as before)" : ""));
   }
 
   void record(PassContext& c) override {
@@ -450,13 +451,13 @@ class TranslucencyExecution final : public PassExecution {
     for (const plumbing::GpuObject& o : geometry_->objects()) {
       if (!o.translucent) continue;
       if (o.volume != VolumeKind::solid) {
-        draw_layer(c, o, {p.peel_transmittance_all, p.peel_radiance_all, p.peel_layer_all});
+        draw_layer(c, o, {p.peel_transmittance_all, p.peel_radiance_all, p.peel_layer_all}, true);
         continue;
       }
       if (refracting(c)) {
-        draw_layer(c, o, {p.peel_refract_front, p.peel_radiance_front, none_});
+        draw_layer(c, o, {p.peel_refract_front, p.peel_radiance_front, none_}, true);
       } else {
-        draw_layer(c, o, {p.peel_transmittance_front, p.peel_radiance_front, p.peel_layer_front});
+        draw_layer(c, o, {p.peel_transmittance_front, p.peel_radiance_front, p.peel_layer_front}, true);
       }
     }
     c.encoder.end_render_pass();
@@ -471,17 +472,22 @@ class TranslucencyExecution final : public PassExecution {
     const SurfacePrograms& p = programs_;
     for (const plumbing::GpuObject* o : back_to_front(*c.scene)) {
       // A solid is seen through its front faces (its inside path reaches the back ones).
-      if (o->volume != VolumeKind::solid) draw_layer(c, *o, {p.transmittance_back, p.radiance_back, p.layer_back});
+      if (o->volume != VolumeKind::solid) draw_layer(c, *o, {p.transmittance_back, p.radiance_back, p.layer_back}, o->convex);
       // A refracting solid's first draw replaces the colour: it stays two draws.
       const bool refracts = refracting(c) && o->volume == VolumeKind::solid;
       draw_layer(c, *o, refracts ? LayerPrograms{p.refract_front, p.radiance_front, none_}
-                                 : LayerPrograms{p.transmittance_front, p.radiance_front, p.layer_front});
+                                 : LayerPrograms{p.transmittance_front, p.radiance_front, p.layer_front},
+                 o->convex);
     }
     c.encoder.end_render_pass();
   }
 
-  static void draw_layer(PassContext& c, const plumbing::GpuObject& o, const LayerPrograms& layer) {
-    if (layer.combined.pipeline) {
+  // One draw blends an object's own overlapping fragments in primitive order, two draw
+  // them as sorted always has (every × T, then every + L): sorted draws once only a convex
+  // object (at most one fragment a pixel a face set: `once_a_pixel`), so that both give
+  // the same image; a peeled layer has one fragment a pixel (its depth test is equal).
+  static void draw_layer(PassContext& c, const plumbing::GpuObject& o, const LayerPrograms& layer, bool once_a_pixel) {
+    if (layer.combined.pipeline && once_a_pixel) {
       c.encoder.set_pipeline(layer.combined.pipeline);
       plumbing::SceneGeometry::draw(c.encoder, 1, o);
       return;
