@@ -102,6 +102,13 @@ struct MemoryStats {
   uint64_t transient_count = 0;
 };
 
+// What a pass chose when it was set up on the device (a capability it used or went
+// without, and why): filled by the executor, printed by `plan --setup`.
+struct SetupNote {
+  uint32_t pass;
+  std::string text;
+};
+
 struct Plan {
   CompileOptions options{};
   std::vector<PlannedPass> order;
@@ -120,6 +127,7 @@ struct Plan {
   // (read-backs): its layout, and the stages of its last write and of every read since.
   std::vector<AccessState> final_states;
   MemoryStats memory{};
+  std::vector<SetupNote> setup_notes;  // empty until an executor has set the passes up
 };
 
 // Orders, culls, places and synchronises. Throws GraphError on a cycle.

@@ -72,6 +72,12 @@ Json barrier_json(const Graph& g, const Barrier& br) {
           {"aliasing", br.aliasing}};
 }
 
+// The pass a setup note is of: a pass made of steps is set up once, by its first step.
+std::string noted_pass(const Graph& g, const SetupNote& n) {
+  const std::string& name = g.passes[n.pass].name;
+  return name.substr(0, name.find('/'));
+}
+
 }  // namespace
 
 std::string bytes_text(uint64_t bytes) {
@@ -102,6 +108,8 @@ std::string plan_text(const Graph& g, const Plan& plan, const PlanReportContext&
   for (const CulledPass& c : plan.culled) {
     o << "  " << g.passes[c.pass].name << "  " << cull_reason_name(c.reason) << ": " << cull_detail(g, c) << "\n";
   }
+  if (!plan.setup_notes.empty()) o << "\nset up on the device:\n";
+  for (const SetupNote& n : plan.setup_notes) o << "  " << noted_pass(g, n) << "  " << n.text << "\n";
   o << "\nresources (lifetime in plan positions):\n";
   for (uint32_t r = 0; r < g.resources.size(); ++r) {
     const Lifetime& l = plan.lifetimes[r];
@@ -161,6 +169,9 @@ std::string plan_json(const Graph& g, const Plan& plan, const PlanReportContext&
     culled.push_back({{"pass", g.passes[c.pass].name}, {"reason", cull_reason_name(c.reason)}, {"detail", cull_detail(g, c)}});
   }
   j["culled"] = culled;
+  Json notes = Json::array();
+  for (const SetupNote& n : plan.setup_notes) notes.push_back({{"pass", noted_pass(g, n)}, {"note", n.text}});
+  if (!plan.setup_notes.empty()) j["setup_notes"] = notes;
   Json resources = Json::array();
   for (uint32_t r = 0; r < g.resources.size(); ++r) {
     const ResourceDesc& d = g.resources[r].desc;

@@ -19,7 +19,8 @@ const char* const kUsage = R"(usage: volgraph COMMAND [options]
 
 commands:
   validate CONFIG              check a config without a GPU (exit 0 valid, 2 invalid)
-  plan CONFIG [--json|--dot]   the compiled plan: order, culling, lifetimes, memory, barriers
+  plan CONFIG [--json|--dot]   the compiled plan: order, culling, lifetimes, memory, barriers;
+                               --setup: set the passes up on --backend's device and say what each chose
   render CONFIG -o OUT         render to .png (sRGB 8-bit), .exr or .pfm (linear float)
   reference CONFIG -o OUT      the CPU ground truth of the config's scene (double precision, exact
                                visibility; pass parameters such as ambient or tone maps are not part
@@ -185,6 +186,7 @@ void graph_options(CLI::App& app, Args& args) {
 void plan_options(CLI::App& app, Args& args) {
   flag(app, "--json", [&] { args.json = true; });
   flag(app, "--dot", [&] { args.dot = true; });
+  flag(app, "--setup", [&] { args.setup = true; });
 }
 
 void output_option(CLI::App& app, Args& args) {

@@ -45,6 +45,7 @@ struct Args {
   std::string config;
   std::string output;
   bool json = false, dot = false;
+  bool setup = false;  // plan --setup: the plan as an executor on the device runs it, with its setup notes
   std::string backend = "vulkan";
   int device = -1;
   int frames = 1;

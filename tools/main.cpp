@@ -319,9 +319,20 @@ int run_validate(const Args& args, const PassRegistry& registry) {
   return kOk;
 }
 
+// The plan as an executor runs it on --backend's device, every pass set up (its setup notes filled).
+Plan set_up_plan(const Args& args, LoadedConfig& loaded) {
+  if (args.backend == "webgpu") {
+    const std::unique_ptr<rhi::Device> device = create_webgpu_device(SimulatedFault::none);
+    return Executor(*device, loaded.graph, &loaded.config.scene, args.compile).plan();
+  }
+  auto context = vulkan::Context::create({.validation = args.validation, .device_index = args.device});
+  vulkan::VulkanDevice device(*context);
+  return Executor(device, loaded.graph, &loaded.config.scene, args.compile).plan();
+}
+
 int run_plan(const Args& args, const PassRegistry& registry) {
   LoadedConfig loaded = load(args, registry);
-  const Plan plan = compile_loaded(loaded, args.compile);
+  const Plan plan = args.setup ? set_up_plan(args, loaded) : compile_loaded(loaded, args.compile);
   const PlanReportContext context{args.config};
   if (args.backend == "webgpu" && !args.json && !args.dot) std::cout << webgpu_memory_line(loaded.graph, plan);
   std::cout << (args.json ? plan_json(loaded.graph, plan, context)

@@ -138,6 +138,7 @@ void Executor::prepare() {
     const bool first_of_its_pass = std::find(executions_.begin(), executions_.begin() + pos, executions_[pos]) == executions_.begin() + pos;
     if (!first_of_its_pass) continue;  // a later step of a pass set up already
     PassSetup setup(device_, graph_, plan_.order[pos].pass, *resources_, scene_);
+    setup.collect_notes(&plan_.setup_notes);
     executions_[pos]->setup(setup);
   }
   pass_keys_.assign(plan_.order.size(), 0);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "graph/graph.h"
+#include "graph/plan.h"
 #include "graph/rhi/bind_by_name.h"
 #include "graph/rhi/graph_resource_set.h"
 #include "graph/rhi/rhi.h"
@@ -67,7 +68,14 @@ class PassSetup {
   // One of the device's shared samplers.
   rhi::SamplerId sampler(rhi::StockSampler which) const { return device.stock_sampler(which); }
 
+  // States what the pass chose at setup and why (Plan::setup_notes, `plan --setup`).
+  void note(std::string text) const {
+    if (notes_) notes_->push_back({pass, std::move(text)});
+  }
+  void collect_notes(std::vector<SetupNote>* notes) { notes_ = notes; }
+
  private:
+  std::vector<SetupNote>* notes_ = nullptr;
   const ParamValue& param_value(uint16_t index) const;
   const ResourceUse* use_of(SlotHandle slot) const;
   const rhi::GraphResourceSet& resources_;

@@ -166,8 +166,11 @@ struct VertexBufferLayout {
 
 enum class CompareFunction : uint8_t { never, less, less_equal, greater, greater_equal, equal, not_equal, always };
 enum class CullMode : uint8_t { none, front, back };
-// additive: src + dst (light volumes, accumulation); multiply: dst × src (transmittance)
-enum class BlendMode : uint8_t { replace, additive, multiply };
+// additive: src + dst (light volumes, accumulation); multiply: dst × src (transmittance);
+// source_plus_dest_times_source1: src0 + dst × src1, the fragment's second output (index 1)
+// the destination's factor: a layer's radiance over its transmittance in one draw, on a
+// device with Device::has_dual_source_blending().
+enum class BlendMode : uint8_t { replace, additive, multiply, source_plus_dest_times_source1 };
 enum class IndexFormat : uint8_t { uint16, uint32 };
 enum class LoadOp : uint8_t { clear, load };
 
@@ -323,6 +326,10 @@ class Device {
   virtual ComputePipelineId create_compute_pipeline(const ComputePipelineDesc& desc) = 0;
   virtual RenderPipelineId create_render_pipeline(const RenderPipelineDesc& desc) = 0;
   virtual bool has_timestamps() const = 0;
+  // Whether pipelines may blend with the fragment's second output
+  // (BlendMode::source_plus_dest_times_source1): Vulkan dualSrcBlend, WebGPU
+  // "dual-source-blending" where the shader path expresses it.
+  virtual bool has_dual_source_blending() const = 0;
   virtual QuerySetId create_timestamp_queries(std::string_view label, uint32_t count) = 0;
   // Nanoseconds of each time stamp in [first, first + count), from an arbitrary origin
   // (waits for everything submitted).

@@ -77,6 +77,31 @@ void pack_translucency(const Translucency& t, double scale, GpuObjectBlock& bloc
   block.alpha_test[3] = float(iors[2]);
 }
 
+// Whether every vertex lies on or behind every triangle's plane (the normal by the
+// counter-clockwise winding): a convex mesh or a flat one, covering a pixel at most once
+// per face set. Meshes of more than 1e8 vertex-triangle pairs count as not convex.
+bool convex_mesh(const std::vector<float>& vertices, const std::vector<uint32_t>& indices) {
+  const size_t vertex_count = vertices.size() / kMeshVertexFloats, triangles = indices.size() / 3;
+  if (double(vertex_count) * double(triangles) > 1e8) return false;
+  const auto point = [&](size_t v) {
+    const float* p = &vertices[v * kMeshVertexFloats];
+    return Vec3{p[0], p[1], p[2]};
+  };
+  double extent = 0;
+  for (size_t v = 0; v < vertex_count; ++v) extent = std::max(extent, physics::largest(physics::times(point(v), point(v))));
+  const double tolerance = 1e-5 * std::sqrt(extent);
+  for (size_t t = 0; t < triangles; ++t) {
+    const Vec3 a = point(indices[3 * t]), b = point(indices[3 * t + 1]), c = point(indices[3 * t + 2]);
+    const Vec3 n = physics::cross(physics::sub(b, a), physics::sub(c, a));
+    const double area = physics::length_of(n);
+    if (area == 0) continue;
+    for (size_t v = 0; v < vertex_count; ++v) {
+      if (physics::dot(physics::sub(point(v), a), n) > tolerance * area) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 rhi::VertexBufferLayout SceneGeometry::vertex_layout() {
@@ -126,6 +151,7 @@ void SceneGeometry::add(rhi::Device& device, const ObjectData& object) {
   g.masked = object.translucency.alpha_mode == AlphaMode::mask;
   g.volume = object.translucency.volume;
   g.center = physics::scaled(physics::add(object_min, object_max), 0.5);
+  g.convex = g.translucent && convex_mesh(object.vertices, object.indices);
   g.vertices = device.create_buffer({"object vertices", object.vertices.size() * 4, buffer_usage::vertex});
   device.write_buffer(g.vertices, 0, std::as_bytes(std::span(object.vertices)));
   g.indices = device.create_buffer({"object indices", object.indices.size() * 4, buffer_usage::index});

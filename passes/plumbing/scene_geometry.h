@@ -48,6 +48,9 @@ struct GpuObject {
   bool masked = false;  // alpha mode mask
   VolumeKind volume = VolumeKind::thin_walled;
   Vec3 center{0, 0, 0};  // of its world-space bounds (translucent draws sort by it)
+  // Translucent ones: convex or flat (every vertex behind every face's plane), so a pixel
+  // meets it at most once per face set (the translucency pass blends a layer in one draw).
+  bool convex = false;
   bool is(Surfaces which) const {
     switch (which) {
       case Surfaces::opaque: return !translucent;

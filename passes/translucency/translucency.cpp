@@ -9,7 +9,9 @@
 // (RTR4 §14.5.1). Variants compose the layers:
 // - sorted: object by object from the farthest (their bounds' centres) to the nearest,
 //   each drawn twice — × its transmittance, then + its radiance (coloured transmittance
-//   with plain blending) — a double-sided one back faces first. Exact where each object
+//   with plain blending) — a double-sided one back faces first; or, where the device
+//   offers dual-source blending (`dual_source`), a convex object once: radiance + colour ×
+//   transmittance (the fragment's second output the destination's factor). Exact where each object
 //   covers a pixel at most once per face set (convex objects, planes).
 // - weighted_oit: every surface in one draw in any order (McGuire & Bavoil 2013, with
 //   McGuire 2015's coloured transmission): the transmittances multiply exactly (their
@@ -76,6 +78,9 @@ struct TranslucencyTable : PassTable {
       choice("refraction", Refraction::screen_space, {{Refraction::screen_space, "screen_space"}, {Refraction::none, "none"}},
              "sorted: solids of IOR ≠ 1 show refracted_color where their refracted ray lands (Sousa 2005; the slab approximation), "
              "when it is wired; none: what lies straight behind");
+  ParamHandle<bool> dual_source = flag("dual_source", true,
+                                       "sorted and depth_peeling: one draw a layer (radiance + colour × transmittance, dual-source "
+                                       "blending) where the device offers it, else two");
   ParamHandle<int64_t> layers = integer("layers", 8, 1, kMaxPeeledLayers, "layers",
                                         "depth_peeling: the layers peeled a pixel (the farthest first; a convex solid is two)");
   // Slots.
@@ -182,6 +187,16 @@ struct SurfacePrograms {
   // them: both faces of the rest, the front faces of solids, a refracting solid replacing).
   plumbing::RenderProgram peel_depth, peel_transmittance_all, peel_radiance_all, peel_transmittance_front, peel_radiance_front,
       peel_refract_front;
+  // With dual-source blending: each of the pairs above (but a refracting solid's) in one draw.
+  plumbing::RenderProgram layer_back, layer_front, peel_layer_all, peel_layer_front;
+};
+
+// One translucent layer over the colour: two draws (× transmittance, + radiance), or one
+// with dual-source blending (`combined`, when it has a pipeline).
+struct LayerPrograms {
+  const plumbing::RenderProgram& attenuate;
+  const plumbing::RenderProgram& add;
+  const plumbing::RenderProgram& combined;
 };
 
 class TranslucencyExecution final : public PassExecution {
@@ -204,6 +219,7 @@ class TranslucencyExecution final : public PassExecution {
                   : plumbing::create_render_program(s.device, pd, "scene.vert", fragment);
     };
     SurfacePrograms& p = programs_;
+    note_layer_draws(s);
     // The refracting draw reads every binding the surfaces' sets hold: the others share its layouts.
     p.refract_front = surface("refracted × transmittance", "translucency_refract.frag", {{color, BlendMode::replace}}, CullMode::back, nullptr);
     const plumbing::RenderProgram* like = &p.refract_front;
@@ -238,6 +254,15 @@ class TranslucencyExecution final : public PassExecution {
                                     CullMode::back, like, at_layer);
     p.peel_refract_front = surface("peeled refracted × transmittance", "translucency_refract.frag", {{color, BlendMode::replace}},
                                    CullMode::back, like, at_layer);
+    if (one_draw_per_layer(s)) {
+      const BlendMode over = BlendMode::source_plus_dest_times_source1;
+      const char* fragment = "translucency_radiance_transmittance.frag";
+      p.layer_back = surface("radiance + × transmittance (back faces)", fragment, {{color, over}}, CullMode::front, like);
+      p.layer_front = surface("radiance + × transmittance", fragment, {{color, over}}, CullMode::back, like);
+      p.peel_layer_all = surface("peeled radiance + × transmittance", fragment, {{color, over}}, CullMode::none, like, at_layer);
+      p.peel_layer_front =
+          surface("peeled radiance + × transmittance (front faces)", fragment, {{color, over}}, CullMode::back, like, at_layer);
+    }
     resolve_ = {resolve_program(s, color, BlendMode::multiply, "translucency_oit_revealage.frag"),
                 resolve_program(s, color, BlendMode::additive, "translucency_oit_radiance.frag")};
     namespace shader = translucency_surface_shader;
@@ -249,6 +274,24 @@ class TranslucencyExecution final : public PassExecution {
     geometry_ = std::make_unique<plumbing::SceneGeometry>(s.device, *s.scene, *like);
     textures_ = std::make_unique<plumbing::TextureCache>(s.device);
     make_stand_ins(s);
+  }
+
+  // Whether a layer is one draw (dual-source blending) or two, said in the plan with why.
+  // weighted_oit keeps its own accumulation (its layers add weighted sums, nothing multiplies
+  // the colour before the resolve).
+  bool one_draw_per_layer(const PassSetup& s) const {
+    return !s.variant_is(t_.weighted_oit) && s.param(t_.dual_source) && s.device.has_dual_source_blending();
+  }
+  void note_layer_draws(const PassSetup& s) const {
+    if (s.variant_is(t_.weighted_oit)) return s.note("weighted_oit: its own accumulation, no per-layer blend to fuse");
+    if (!s.param(t_.dual_source)) return s.note("two draws a layer (× transmittance, + radiance): dual_source is off");
+    if (!s.device.has_dual_source_blending()) {
+      return s.note("two draws a layer (× transmittance, + radiance): the " + s.device.info().backend +
+                    " device does not offer dual-source blending");
+    }
+    s.note("one draw a layer (radiance + colour × transmittance): dual-source blending, offered by the " + s.device.info().backend +
+           " device" +
+           (s.variant_is(t_.sorted) ? " (non-convex objects: two, as before)" : ""));
   }
 
   void record(PassContext& c) override {
@@ -408,10 +451,14 @@ class TranslucencyExecution final : public PassExecution {
     for (const plumbing::GpuObject& o : geometry_->objects()) {
       if (!o.translucent) continue;
       if (o.volume != VolumeKind::solid) {
-        draw_twice(c, o, p.peel_transmittance_all, p.peel_radiance_all);
+        draw_layer(c, o, {p.peel_transmittance_all, p.peel_radiance_all, p.peel_layer_all}, true);
         continue;
       }
-      draw_twice(c, o, refracting(c) ? p.peel_refract_front : p.peel_transmittance_front, p.peel_radiance_front);
+      if (refracting(c)) {
+        draw_layer(c, o, {p.peel_refract_front, p.peel_radiance_front, none_}, true);
+      } else {
+        draw_layer(c, o, {p.peel_transmittance_front, p.peel_radiance_front, p.peel_layer_front}, true);
+      }
     }
     c.encoder.end_render_pass();
   }
@@ -425,16 +472,27 @@ class TranslucencyExecution final : public PassExecution {
     const SurfacePrograms& p = programs_;
     for (const plumbing::GpuObject* o : back_to_front(*c.scene)) {
       // A solid is seen through its front faces (its inside path reaches the back ones).
-      if (o->volume != VolumeKind::solid) draw_twice(c, *o, p.transmittance_back, p.radiance_back);
+      if (o->volume != VolumeKind::solid) draw_layer(c, *o, {p.transmittance_back, p.radiance_back, p.layer_back}, o->convex);
+      // A refracting solid's first draw replaces the colour: it stays two draws.
       const bool refracts = refracting(c) && o->volume == VolumeKind::solid;
-      draw_twice(c, *o, refracts ? p.refract_front : p.transmittance_front, p.radiance_front);
+      draw_layer(c, *o, refracts ? LayerPrograms{p.refract_front, p.radiance_front, none_}
+                                 : LayerPrograms{p.transmittance_front, p.radiance_front, p.layer_front},
+                 o->convex);
     }
     c.encoder.end_render_pass();
   }
 
-  static void draw_twice(PassContext& c, const plumbing::GpuObject& o, const plumbing::RenderProgram& attenuate,
-                         const plumbing::RenderProgram& add) {
-    for (const plumbing::RenderProgram* program : {&attenuate, &add}) {
+  // One draw blends an object's own overlapping fragments in primitive order, two draw
+  // them as sorted always has (every × T, then every + L): sorted draws once only a convex
+  // object (at most one fragment a pixel a face set: `once_a_pixel`), so that both give
+  // the same image; a peeled layer has one fragment a pixel (its depth test is equal).
+  static void draw_layer(PassContext& c, const plumbing::GpuObject& o, const LayerPrograms& layer, bool once_a_pixel) {
+    if (layer.combined.pipeline && once_a_pixel) {
+      c.encoder.set_pipeline(layer.combined.pipeline);
+      plumbing::SceneGeometry::draw(c.encoder, 1, o);
+      return;
+    }
+    for (const plumbing::RenderProgram* program : {&layer.attenuate, &layer.add}) {
       c.encoder.set_pipeline(program->pipeline);
       plumbing::SceneGeometry::draw(c.encoder, 1, o);
     }
@@ -472,6 +530,7 @@ class TranslucencyExecution final : public PassExecution {
 
   const TranslucencyTable& t_;
   SurfacePrograms programs_;
+  const plumbing::RenderProgram none_{};  // no pipeline: a layer drawn twice
   std::array<plumbing::RenderProgram, 2> resolve_;
   rhi::BufferId block_, no_shadow_view_, no_fog_frame_, no_aerial_lookup_;
   rhi::TextureId no_volume_texture_;

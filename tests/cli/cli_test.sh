@@ -5,7 +5,8 @@
 #   cli_test.sh VOLGRAPH render CONFIG    render writes a PFM, or names the pass with no GPU implementation
 #                                         yet (exit 1) and writes nothing
 #   cli_test.sh VOLGRAPH usage            bad command lines exit 2 with one message
-#   cli_test.sh VOLGRAPH devices          lists each adapter with whether it offers dual-source blending
+#   cli_test.sh VOLGRAPH devices          lists each adapter with whether it offers dual-source blending;
+#                                         plan --setup says what the translucency pass chose with it
 #   cli_test.sh VOLGRAPH dump CONFIG      --dump writes intermediates; a bad --dump exits 2 and writes nothing
 #   cli_test.sh VOLGRAPH reference CONFIG the CPU reference writes PFM and PNG with its time line; bad
 #                                         command lines and a broken model exit 2 and write nothing
@@ -225,6 +226,14 @@ got: $(cat "$tmp/err")"
       fail "no Vulkan device line with dualSrcBlend: $(cat "$tmp/out")"
     grep -Eq '^webgpu: .*(DualSourceBlending\): (offered|not offered)|without Dawn)' "$tmp/out" ||
       fail "no WebGPU line with DualSourceBlending: $(cat "$tmp/out")"
+    # plan --setup: the translucency pass says how many draws a layer takes on this device, and why.
+    glass=$(dirname "$0")/../../configs/demo_stained_glass.json
+    "$volgraph" plan "$glass" --setup --size 64x36 >"$tmp/out" 2>"$tmp/err" || fail "plan --setup exit $?; stderr: $(cat "$tmp/err")"
+    if grep -Eq '^0: .*dualSrcBlend\): offered$' <("$volgraph" devices); then want='one draw a layer'; else want='two draws a layer'; fi
+    grep -Eq "^  glass  $want .*(dual-source blending|dual_source)" "$tmp/out" || fail "plan --setup does not say \"$want\": $(cat "$tmp/out")"
+    "$volgraph" plan "$glass" --setup --size 64x36 --set glass.dual_source=false >"$tmp/out" 2>"$tmp/err" || fail "plan --setup exit $?"
+    grep -q '^  glass  two draws a layer (× transmittance, + radiance): dual_source is off$' "$tmp/out" ||
+      fail "plan --setup with dual_source off: $(cat "$tmp/out")"
     ;;
   usage)
     for args in "" "frobnicate x.json" "plan" "plan $config --bogus" "plan $config --size 0x10" \

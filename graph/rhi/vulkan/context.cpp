@@ -230,7 +230,10 @@ void Context::create_device(const std::vector<const char*>& extra_extensions) {
   want13.dynamicRendering = VK_TRUE;
   VkPhysicalDeviceVulkan12Features want12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &want13};
   want12.hostQueryReset = VK_TRUE;
+  VkPhysicalDeviceFeatures want{};
+  want.dualSrcBlend = info_.dual_source_blending ? VK_TRUE : VK_FALSE;  // one draw per translucent layer
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &want12};
+  info.pEnabledFeatures = &want;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue;
   info.enabledExtensionCount = uint32_t(extra_extensions.size());

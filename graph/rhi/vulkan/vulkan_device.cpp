@@ -555,6 +555,13 @@ rhi::RenderPipelineId VulkanDevice::create_render_pipeline(const rhi::RenderPipe
       b.dstAlphaBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
       b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
     }
+    if (c.blend == rhi::BlendMode::source_plus_dest_times_source1) {  // src0 + dst × src1
+      b.blendEnable = VK_TRUE;
+      b.srcColorBlendFactor = b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+      b.dstColorBlendFactor = VK_BLEND_FACTOR_SRC1_COLOR;
+      b.dstAlphaBlendFactor = VK_BLEND_FACTOR_SRC1_ALPHA;
+      b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
     blends.push_back(b);
     color_formats.push_back(to_vk(c.format));
   }

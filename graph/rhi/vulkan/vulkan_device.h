@@ -31,6 +31,7 @@ class VulkanDevice final : public rhi::Device {
   rhi::ComputePipelineId create_compute_pipeline(const rhi::ComputePipelineDesc& desc) override;
   rhi::RenderPipelineId create_render_pipeline(const rhi::RenderPipelineDesc& desc) override;
   bool has_timestamps() const override { return context_.timestamp_period_ns() > 0; }
+  bool has_dual_source_blending() const override { return context_.info().dual_source_blending; }
   rhi::QuerySetId create_timestamp_queries(std::string_view label, uint32_t count) override;
   std::vector<double> read_timestamps(rhi::QuerySetId queries, uint32_t first, uint32_t count) override;
   VkQueryPool query_pool(rhi::QuerySetId id) const { return query_pools_.at(id.id); }

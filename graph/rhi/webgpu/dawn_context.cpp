@@ -117,6 +117,8 @@ void DawnContext::request_device() {
   if (timestamps_) features.push_back(wgpu::FeatureName::TimestampQuery);
   // Additive blending into rgba32_float targets (accumulation), as on Vulkan.
   if (adapter_.HasFeature(wgpu::FeatureName::Float32Blendable)) features.push_back(wgpu::FeatureName::Float32Blendable);
+  // A fragment's second blend source (BlendFactor::Src1): one draw per translucent layer.
+  if (dual_source_blending_) features.push_back(wgpu::FeatureName::DualSourceBlending);
   wgpu::Limits limits;  // all the adapter allows (large shadow maps, 3D textures)
   adapter_.GetLimits(&limits);
   wgpu::DawnTogglesDescriptor toggles;

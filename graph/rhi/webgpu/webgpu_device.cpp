@@ -224,11 +224,16 @@ constexpr wgpu::BlendState kAdditive = {{wgpu::BlendOperation::Add, wgpu::BlendF
 // dst × src for colour and alpha.
 constexpr wgpu::BlendState kMultiply = {{wgpu::BlendOperation::Add, wgpu::BlendFactor::Zero, wgpu::BlendFactor::Src},
                                         {wgpu::BlendOperation::Add, wgpu::BlendFactor::Zero, wgpu::BlendFactor::SrcAlpha}};
+// src0 + dst × src1 for colour and alpha (the DualSourceBlending feature).
+constexpr wgpu::BlendState kSourcePlusDestTimesSource1 = {
+    {wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::Src1},
+    {wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::Src1Alpha}};
 
 const wgpu::BlendState* blend_state(rhi::BlendMode mode) {
   switch (mode) {
     case rhi::BlendMode::additive: return &kAdditive;
     case rhi::BlendMode::multiply: return &kMultiply;
+    case rhi::BlendMode::source_plus_dest_times_source1: return &kSourcePlusDestTimesSource1;
     case rhi::BlendMode::replace: break;
   }
   return nullptr;
