@@ -83,7 +83,7 @@ void read_param(const GraphPass& pass, const std::vector<ParamValue>& values, co
 }
 
 // The table of the cloud_phase_table pass whose output `pass` reads in its phase_table slot
-// (its size and droplets; the pass's defaults where the graph has none), or none.
+// (its variant, size and droplets or g; the pass's defaults where the graph has none), or none.
 std::optional<physics::CloudPhaseTable> wired_phase_table(const Graph& graph, const GraphPass& pass,
                                                           const std::vector<std::vector<ParamValue>>& params) {
   for (const ResourceUse& use : pass.uses) {
@@ -95,9 +95,11 @@ std::optional<physics::CloudPhaseTable> wired_phase_table(const Graph& graph, co
     static const std::vector<ParamValue> none;
     const std::vector<ParamValue>& v = !table.params.empty() ? table.params : (creator < params.size() ? params[creator] : none);
     int64_t size = 512;
+    double g = 0.8;
     physics::DropletDistribution droplets;
     read_param(table, v, "size", size), read_param(table, v, "effective_radius", droplets.effective_radius_um);
-    read_param(table, v, "effective_variance", droplets.effective_variance);
+    read_param(table, v, "effective_variance", droplets.effective_variance), read_param(table, v, "g", g);
+    if (table.decl->variants[table.variant].name == "henyey_greenstein") return physics::henyey_greenstein_phase_table(g, uint32_t(size));
     return physics::cloud_droplet_phase_table(droplets, uint32_t(size));
   }
   return std::nullopt;

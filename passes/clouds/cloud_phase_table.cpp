@@ -7,6 +7,8 @@
 // GPU reads what physics computed), and WebGPU cannot filter it, so cloud_march mixes the two
 // texels itself, as the CPU twin does. Computed on the CPU (~0.15 s for 512 texels) and
 // uploaded once; cached. cloud_march reads it through its optional `phase_table` input.
+// Variant henyey_greenstein: one HG lobe of `g` tabulated alike (the analytic phase through
+// the table, for comparing the two).
 #include <span>
 #include <vector>
 
@@ -27,6 +29,7 @@ struct CloudPhaseTableTable : PassTable {
   }
   // Variants.
   VariantHandle mie = variant("mie", "Lorenz–Mie over Hansen & Travis's modified gamma distribution of water droplets (m = 1.333)");
+  VariantHandle henyey_greenstein = variant("henyey_greenstein", "one Henyey–Greenstein lobe of g, tabulated alike (for comparisons)");
   // Parameters.
   ParamHandle<int64_t> size = integer("size", 512, 2, 8192, "texels", "the table's texels over θ (u = sqrt(θ/π) at (i + ½)/size)");
   ParamHandle<int64_t> rows = integer("rows", 1, 1, 1, "texels", "the table's height: one row (a size of its own width only)");
@@ -34,6 +37,7 @@ struct CloudPhaseTableTable : PassTable {
       number("effective_radius", 10, 1, 30, "µm", "the droplets' effective radius r_eff (Hansen & Travis 1974's water cloud: 10 µm)");
   ParamHandle<double> effective_variance =
       number("effective_variance", 0.1, 0.02, 0.3, "", "the droplets' effective variance v_eff (Hansen & Travis 1974's water cloud: 0.1)");
+  ParamHandle<double> g = number("g", 0.8, -0.998, 0.998, "", "henyey_greenstein: the lobe's mean cosine");
   // Slots.
   SlotHandle phase = output("phase", ResourceKind::texture2d, Usage::copy_dst, Format::rgba32_float, SizeSpec::rect_of(size, rows),
                             "rgb p(θ_i) per channel (1/sr) at θ_i = π((i + ½)/size)², a 1");
@@ -51,10 +55,11 @@ class CloudPhaseTableExecution final : public PassExecution {
  public:
   explicit CloudPhaseTableExecution(const CloudPhaseTableTable& table) : t_(table) {}
 
+  void setup(PassSetup& s) override { henyey_greenstein_ = s.variant_is(t_.henyey_greenstein); }
+
   // Runs when the cache key changed: the first frame, another size or distribution.
   void record(PassContext& c) override {
-    const physics::DropletDistribution droplets{c.param(t_.effective_radius), c.param(t_.effective_variance)};
-    const std::vector<float> texels = phase_texels(physics::cloud_droplet_phase_table(droplets, uint32_t(c.param(t_.size))));
+    const std::vector<float> texels = phase_texels(table(c));
     const size_t bytes = texels.size() * sizeof(float);
     if (staging_bytes_ != bytes) {
       staging_ = c.device.create_buffer({c.name() + " texels", bytes, rhi::buffer_usage::copy_src | rhi::buffer_usage::copy_dst});
@@ -65,7 +70,14 @@ class CloudPhaseTableExecution final : public PassExecution {
   }
 
  private:
+  physics::CloudPhaseTable table(const PassContext& c) const {
+    const uint32_t n = uint32_t(c.param(t_.size));
+    if (henyey_greenstein_) return physics::henyey_greenstein_phase_table(c.param(t_.g), n);
+    return physics::cloud_droplet_phase_table({c.param(t_.effective_radius), c.param(t_.effective_variance)}, n);
+  }
+
   const CloudPhaseTableTable& t_;
+  bool henyey_greenstein_ = false;
   rhi::BufferId staging_;
   size_t staging_bytes_ = 0;
 };
