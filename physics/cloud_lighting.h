@@ -16,6 +16,8 @@ using uint = uint32_t;
 
 // phase.glsl's phase_hg, by its C++ twin.
 inline float phase_hg(float g, float cos_theta) { return physics::phase_hg<float>(g, cos_theta); }
+// phase.glsl's phase_isotropic, likewise.
+inline float phase_isotropic() { return physics::phase_isotropic<float>(); }
 
 #include "shaders/include/cloud_lighting.h"
 

@@ -13,6 +13,7 @@
 #include "physics/cloud_density.h"
 #include "physics/cloud_lighting.h"
 #include "physics/cloud_noise.h"
+#include "physics/cloud_phase_table.h"
 #include "physics/vec3.h"
 
 namespace volgraph::reference {
@@ -81,6 +82,29 @@ void read_param(const GraphPass& pass, const std::vector<ParamValue>& values, co
   }
 }
 
+// The table of the cloud_phase_table pass whose output `pass` reads in its phase_table slot
+// (its variant, size and droplets or g; the pass's defaults where the graph has none), or none.
+std::optional<physics::CloudPhaseTable> wired_phase_table(const Graph& graph, const GraphPass& pass,
+                                                          const std::vector<std::vector<ParamValue>>& params) {
+  for (const ResourceUse& use : pass.uses) {
+    if (use.direction != SlotDirection::input || pass.decl->slots[use.slot].name != "phase_table" || use.resource >= graph.resources.size())
+      continue;
+    const uint32_t creator = graph.resources[use.resource].creator;
+    if (creator >= graph.passes.size() || !graph.passes[creator].decl || graph.passes[creator].decl->name != "cloud_phase_table") continue;
+    const GraphPass& table = graph.passes[creator];
+    static const std::vector<ParamValue> none;
+    const std::vector<ParamValue>& v = !table.params.empty() ? table.params : (creator < params.size() ? params[creator] : none);
+    int64_t size = 512;
+    double g = 0.8;
+    physics::DropletDistribution droplets;
+    read_param(table, v, "size", size), read_param(table, v, "effective_radius", droplets.effective_radius_um);
+    read_param(table, v, "effective_variance", droplets.effective_variance), read_param(table, v, "g", g);
+    if (table.decl->variants[table.variant].name == "henyey_greenstein") return physics::henyey_greenstein_phase_table(g, uint32_t(size));
+    return physics::cloud_droplet_phase_table(droplets, uint32_t(size));
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 CloudReferenceSettings cloud_reference_settings(const Graph& graph, const std::vector<std::vector<ParamValue>>& params,
@@ -107,6 +131,7 @@ CloudReferenceSettings cloud_reference_settings(const Graph& graph, const std::v
       read_param(pass, v, "curl_strength", k.curl_strength), read_param(pass, v, "a", k.a), read_param(pass, v, "b", k.b);
       read_param(pass, v, "c", k.c), read_param(pass, v, "g_forward", k.g_forward), read_param(pass, v, "g_back", k.g_back);
       read_param(pass, v, "back_weight", k.back_weight), read_param(pass, v, "ambient", k.ambient);
+      k.phase_table = wired_phase_table(graph, pass, params);
     } else if (!weather && pass.decl->name == "cloud_weather_map") {
       weather = true;
       int64_t size = k.weather_size;
@@ -288,6 +313,12 @@ Vec3 CloudReference::source(const Vec3& p, double rho, double cos_theta) const {
   const double tau = sun_optical_depth(p);
   if (!std::isfinite(tau)) return s;
   const CloudReferenceSettings& k = settings_;
+  if (k.phase_table) {  // the table's phase at θ (cloud_march_body.glsl's phase_table_at), per channel
+    const std::array<float, 3> p = physics::cloud_phase_table_at(*k.phase_table, float(cos_theta));
+    const glm::vec3 lit = lighting::cloud_octaves_tabulated(sigma_s, float(tau), glm::vec3(p[0], p[1], p[2]), k.octaves, float(k.a),
+                                                            float(k.b), float(k.c));
+    return add(s, Vec3{sun_irradiance_[0] * lit.x, sun_irradiance_[1] * lit.y, sun_irradiance_[2] * lit.z});
+  }
   const double lit = lighting::cloud_octaves(sigma_s, float(tau), float(cos_theta), float(k.g_forward), float(k.g_back),
                                              float(k.back_weight), k.octaves, float(k.a), float(k.b), float(k.c));
   return add(s, scaled(sun_irradiance_, lit));

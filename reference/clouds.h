@@ -9,6 +9,8 @@
 //   as cloud_layer.glsl does: coverage × r, type mix(the layer's, g, a).
 // - The density is cloud_density.h's, the lighting cloud_lighting.h's (dual-lobe HG,
 //   Wrenninge's octaves, powder off), the sun's optical depth over the same light_distance.
+//   With cloud_phase_table wired into the march, the phase is the table's (the texels the
+//   pass uploads, physics/mie), read by cloud_phase_table.h's lookup and cloud_octaves_tabulated.
 // - The quadrature: the view segment in `view_steps` equal steps with no empty-space
 //   skipping and no early termination, Hillaire's step on each (exact for a density constant
 //   on the step); the light march in `light_steps` midpoint samples over light_distance.
@@ -25,6 +27,7 @@
 
 #include "graph/graph.h"
 #include "graph/scene/scene.h"
+#include "physics/mie.h"
 
 namespace volgraph::reference {
 
@@ -42,14 +45,17 @@ struct CloudReferenceSettings {
   double a = 0.5, b = 0.5, c = 0.5, g_forward = 0.8, g_back = -0.3, back_weight = 0.2;
   Vec3 ambient{0, 0, 0};
   int weather_size = 128;  // cloud_weather_map's size: the weather texture's side (texels)
+  // cloud_phase_table's texels when the march reads them (its phase_table input): the phase
+  // per channel from the table instead of the dual-lobe HG.
+  std::optional<physics::CloudPhaseTable> phase_table;
   double seconds = 0;  // the wind's clock: frame / 60 on the GPU; frame 0 here
   // The quadrature (not the GPU's): equal steps over the view segment and toward the sun.
   int view_steps = 2048, light_steps = 128;
 };
 
 // The settings a loaded graph gives: its first cloud_noise's sizes and seed and its first
-// cloud_march's parameters (each pass's defaults where the graph has none), the quadrature
-// of `base`. `params` is LoadedConfig::params (per graph pass).
+// cloud_march's parameters (each pass's defaults where the graph has none), the table of the
+// cloud_phase_table wired into that march's phase_table, the quadrature of `base`. `params` is LoadedConfig::params (per graph pass).
 CloudReferenceSettings cloud_reference_settings(const Graph& graph, const std::vector<std::vector<ParamValue>>& params,
                                                 CloudReferenceSettings base = {});
 

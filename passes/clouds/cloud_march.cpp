@@ -12,9 +12,12 @@
 // coverage and type read there. Variant `transmittance_map` (Schneider & Vos 2015): the
 // sun's optical depth read trilinearly from cloud_shadow_map's optical_depth_layers (inputs
 // sun_optical_depth and sun_optical_depth_view, required there) at the sample's column and
-// altitude, the secondary march only outside the map. Shaders: shaders/cloud_march.comp,
-// cloud_march_weather.comp, cloud_march_transmittance_map.comp,
-// cloud_march_weather_transmittance_map.comp (include/cloud_march_body.glsl).
+// altitude, the secondary march only outside the map. Optional input `phase_table`
+// (cloud_phase_table's, shaders/include/cloud_phase_table.h): the phase per channel read from
+// the table (a Mie phase of droplets) instead of the dual-lobe HG (g_forward, g_back and
+// back_weight then unused). Shaders: shaders/cloud_march.comp, cloud_march_weather.comp,
+// cloud_march_transmittance_map.comp, cloud_march_weather_transmittance_map.comp, and each
+// with _phase_table (include/cloud_march_body.glsl).
 #include <array>
 #include <optional>
 #include <cmath>
@@ -34,6 +37,7 @@
 #include "passes/register_pass.h"
 #include "physics/atmosphere_lighting.h"
 #include "shaders/bindings/cloud_march.comp.h"
+#include "shaders/bindings/cloud_march_phase_table.comp.h"
 #include "shaders/bindings/cloud_march_transmittance_map.comp.h"
 #include "shaders/bindings/cloud_march_weather.comp.h"
 #include "shaders/bindings/cloud_march_weather_transmittance_map.comp.h"
@@ -92,6 +96,8 @@ struct CloudMarchTable : PassTable {
   SlotHandle curl = input("curl", ResourceKind::texture2d, Usage::sampled, "cloud_noise.curl");
   SlotHandle weather = optional_input("weather", ResourceKind::texture2d, Usage::sampled,
                                       "cloud_weather_map.weather: coverage and type per place (unbound: the layer's everywhere)");
+  SlotHandle phase_table = optional_input("phase_table", ResourceKind::texture2d, Usage::sampled,
+                                          "cloud_phase_table.phase: p(θ) per channel (unbound: the dual-lobe HG of g_forward, g_back, back_weight)");
   SlotHandle sun_optical_depth =
       optional_input("sun_optical_depth", ResourceKind::texture3d, Usage::sampled,
                      "cloud_shadow_map.optical_depth_layers (layers > 0): τ toward the sun per column and altitude, for transmittance_map",
@@ -136,6 +142,7 @@ class CloudMarchExecution final : public PassExecution {
 
   void setup(PassSetup& s) override {
     weathered_ = s.bound(t_.weather);
+    tabulated_ = s.bound(t_.phase_table);
     mapped_ = s.variant_is(t_.transmittance_map);
     program_ = plumbing::create_compute_program(s.device, shader_name());
     plumbing::check_wrapped_uniform_mirror<gpu::CloudMarchParams>(program_, cloud_march_shader::params, s.name() + " params");
@@ -156,6 +163,7 @@ class CloudMarchExecution final : public PassExecution {
         bind(shader::noise, c.sampler(rhi::StockSampler::linear_repeat)), bind(shader::clouds, c.view(t_.clouds)),
         bind(shader::cloud_transmittance, c.view(t_.transmittance)), bind(shader::cloud_distance, c.view(t_.distance))};
     if (weathered_) entries.push_back(bind(shaders::cloud_march_weather_comp::weather, c.view(t_.weather)));
+    if (tabulated_) entries.push_back(bind(shaders::cloud_march_phase_table_comp::phase_table, c.view(t_.phase_table)));
     if (mapped_) {
       namespace mapped = shaders::cloud_march_transmittance_map_comp;
       entries.push_back(bind(mapped::sun_optical_depth, c.view(t_.sun_optical_depth)));
@@ -167,10 +175,13 @@ class CloudMarchExecution final : public PassExecution {
   }
 
  private:
-  // The permutation: the weather map bound, the variant transmittance_map.
-  const char* shader_name() const {
-    if (mapped_) return weathered_ ? "cloud_march_weather_transmittance_map.comp" : "cloud_march_transmittance_map.comp";
-    return weathered_ ? "cloud_march_weather.comp" : "cloud_march.comp";
+  // The permutation: the weather map bound, the variant transmittance_map, the phase table bound.
+  std::string shader_name() const {
+    std::string name = "cloud_march";
+    if (weathered_) name += "_weather";
+    if (mapped_) name += "_transmittance_map";
+    if (tabulated_) name += "_phase_table";
+    return name + ".comp";
   }
 
   // The atmosphere's light at the layer's middle altitude (physics/atmosphere_lighting.h),
@@ -230,7 +241,8 @@ class CloudMarchExecution final : public PassExecution {
 
   const CloudMarchTable& t_;
   bool weathered_ = false;  // the weather input bound: cloud_march_weather*.comp
-  bool mapped_ = false;     // the variant transmittance_map: cloud_march*_transmittance_map.comp
+  bool mapped_ = false;     // the variant transmittance_map: cloud_march*_transmittance_map*.comp
+  bool tabulated_ = false;  // the phase_table input bound: cloud_march*_phase_table.comp
   std::optional<uint64_t> light_hash_;
   physics::LightAtAltitude light_;
   plumbing::ComputeProgram program_;

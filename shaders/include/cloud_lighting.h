@@ -1,6 +1,7 @@
 // The cloud layer's lighting at a sample (Schneider & Vos 2015; RTR4 14.4.2): the
 // dual-lobe Henyey–Greenstein phase, Wrenninge et al. 2013's multiple-scattering octaves
-// (RTR4 eq. 14.18) and Schneider & Vos's optional, non-physical powder term.
+// (RTR4 eq. 14.18) — with that phase or a tabulated one (cloud_phase_table.h) — and Schneider &
+// Vos's optional, non-physical powder term.
 //
 // ONE TEXT FOR BOTH SIDES, as shaders/include/cloud_density.h: GLSL includes this file, and
 // C++ includes it inside a namespace with GLM's types (physics/cloud_lighting.h). The HG
@@ -44,6 +45,28 @@ CLOUD_FN float cloud_octaves(float sigma_s, float tau, float cos_theta, float g_
   float weight = 1.0f, depth = 1.0f, spread = 1.0f;  // b^i, a^i, c^i
   for (int i = 0; i < n; ++i) {
     sum += weight * s * cloud_phase(cos_theta, spread * g_forward, spread * g_back, back_weight) * exp(-depth * t);
+    weight *= bb;
+    depth *= aa;
+    spread *= cc;
+  }
+  return sum;
+}
+
+// Wrenninge's octaves (RTR4 eq. 14.18) with a tabulated phase (cloud_phase_table.h): `phase` is
+// the table's p at θ per channel; octave i's phase is mix(1/4π, p, c^i), whose mean cosine
+// is exactly c^i g (the isotropic part has none), as the HG octaves' p(θ, c^i g). The same
+// clamps as cloud_octaves. Radiance per metre per unit sun illuminance, per channel.
+CLOUD_FN vec3 cloud_octaves_tabulated(float sigma_s, float tau, vec3 phase, int octaves, float a, float b, float c) {
+  const float bb = clamp(b, 0.0f, 1.0f);
+  const float aa = min(clamp(a, 0.0f, 1.0f), bb);
+  const float cc = clamp(c, 0.0f, 1.0f);
+  const int n = clamp(octaves, 1, CLOUD_MAX_OCTAVES);
+  const float t = max(tau, 0.0f);
+  const float s = max(sigma_s, 0.0f);
+  vec3 sum = vec3(0.0f);
+  float weight = 1.0f, depth = 1.0f, spread = 1.0f;  // b^i, a^i, c^i
+  for (int i = 0; i < n; ++i) {
+    sum += weight * s * mix(vec3(phase_isotropic()), phase, spread) * exp(-depth * t);
     weight *= bb;
     depth *= aa;
     spread *= cc;

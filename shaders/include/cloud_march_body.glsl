@@ -2,7 +2,9 @@
 // cloud_march_weather.comp with CLOUD_WEATHER_MAP: the weather map bound; the variant
 // transmittance_map by cloud_march_transmittance_map.comp and cloud_march_weather_transmittance_map.comp
 // with CLOUD_TRANSMITTANCE_MAP: the sun's optical depth read from cloud_shadow_map's
-// optical_depth_layers, the secondary march only outside it): per pixel, the view ray through the cloud
+// optical_depth_layers, the secondary march only outside it; with CLOUD_PHASE_TABLE, in the
+// cloud_march*_phase_table.comp wrappers: the phase read from cloud_phase_table's texture
+// instead of the dual-lobe HG): per pixel, the view ray through the cloud
 // layer (Schneider & Vos 2015; RTR4 14.4.2): the segment between the layer's two spheres
 // (clipped by the scene's surface and max_distance), marched in `steps` equal steps with
 // empty-space skipping (coarse steps of 2 × the step on the base density until some is
@@ -19,6 +21,9 @@
 #include "include/cloud_march_params.h"
 #ifdef CLOUD_TRANSMITTANCE_MAP
 #include "include/cloud_shadow_view.h"
+#endif
+#ifdef CLOUD_PHASE_TABLE
+#include "include/cloud_phase_table.h"
 #endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -40,6 +45,9 @@ layout(set = 0, binding = 10) uniform texture2D weather;  // cloud_weather_map.w
 layout(set = 0, binding = 11) uniform texture3D sun_optical_depth;  // cloud_shadow_map.optical_depth_layers: r τ to the layer's top
 layout(set = 0, binding = 12) uniform SunOpticalDepthViewBlock { CloudShadowView view; } sun_optical_depth_view;
 layout(set = 0, binding = 13) uniform sampler map_linear;  // linear, clamp: trilinear within the map
+#endif
+#ifdef CLOUD_PHASE_TABLE
+layout(set = 0, binding = 14) uniform texture2D phase_table;  // cloud_phase_table.phase: rgb p(θ_i), rgba32float (fetched)
 #endif
 
 const float NEGLIGIBLE = 1e-3;    // early termination: below this transmittance nothing behind shows (kept, not zeroed)
@@ -110,6 +118,31 @@ float optical_depth_toward_sun(vec3 p) {
   return sun_optical_depth_at(p);
 }
 
+#ifdef CLOUD_PHASE_TABLE
+// The table's p at cos θ per channel: its two texels around θ mixed (cloud_phase_table.h).
+vec3 phase_table_at(float cos_theta) {
+  const int n = textureSize(sampler2D(phase_table, nearest), 0).x;
+  const float x = cloud_phase_table_position(cos_theta, n);
+  const vec3 lower = texelFetch(sampler2D(phase_table, nearest), ivec2(cloud_phase_table_lower(x), 0), 0).rgb;
+  const vec3 upper = texelFetch(sampler2D(phase_table, nearest), ivec2(cloud_phase_table_upper(x, n), 0), 0).rgb;
+  return cloud_phase_table_mix(lower, upper, x);
+}
+
+// The sun's octaves (RTR4 eq. 14.18) through the table's phase, read once per ray (one θ: the sun is directional).
+vec3 ray_phase;
+void begin_ray_phase(float cos_theta) { ray_phase = phase_table_at(cos_theta); }
+vec3 sun_octaves(float sigma_s, float tau, float cos_theta) {
+  return cloud_octaves_tabulated(sigma_s, tau, ray_phase, params.steps.z, params.octave.x, params.octave.y, params.octave.z);
+}
+#else
+// The sun's octaves (RTR4 eq. 14.18) through the dual-lobe HG.
+void begin_ray_phase(float cos_theta) {}
+vec3 sun_octaves(float sigma_s, float tau, float cos_theta) {
+  return vec3(cloud_octaves(sigma_s, tau, cos_theta, params.lobes.x, params.lobes.y, params.lobes.z, params.steps.z, params.octave.x,
+                            params.octave.y, params.octave.z));
+}
+#endif
+
 // Radiance per metre the cloud sends toward the camera at p (density > 0): the sun through
 // the phase and Wrenninge's octaves (RTR4 eq. 14.18), the powder term when on, and the
 // ambient radiance scattered isotropically (∫ p dω = 1).
@@ -119,9 +152,7 @@ vec3 source(vec3 p, float rho, float cos_theta) {
   if (params.sun.w > 0.5) {
     const float tau = optical_depth_toward_sun(p);
     if (tau < 1e29) {
-      const float lit = cloud_octaves(sigma_s, tau, cos_theta, params.lobes.x, params.lobes.y, params.lobes.z, params.steps.z,
-                                      params.octave.x, params.octave.y, params.octave.z) * cloud_powder(tau, params.octave.w);
-      s += params.sun_irradiance.rgb * lit;
+      s += params.sun_irradiance.rgb * sun_octaves(sigma_s, tau, cos_theta) * cloud_powder(tau, params.octave.w);
     }
   }
   return s;
@@ -164,6 +195,7 @@ void march(vec3 o, vec3 d, float t_in, float t_out, float jitter, inout MarchSum
   const int steps = max(params.steps.x, 1);
   const float dt = (t_out - t_in) / float(steps);
   const float cos_theta = dot(params.sun.xyz, d);  // the light's travel −sun against the scattered −d
+  begin_ray_phase(cos_theta);
   float t = t_in;
   bool coarse = true;
   int empty = 0;

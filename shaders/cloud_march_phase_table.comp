@@ -1,0 +1,5 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// cloud_march: the cloud layer, one coverage and type everywhere; the phase read from cloud_phase_table (CLOUD_PHASE_TABLE).
+#define CLOUD_PHASE_TABLE
+#include "include/cloud_march_body.glsl"
