@@ -182,7 +182,8 @@ Extent extent_of(const SizeSpec& size, ResourceKind kind, Extent output_size, in
     }
     case SizeSpec::Mode::square_param: {
       const uint32_t side = static_cast<uint32_t>(std::max<int64_t>(1, size_param));
-      const uint32_t high = !size.height_param ? side : static_cast<uint32_t>(std::max<int64_t>(1, height));
+      const uint32_t fixed_high = size.fixed_height ? size.fixed_height : side;  // row_of: 1
+      const uint32_t high = !size.height_param ? fixed_high : static_cast<uint32_t>(std::max<int64_t>(1, height));
       const int64_t layers = !size.depth_param ? int64_t{size.absolute.depth} : depth;
       e = {side, high, uint32_t(std::max<int64_t>(1, layers))};
       break;

@@ -80,6 +80,12 @@ SizeSpec SizeSpec::square_layers_of(ParamHandle<int64_t> side, ParamHandle<int64
   return s;
 }
 
+SizeSpec SizeSpec::row_of(ParamHandle<int64_t> width) {
+  SizeSpec s = square_of(width);
+  s.fixed_height = 1;
+  return s;
+}
+
 SizeSpec SizeSpec::rect_of(ParamHandle<int64_t> width, ParamHandle<int64_t> height) {
   SizeSpec s = square_of(width);
   s.height_param = height.index;

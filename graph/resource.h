@@ -23,6 +23,7 @@ struct SizeSpec {
   using ParamIndex = std::optional<uint16_t>;  // an index into the pass's params (PassDecl::params)
   Mode mode = Mode::relative;
   Extent absolute{};             // absolute: all three; relative/square_param: depth only
+  uint32_t fixed_height = 0;     // square_param: a height of its own when not 0 (row_of: 1)
   float scale_x = 1.0f;          // relative
   float scale_y = 1.0f;          // relative
   ParamIndex param;              // square_param: the side; relative: the depth, when set
@@ -51,6 +52,8 @@ struct SizeSpec {
   static SizeSpec square_of(ParamHandle<int64_t> side);
   // A volume: square slices of side `side`, `depth` of them (light-space layers).
   static SizeSpec square_layers_of(ParamHandle<int64_t> side, ParamHandle<int64_t> depth);
+  // One row `width` wide (1D tables: a phase function over angle).
+  static SizeSpec row_of(ParamHandle<int64_t> width);
   // A rectangle: `width` wide, `height` high (lookup tables: 256 × 64).
   static SizeSpec rect_of(ParamHandle<int64_t> width, ParamHandle<int64_t> height);
   // A volume: `width` × `height` slices, `depth` of them (Bruneton's 4D tables packed in 3D).

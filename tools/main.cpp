@@ -69,7 +69,8 @@ std::string size_text(const PassDecl& decl, const SlotDecl& s) {
       if (s.size.divisor_param) out += " / " + name(s.size.divisor_param);
       break;
     case SizeSpec::Mode::square_param:
-      out = !s.size.height_param ? name(s.size.param) + "²" : name(s.size.param) + " × " + name(s.size.height_param);
+      if (s.size.height_param) out = name(s.size.param) + " × " + name(s.size.height_param);
+      else out = s.size.fixed_height ? name(s.size.param) + " × " + std::to_string(s.size.fixed_height) : name(s.size.param) + "²";
       break;
   }
   if (s.kind != ResourceKind::texture3d) return out;

@@ -32,14 +32,13 @@ struct CloudPhaseTableTable : PassTable {
   VariantHandle henyey_greenstein = variant("henyey_greenstein", "one Henyey–Greenstein lobe of g, tabulated alike (for comparisons)");
   // Parameters.
   ParamHandle<int64_t> size = integer("size", 512, 2, 8192, "texels", "the table's texels over θ (u = sqrt(θ/π) at (i + ½)/size)");
-  ParamHandle<int64_t> rows = integer("rows", 1, 1, 1, "texels", "the table's height: one row (a size of its own width only)");
   ParamHandle<double> effective_radius =
       number("effective_radius", 10, 1, 30, "µm", "the droplets' effective radius r_eff (Hansen & Travis 1974's water cloud: 10 µm)");
   ParamHandle<double> effective_variance =
       number("effective_variance", 0.1, 0.02, 0.3, "", "the droplets' effective variance v_eff (Hansen & Travis 1974's water cloud: 0.1)");
   ParamHandle<double> g = number("g", 0.8, -0.998, 0.998, "", "henyey_greenstein: the lobe's mean cosine");
   // Slots.
-  SlotHandle phase = output("phase", ResourceKind::texture2d, Usage::copy_dst, Format::rgba32_float, SizeSpec::rect_of(size, rows),
+  SlotHandle phase = output("phase", ResourceKind::texture2d, Usage::copy_dst, Format::rgba32_float, SizeSpec::row_of(size),
                             "rgb p(θ_i) per channel (1/sr) at θ_i = π((i + ½)/size)², a 1");
 };
 
