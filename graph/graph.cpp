@@ -195,14 +195,20 @@ Extent extent_of(const SizeSpec& size, ResourceKind kind, Extent output_size, in
 
 }  // namespace
 
+// The levels a mip chain of `asked` levels gets at `extent`: at least 1, at most the full chain.
+uint32_t mip_levels_at(Extent extent, int64_t asked) {
+  return uint32_t(std::clamp<int64_t>(asked, 1, full_mip_chain(extent)));
+}
+
 ResourceDesc resolve_slot(const PassDecl& decl, const SlotDecl& slot, Extent output_size, int64_t size_param, int64_t divisor,
-                          int64_t depth, int64_t height) {
+                          int64_t depth, int64_t height, int64_t mips) {
   ResourceDesc d;
   d.kind = slot.kind;
   d.format = slot.format;
   d.persistent = slot.persistent || decl.cached;  // a cached pass keeps its outputs across frames
   d.extent = extent_of(slot.size, slot.kind, output_size, size_param, divisor, depth, height);
   if (slot.size.mode == SizeSpec::Mode::absolute) d.buffer_bytes = slot.size.buffer_bytes;
+  if (slot.kind != ResourceKind::buffer) d.mip_levels = mip_levels_at(d.extent, mips);
   return d;
 }
 
@@ -212,16 +218,18 @@ void resize(Graph& graph, Extent output_size) {
     const SizeRule& rule = r.size_rule;
     if (rule.like != kNone) {
       r.desc.extent = graph.resources[rule.like].desc.extent;
+      r.desc.mip_levels = graph.resources[rule.like].desc.mip_levels;
     } else if (r.previous_of != kNone) {
       r.desc.extent = graph.resources[r.previous_of].desc.extent;
     } else if (rule.set) {
       r.desc.extent = extent_of(rule.size, r.desc.kind, output_size, rule.side, rule.divisor, rule.depth, rule.height);
+      if (r.desc.kind != ResourceKind::buffer) r.desc.mip_levels = mip_levels_at(r.desc.extent, rule.mips);
     }
   }
   // A history is made after the output it follows, but an output shaped like a history
   // (none today) would come earlier: a second sweep settles any such order.
   for (GraphResource& r : graph.resources) {
-    if (r.previous_of != kNone) r.desc.extent = graph.resources[r.previous_of].desc.extent;
+    if (r.previous_of != kNone) r.desc.extent = graph.resources[r.previous_of].desc.extent, r.desc.mip_levels = graph.resources[r.previous_of].desc.mip_levels;
   }
 }
 

@@ -56,6 +56,7 @@ struct SizeRule {
   bool set = false;  // false: the extent is fixed (buffers, graphs built by hand)
   SizeSpec size{};
   int64_t side = 0, divisor = 1, depth = 1, height = 0;  // the values of the size's parameters (resolve_slot)
+  int64_t mips = 1;  // the mip chain's levels asked for (SizeSpec::mip_param), before the extent clamps them
   uint32_t like = kNone;  // shaped like this resource (an output_like slot's input)
 };
 
@@ -123,7 +124,8 @@ void resize(Graph& graph, Extent output_size);
 // its divisor parameter (SizeSpec::divisor_param), `depth`: of its depth parameter
 // (SizeSpec::depth_param), `height`: of its height parameter (SizeSpec::height_param), when
 // it has them.
+// `mips`: of its mip parameter (SizeSpec::mip_param), clamped to the extent's full chain.
 ResourceDesc resolve_slot(const PassDecl& decl, const SlotDecl& slot, Extent output_size, int64_t size_param,
-                          int64_t divisor = 1, int64_t depth = 1, int64_t height = 0);
+                          int64_t divisor = 1, int64_t depth = 1, int64_t height = 0, int64_t mips = 1);
 
 }  // namespace volgraph

@@ -7,10 +7,10 @@
 namespace volgraph {
 namespace {
 
-using DescKey = std::tuple<ResourceKind, Format, uint32_t, uint32_t, uint32_t, uint64_t>;
+using DescKey = std::tuple<ResourceKind, Format, uint32_t, uint32_t, uint32_t, uint64_t, uint32_t>;
 
 DescKey key_of(const ResourceDesc& d) {
-  return {d.kind, d.format, d.extent.width, d.extent.height, d.extent.depth, d.kind == ResourceKind::buffer ? d.buffer_bytes : 0};
+  return {d.kind, d.format, d.extent.width, d.extent.height, d.extent.depth, d.kind == ResourceKind::buffer ? d.buffer_bytes : 0, d.mip_levels};
 }
 
 // The transients that are used, by first use (then index: deterministic).

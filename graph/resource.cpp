@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "graph/resource.h"
 
 #include <array>
@@ -80,6 +81,12 @@ SizeSpec SizeSpec::square_layers_of(ParamHandle<int64_t> side, ParamHandle<int64
   return s;
 }
 
+SizeSpec SizeSpec::with_mips(ParamHandle<int64_t> levels) const {
+  SizeSpec s = *this;
+  s.mip_param = levels.index;
+  return s;
+}
+
 SizeSpec SizeSpec::row_of(ParamHandle<int64_t> width) {
   SizeSpec s = square_of(width);
   s.fixed_height = 1;
@@ -107,16 +114,26 @@ SizeSpec SizeSpec::bytes(uint64_t n) {
 
 std::vector<uint16_t> SizeSpec::params() const {
   std::vector<uint16_t> out;
-  for (const ParamIndex& p : {param, divisor_param, depth_param, height_param}) {
+  for (const ParamIndex& p : {param, divisor_param, depth_param, height_param, mip_param}) {
     if (p) out.push_back(*p);
   }
   return out;
 }
 
+uint32_t full_mip_chain(Extent extent) {
+  uint32_t largest = std::max({extent.width, extent.height, extent.depth}), levels = 1;
+  while (largest > 1) largest >>= 1, ++levels;
+  return levels;
+}
+
 uint64_t content_bytes(const ResourceDesc& desc) {
   if (desc.kind == ResourceKind::buffer) return desc.buffer_bytes;
-  return uint64_t{format_info(desc.format).bytes_per_texel} * desc.extent.width * desc.extent.height *
-         desc.extent.depth;
+  uint64_t texels = 0;
+  for (uint32_t level = 0; level < std::max(1u, desc.mip_levels); ++level) {
+    texels += uint64_t{std::max(1u, desc.extent.width >> level)} * std::max(1u, desc.extent.height >> level) *
+              std::max(1u, desc.extent.depth >> level);
+  }
+  return uint64_t{format_info(desc.format).bytes_per_texel} * texels;
 }
 
 }  // namespace volgraph

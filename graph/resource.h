@@ -24,6 +24,7 @@ struct SizeSpec {
   Mode mode = Mode::relative;
   Extent absolute{};             // absolute: all three; relative/square_param: depth only
   uint32_t fixed_height = 0;     // square_param: a height of its own when not 0 (row_of: 1)
+  ParamIndex mip_param;          // textures: a mip chain of this parameter's levels (clamped to the extent's full chain), when set
   float scale_x = 1.0f;          // relative
   float scale_y = 1.0f;          // relative
   ParamIndex param;              // square_param: the side; relative: the depth, when set
@@ -59,6 +60,9 @@ struct SizeSpec {
   // A volume: `width` × `height` slices, `depth` of them (Bruneton's 4D tables packed in 3D).
   static SizeSpec volume_of(ParamHandle<int64_t> width, ParamHandle<int64_t> height, ParamHandle<int64_t> depth);
   static SizeSpec bytes(uint64_t n);
+  // This size with a mip chain of `levels` levels (level i max(1, extent >> i); no more
+  // than the extent's full chain): a texture a pass filters down (generate_mips).
+  SizeSpec with_mips(ParamHandle<int64_t> levels) const;
   // The parameters the size is made of (for checks: each must be one its pass declares).
   std::vector<uint16_t> params() const;
 };
@@ -71,7 +75,11 @@ struct ResourceDesc {
   Extent extent{};
   uint64_t buffer_bytes = 0;
   bool persistent = false;  // lives across frames (history, LUT cache): never aliased
+  uint32_t mip_levels = 1;  // textures: level i is max(1, extent >> i)
 };
+
+// The levels of a full mip chain of `extent` (down to 1 × 1 × 1).
+uint32_t full_mip_chain(Extent extent);
 
 // Bytes the resource's contents take, before any alignment a backend adds.
 uint64_t content_bytes(const ResourceDesc& desc);

@@ -791,8 +791,9 @@ class Wiring {
 
   ResourceDesc output_desc(uint32_t p, const SlotDecl& slot, SizeRule* rule) {
     const PassDecl& decl = *decls_[p];
-    int64_t side = 0, divisor = 1, depth = 1, height = 0;
+    int64_t side = 0, divisor = 1, depth = 1, height = 0, mips = 1;
     const std::vector<ParamValue>& values = params_[p];
+    if (slot.size.mip_param) mips = std::get<int64_t>(values[*slot.size.mip_param]);
     if (slot.size.param) side = std::get<int64_t>(values[*slot.size.param]);
     if (slot.size.height_param) height = std::get<int64_t>(values[*slot.size.height_param]);
     if (slot.size.depth_param) depth = std::get<int64_t>(values[*slot.size.depth_param]);
@@ -803,8 +804,8 @@ class Wiring {
       const auto it = sizes_resolved_.find({config_.passes[p].name, slot.name});
       if (it != sizes_resolved_.end()) effective.size = it->second;
     }
-    *rule = {effective.kind != ResourceKind::buffer, effective.size, side, divisor, depth, height, kNone};
-    return resolve_slot(decl, effective, config_.output_size, side, divisor, depth, height);
+    *rule = {effective.kind != ResourceKind::buffer, effective.size, side, divisor, depth, height, mips, kNone};
+    return resolve_slot(decl, effective, config_.output_size, side, divisor, depth, height, mips);
   }
 
   const Config& config_;

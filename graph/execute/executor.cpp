@@ -356,6 +356,27 @@ Texels Executor::read_texture(uint32_t r) {
   return std::move(read_resources({&r, 1}).front().texels);
 }
 
+Texels Executor::read_texture_level(uint32_t r, uint32_t level) {
+  const ResourceDesc& d = graph_.resources[r].desc;
+  if (!readable_as_texels(d)) throw not_texels(d);
+  if (level >= d.mip_levels) throw DeviceError(DeviceError::Kind::other, d.name + " has no mip level " + std::to_string(level));
+  check_readable(r);
+  ResourceDesc one = d;  // the level as a texture of its own
+  one.extent = {std::max(1u, d.extent.width >> level), std::max(1u, d.extent.height >> level), std::max(1u, d.extent.depth >> level)};
+  one.mip_levels = 1;
+  const rhi::BufferId buffer = device_.create_buffer({"read-back level", (readback_bytes(one) + 15) / 16 * 16, rhi::buffer_usage::copy_dst});
+  auto encoder = device_.create_command_encoder("read back a level");
+  encoder->barrier(copy_source_transitions({&r, 1}, true));
+  encoder->copy_texture_to_buffer(resources_->texture(r), buffer, 0, level);
+  const std::vector<rhi::ResourceBarrier> back = copy_source_transitions({&r, 1}, false);
+  if (!back.empty()) encoder->barrier(back);
+  device_.submit(std::move(encoder));
+  std::vector<std::byte> bytes = device_.read_buffer(buffer);
+  device_.destroy(buffer);
+  bytes.resize(readback_bytes(one));
+  return texels_of(one, bytes);
+}
+
 std::vector<std::byte> Executor::read_buffer(uint32_t r) {
   const ResourceDesc& d = graph_.resources[r].desc;
   if (d.kind != ResourceKind::buffer) throw DeviceError(DeviceError::Kind::other, d.name + " is not a buffer");

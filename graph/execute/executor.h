@@ -69,6 +69,8 @@ class Executor {
   // one channel is copied to RGB) after the last frame.
   Texels read_output(size_t index) { return read_texture(graph_.outputs.at(index).resource); }
   Texels read_texture(uint32_t resource);
+  // One level of a texture's mip chain (ResourceDesc::mip_levels), as read_texture reads level 0.
+  Texels read_texture_level(uint32_t resource, uint32_t level);
   std::vector<std::byte> read_buffer(uint32_t resource);
   // Several resources (2D textures as read_texture takes, buffers) after the last
   // frame, in one submission rather than one wait on the device each.

@@ -59,6 +59,8 @@ class PassSetup {
   Extent extent(SlotHandle slot) const { return desc(slot).extent; }
   rhi::TextureId texture(SlotHandle slot) const { return resources_.texture(resource(slot)); }
   rhi::TextureViewId view(SlotHandle slot) const { return resources_.view(resource(slot)); }
+  // One mip level of the slot's texture (storage images take one level: generate_mips).
+  rhi::TextureViewId view(SlotHandle slot, uint32_t level) const { return resources_.level_view(resource(slot), level); }
   rhi::BufferId buffer(SlotHandle slot) const { return resources_.buffer(resource(slot)); }
   // The integer parameter `param` of the pass that makes the resource wired to `slot`: a
   // reader takes its input's shape from its producer (one source for it, never a copy of

@@ -17,7 +17,10 @@ class GraphResourceSet {
   virtual RequirementsFn requirements() const = 0;
   virtual void bind(const Plan& plan) = 0;
   virtual TextureId texture(uint32_t resource) const = 0;
-  virtual TextureViewId view(uint32_t resource) const = 0;  // none for copy-only textures
+  virtual TextureViewId view(uint32_t resource) const = 0;  // none for copy-only textures; every mip level
+  // One mip level alone (storage images and attachments take one level); level 0 of a
+  // texture without a chain is view().
+  virtual TextureViewId level_view(uint32_t resource, uint32_t level) const = 0;
   virtual BufferId buffer(uint32_t resource) const = 0;
   // The two resources trade their objects (a history pair, every frame; graph.h).
   virtual void swap(uint32_t a, uint32_t b) = 0;

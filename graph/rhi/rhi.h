@@ -274,7 +274,8 @@ class CommandEncoder {
 
   // Whole-texture copies, rows tightly packed in the buffer.
   virtual void copy_buffer_to_texture(BufferId source, uint64_t offset, TextureId destination) = 0;
-  virtual void copy_texture_to_buffer(TextureId source, BufferId destination, uint64_t offset) = 0;
+  // One mip level (`mip_level`; 0: the texture without a chain) into the buffer at `offset`, rows tightly packed.
+  virtual void copy_texture_to_buffer(TextureId source, BufferId destination, uint64_t offset, uint32_t mip_level = 0) = 0;
   virtual void copy_texture_to_texture(TextureId source, TextureId destination) = 0;  // same size and format
   // From the source's start to `destination_offset` (read-backs gather several resources).
   virtual void copy_buffer_to_buffer(BufferId source, BufferId destination, uint64_t size,

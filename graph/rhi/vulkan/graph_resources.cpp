@@ -63,7 +63,7 @@ void GraphResources::create(uint32_t r, VkImageUsageFlags image_usage, VkBufferU
     info.imageType = d.kind == ResourceKind::texture3d ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
     info.format = to_vk(d.format);
     info.extent = {d.extent.width, d.extent.height, d.kind == ResourceKind::texture3d ? d.extent.depth : 1};
-    info.mipLevels = 1;
+    info.mipLevels = std::max(1u, d.mip_levels);
     info.arrayLayers = 1;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -129,9 +129,16 @@ void GraphResources::create_view(uint32_t r) {
   info.image = o.image;
   info.viewType = d.kind == ResourceKind::texture3d ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
   info.format = to_vk(d.format);
-  info.subresourceRange = {aspect_of(d.format), 0, 1, 0, 1};
+  info.subresourceRange = {aspect_of(d.format), 0, std::max(1u, d.mip_levels), 0, 1};
   check(vkCreateImageView(context_.device(), &info, nullptr, &o.view), "vkCreateImageView");
   name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(o.view), d.name);
+  for (uint32_t level = 0; d.mip_levels > 1 && level < d.mip_levels; ++level) {
+    info.subresourceRange = {aspect_of(d.format), level, 1, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    check(vkCreateImageView(context_.device(), &info, nullptr, &view), "vkCreateImageView");
+    name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view), d.name + " level " + std::to_string(level));
+    o.level_views.push_back(view);
+  }
 }
 
 void GraphResources::name(VkObjectType type, uint64_t handle, const std::string& text) const {
@@ -143,6 +150,7 @@ GraphResources::~GraphResources() {
   vkDeviceWaitIdle(device);
   for (const Object& o : objects_) {
     if (o.view) vkDestroyImageView(device, o.view, nullptr);
+    for (VkImageView level : o.level_views) vkDestroyImageView(device, level, nullptr);
     if (o.image) vkDestroyImage(device, o.image, nullptr);
     if (o.buffer) vkDestroyBuffer(device, o.buffer, nullptr);
   }

@@ -32,6 +32,11 @@ class GraphResources {
   VkImage image(uint32_t resource) const { return objects_[resource].image; }
   // VK_NULL_HANDLE for images only ever copied (views need a shader or attachment usage).
   VkImageView view(uint32_t resource) const { return objects_[resource].view; }
+  // One level of a mip chain (ResourceDesc::mip_levels > 1); VK_NULL_HANDLE without a chain.
+  VkImageView level_view(uint32_t resource, uint32_t level) const {
+    const std::vector<VkImageView>& levels = objects_[resource].level_views;
+    return level < levels.size() ? levels[level] : VK_NULL_HANDLE;
+  }
   VkBuffer buffer(uint32_t resource) const { return objects_[resource].buffer; }
   // Bytes allocated for the plan's heaps (transients) and for persistent resources.
   uint64_t transient_bytes() const { return transient_bytes_; }
@@ -40,7 +45,8 @@ class GraphResources {
  private:
   struct Object {
     VkImage image = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;  // made once the image is bound
+    VkImageView view = VK_NULL_HANDLE;  // made once the image is bound: every mip level
+    std::vector<VkImageView> level_views;  // a mip chain's levels, one view each
     VkBuffer buffer = VK_NULL_HANDLE;
     VkImageUsageFlags usage = 0;
     VkMemoryRequirements requirements{};

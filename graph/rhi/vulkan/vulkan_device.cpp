@@ -245,9 +245,9 @@ class VulkanEncoder final : public rhi::CommandEncoder {
     const VkBufferCopy region{0, destination_offset, size};
     vkCmdCopyBuffer(cmd_, device_.buffer(source).buffer, device_.buffer(destination).buffer, 1, &region);
   }
-  void copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset) override {
+  void copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset, uint32_t mip_level = 0) override {
     const auto& t = device_.texture(source);
-    const VkBufferImageCopy region = whole_level(t.desc, offset);
+    const VkBufferImageCopy region = whole_level(t.desc, offset, mip_level);
     vkCmdCopyImageToBuffer(cmd_, t.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, device_.buffer(destination).buffer, 1, &region);
   }
 
@@ -695,6 +695,7 @@ class VulkanGraphResources final : public rhi::GraphResourceSet {
     resources_.bind(plan);
     textures_.assign(graph_.resources.size(), {});
     views_.assign(graph_.resources.size(), {});
+    level_views_.assign(graph_.resources.size(), {});
     buffers_.assign(graph_.resources.size(), {});
     for (uint32_t r = 0; r < graph_.resources.size(); ++r) {
       if (plan.lifetimes[r].first == kNone) continue;
@@ -703,17 +704,25 @@ class VulkanGraphResources final : public rhi::GraphResourceSet {
         buffers_[r] = device_.import_buffer(resources_.buffer(r), d.buffer_bytes);
         continue;
       }
-      textures_[r] = device_.import_texture(resources_.image(r), {d.name, d.kind, d.format, d.extent, 0});
+      textures_[r] = device_.import_texture(resources_.image(r), {d.name, d.kind, d.format, d.extent, 0, d.mip_levels});
       if (resources_.view(r)) views_[r] = device_.import_view(resources_.view(r), textures_[r]);
+      for (uint32_t level = 0; resources_.level_view(r, level); ++level) {
+        level_views_[r].push_back(device_.import_view(resources_.level_view(r, level), textures_[r]));
+      }
     }
   }
 
   rhi::TextureId texture(uint32_t r) const override { return textures_.at(r); }
   rhi::TextureViewId view(uint32_t r) const override { return views_.at(r); }
+  rhi::TextureViewId level_view(uint32_t r, uint32_t level) const override {
+    const std::vector<rhi::TextureViewId>& levels = level_views_.at(r);
+    return levels.empty() && level == 0 ? views_.at(r) : levels.at(level);
+  }
   rhi::BufferId buffer(uint32_t r) const override { return buffers_.at(r); }
   void swap(uint32_t a, uint32_t b) override {
     std::swap(textures_.at(a), textures_.at(b));
     std::swap(views_.at(a), views_.at(b));
+    std::swap(level_views_.at(a), level_views_.at(b));
     std::swap(buffers_.at(a), buffers_.at(b));
   }
 
@@ -723,6 +732,7 @@ class VulkanGraphResources final : public rhi::GraphResourceSet {
   GraphResources resources_;
   std::vector<rhi::TextureId> textures_;
   std::vector<rhi::TextureViewId> views_;
+  std::vector<std::vector<rhi::TextureViewId>> level_views_;  // a mip chain's levels
   std::vector<rhi::BufferId> buffers_;
 };
 

@@ -149,16 +149,18 @@ void WebGpuEncoder::update_buffer(rhi::BufferId buffer, uint64_t offset, std::sp
   staging_.push_back(staging);
 }
 
-WebGpuEncoder::RowCopy WebGpuEncoder::rows_of(rhi::TextureId id) const {
+WebGpuEncoder::RowCopy WebGpuEncoder::rows_of(rhi::TextureId id, uint32_t mip_level) const {
   const WebGpuDevice::Texture& t = device_.texture(id);
   RowCopy r;
   r.texture.texture = t.texture;
+  r.texture.mipLevel = mip_level;
   r.texture.aspect = copy_aspect(t.desc.format);
-  const uint32_t depth = t.desc.kind == ResourceKind::texture3d ? t.desc.size.depth : 1;
-  r.extent = {t.desc.size.width, t.desc.size.height, depth};
-  r.row_bytes = t.desc.size.width * format_info(t.desc.format).bytes_per_texel;
+  const uint32_t width = std::max(1u, t.desc.size.width >> mip_level), height = std::max(1u, t.desc.size.height >> mip_level);
+  const uint32_t depth = t.desc.kind == ResourceKind::texture3d ? std::max(1u, t.desc.size.depth >> mip_level) : 1;
+  r.extent = {width, height, depth};
+  r.row_bytes = width * format_info(t.desc.format).bytes_per_texel;
   r.padded_bytes = (r.row_bytes + kCopyRowAlignment - 1) / kCopyRowAlignment * kCopyRowAlignment;
-  r.rows = t.desc.size.height * depth;
+  r.rows = height * depth;
   return r;
 }
 
@@ -191,8 +193,8 @@ wgpu::TexelCopyBufferInfo WebGpuEncoder::copy_buffer_for(const RowCopy& r, const
   return info;
 }
 
-void WebGpuEncoder::copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset) {
-  const RowCopy r = rows_of(source);
+void WebGpuEncoder::copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset, uint32_t mip_level) {
+  const RowCopy r = rows_of(source, mip_level);
   const wgpu::Buffer& out = device_.buffer(destination).buffer;
   const wgpu::TexelCopyBufferInfo info = copy_buffer_for(r, out, offset);
   encoder_.CopyTextureToBuffer(&r.texture, &info, &r.extent);

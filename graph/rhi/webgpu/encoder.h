@@ -45,7 +45,7 @@ class WebGpuEncoder final : public rhi::CommandEncoder {
   void update_buffer(rhi::BufferId buffer, uint64_t offset, std::span<const std::byte> data) override;
 
   void copy_buffer_to_texture(rhi::BufferId source, uint64_t offset, rhi::TextureId destination) override;
-  void copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset) override;
+  void copy_texture_to_buffer(rhi::TextureId source, rhi::BufferId destination, uint64_t offset, uint32_t mip_level = 0) override;
   void copy_texture_to_texture(rhi::TextureId source, rhi::TextureId destination) override;
   void copy_buffer_to_buffer(rhi::BufferId source, rhi::BufferId destination, uint64_t size,
                              uint64_t destination_offset) override;
@@ -56,7 +56,7 @@ class WebGpuEncoder final : public rhi::CommandEncoder {
   bool in_pass() const { return bool(compute_) || bool(render_); }
   // A texture's rows, tightly packed in a buffer and 256-byte aligned in a staging one.
   struct RowCopy;
-  RowCopy rows_of(rhi::TextureId texture) const;
+  RowCopy rows_of(rhi::TextureId texture, uint32_t mip_level = 0) const;
   wgpu::TexelCopyBufferInfo copy_buffer_for(const RowCopy& rows, const wgpu::Buffer& buffer, uint64_t offset);
   void copy_rows(const wgpu::Buffer& from, uint64_t from_offset, uint64_t from_stride, const wgpu::Buffer& to,
                  uint64_t to_offset, uint64_t to_stride, const RowCopy& rows);

@@ -60,9 +60,11 @@ wgpu::BufferUsage buffer_usage(uint32_t rhi_usage) {
 wgpu::TextureUsage texture_usage(Usage usage) {
   switch (usage) {
     case Usage::sampled: return wgpu::TextureUsage::TextureBinding;
+    // A shader's read-only storage image reaches Dawn as a texture binding (layout_entry):
+    // the storage that reads may bind one level that way.
     case Usage::storage_read:
-    case Usage::storage_write:
-    case Usage::storage_read_write: return wgpu::TextureUsage::StorageBinding;
+    case Usage::storage_read_write: return wgpu::TextureUsage::StorageBinding | wgpu::TextureUsage::TextureBinding;
+    case Usage::storage_write: return wgpu::TextureUsage::StorageBinding;
     case Usage::color_attachment:
     case Usage::color_attachment_load:
     case Usage::depth_attachment:

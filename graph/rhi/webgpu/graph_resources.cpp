@@ -39,6 +39,7 @@ WebGpuGraphResources::WebGpuGraphResources(WebGpuDevice& device, const Graph& gr
 void WebGpuGraphResources::swap(uint32_t a, uint32_t b) {
   std::swap(textures_.at(a), textures_.at(b));
   std::swap(views_.at(a), views_.at(b));
+  std::swap(level_views_.at(a), level_views_.at(b));
   std::swap(buffers_.at(a), buffers_.at(b));
 }
 
@@ -46,6 +47,7 @@ void WebGpuGraphResources::bind(const Plan& plan) {
   const ResourcePool pool = pool_resources(graph_, plan);
   textures_.assign(graph_.resources.size(), {});
   views_.assign(graph_.resources.size(), {});
+  level_views_.assign(graph_.resources.size(), {});
   buffers_.assign(graph_.resources.size(), {});
   for (uint32_t i = 0; i < pool.objects.size(); ++i) create_object(pool.objects[i], i);
 }
@@ -62,27 +64,36 @@ void WebGpuGraphResources::create_object(const PooledObject& object, uint32_t in
   const std::string label = d.name + " (pooled object " + std::to_string(index) + ")";
   rhi::TextureId texture;
   rhi::TextureViewId view;
+  std::vector<rhi::TextureViewId> level_views;
   rhi::BufferId buffer;
   if (d.kind == ResourceKind::buffer) {
     const wgpu::BufferUsage usage = buffer_usage == wgpu::BufferUsage::None ? wgpu::BufferUsage::CopyDst : buffer_usage;
     buffer = device_.add_buffer(device_.make_buffer(label, d.buffer_bytes, usage), d.buffer_bytes);
   } else {
-    rhi::TextureDesc desc{label, d.kind, d.format, d.extent, 0, 1};
+    rhi::TextureDesc desc{label, d.kind, d.format, d.extent, 0, std::max(1u, d.mip_levels)};
     wgpu::TextureDescriptor descriptor;
     descriptor.label = std::string_view(label);
     descriptor.usage = texture_usage == wgpu::TextureUsage::None ? wgpu::TextureUsage::CopyDst : texture_usage;
     descriptor.dimension = dimension_of(d.kind);
     descriptor.size = {d.extent.width, d.extent.height, d.kind == ResourceKind::texture3d ? d.extent.depth : 1};
     descriptor.format = to_wgpu(d.format);
+    descriptor.mipLevelCount = std::max(1u, d.mip_levels);
     const wgpu::Texture made = device_.make_texture(descriptor);
     texture = device_.add_texture(made, desc);
     if (texture_usage & kViewable) view = device_.add_view(made.CreateView());
+    for (uint32_t level = 0; (texture_usage & kViewable) && d.mip_levels > 1 && level < d.mip_levels; ++level) {
+      wgpu::TextureViewDescriptor one;
+      one.baseMipLevel = level;
+      one.mipLevelCount = 1;
+      level_views.push_back(device_.add_view(made.CreateView(&one)));
+    }
   }
   (object.persistent ? created_.persistent_objects : created_.transient_objects) += 1;
   if (!object.persistent) created_.transient_bytes += estimate_requirements(d).size;
   for (const uint32_t r : object.occupants) {
     textures_[r] = texture;
     views_[r] = view;
+    level_views_[r] = level_views;
     buffers_[r] = buffer;
   }
 }

@@ -27,6 +27,10 @@ class WebGpuGraphResources final : public rhi::GraphResourceSet {
   void bind(const Plan& plan) override;
   rhi::TextureId texture(uint32_t resource) const override { return textures_.at(resource); }
   rhi::TextureViewId view(uint32_t resource) const override { return views_.at(resource); }
+  rhi::TextureViewId level_view(uint32_t resource, uint32_t level) const override {
+    const std::vector<rhi::TextureViewId>& levels = level_views_.at(resource);
+    return levels.empty() && level == 0 ? views_.at(resource) : levels.at(level);
+  }
   rhi::BufferId buffer(uint32_t resource) const override { return buffers_.at(resource); }
   void swap(uint32_t a, uint32_t b) override;
 
@@ -47,6 +51,7 @@ class WebGpuGraphResources final : public rhi::GraphResourceSet {
   std::vector<wgpu::BufferUsage> buffer_usage_;
   std::vector<rhi::TextureId> textures_;  // per graph resource: its pooled object's
   std::vector<rhi::TextureViewId> views_;
+  std::vector<std::vector<rhi::TextureViewId>> level_views_;  // a mip chain's levels, one view each (storage takes one)
   std::vector<rhi::BufferId> buffers_;
   Created created_;
 };

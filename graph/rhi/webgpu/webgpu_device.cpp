@@ -38,6 +38,13 @@ wgpu::BindGroupLayoutEntry layout_entry(const rhi::LayoutEntry& e) {
       out.sampler.type = e.filtered ? wgpu::SamplerBindingType::Filtering : wgpu::SamplerBindingType::NonFiltering;
       break;
     case rhi::BindingType::storage_texture:
+      // Dawn's SPIR-V reader (Tint) makes a read-only storage image (imageLoad only) a
+      // texture it loads from: the layout must say so (a level of a mip chain, generate_mips).
+      if (e.storage_access == rhi::StorageAccess::read_only) {
+        out.texture.sampleType = wgpu::TextureSampleType::UnfilterableFloat;
+        out.texture.viewDimension = view_dimension_of(e.texture_kind);
+        break;
+      }
       out.storageTexture.access = to_wgpu(e.storage_access);
       out.storageTexture.format = to_wgpu(e.storage_format);
       out.storageTexture.viewDimension = view_dimension_of(e.texture_kind);
