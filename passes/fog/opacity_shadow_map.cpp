@@ -1,7 +1,9 @@
 // opacity_shadow_map (Kim & Neumann 2001, "Opacity shadow maps", kept as optical depth):
 // volumetric shadows of the local media volumes for the light a shadow_map renders. Over
 // that map's light view, `resolution`² columns (one per light ray) × `layers` layers from
-// its near plane to its far plane; each texel holds the volumes' optical depth τ from the
+// its near plane to its far plane — or, variant `deep` (deep opacity maps, Yuksel & Keyser
+// 2008), from the column's first medium at a fixed spacing, so the layers spend their
+// resolution inside the media; each texel holds the volumes' optical depth τ from the
 // light to the layer's centre, marched once per column. froxel_scatter and scene read
 // e^(−τ) with one trilinear lookup instead of marching through the volumes toward the
 // light from every point they light; the global and height fog they take in closed form
@@ -43,6 +45,9 @@ struct OpacityShadowMapTable : PassTable {
   // Variants.
   VariantHandle layered =
       variant("layered", "`layers` evenly spaced layers along each light ray, from the view's near plane to its far plane");
+  VariantHandle deep = variant("deep",
+                               "deep opacity maps (Yuksel & Keyser 2008): `layers` layers `layer_spacing` apart along each light ray, "
+                               "from where it first enters a media volume's shape; beyond the last, its τ");
   // Parameters.
   ParamHandle<int64_t> resolution = integer("resolution", 64, 8, 4096, "texels", "columns per side of the light view");
   ParamHandle<int64_t> layers = integer("layers", 32, 1, 512, "", "layers along each light ray");
@@ -50,11 +55,13 @@ struct OpacityShadowMapTable : PassTable {
   ParamHandle<int64_t> light_steps = integer("light_steps", 16, 0, 256, "",
                                              "march steps from the view's near plane back toward the light (media outside the view)");
   ParamHandle<double> distance = number("distance", 50, 0.01, 1e5, "m", "how far that march goes toward a directional light");
+  ParamHandle<double> layer_spacing = number("layer_spacing", 0.25, 1e-4, 1e4, "m", "deep: the distance between two layers' centres");
   // Slots.
   SlotHandle light_view =
       input("light_view", ResourceKind::buffer, Usage::uniform_read, "the shadow map's view (shadow_map.light_view)");
   SlotHandle optical_depth = output("optical_depth", ResourceKind::texture3d, Usage::storage_write, Format::rgba16_float,
-                                    SizeSpec::square_layers_of(resolution, layers), "τ rgb from the light to each layer's centre");
+                                    SizeSpec::square_layers_of(resolution, layers),
+                                    "τ rgb from the light to each layer's centre; a: where the column's layers lie (opacity_shadow.glsl)");
 };
 
 class OpacityShadowMapExecution final : public PassExecution {
@@ -67,8 +74,8 @@ class OpacityShadowMapExecution final : public PassExecution {
     plumbing::check_wrapped_uniform_mirror<gpu::FogFrame>(program_, 0, 0, s.name() + " frame");
     plumbing::check_wrapped_uniform_mirror<plumbing::ShadowViewBlock>(program_, 0, 1, s.name() + " light_view");
     frame_ = s.device.create_buffer({s.name() + " frame", sizeof(gpu::FogFrame), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
-    const gpu::OpacityParams params{{int32_t(s.param(t_.steps_per_layer)), int32_t(s.param(t_.light_steps)), 0, 0},
-                                  {float(s.param(t_.distance)), 0, 0, 0}};
+    const gpu::OpacityParams params{{int32_t(s.param(t_.steps_per_layer)), int32_t(s.param(t_.light_steps)), s.variant_is(t_.deep) ? 1 : 0, 0},
+                                    {float(s.param(t_.distance)), float(s.param(t_.layer_spacing)), 0, 0}};
     params_ = plumbing::create_shared_uniform_block(s.device, program_, opacity_shadow_map_shader::params, s.name() + " params", params);
   }
 

@@ -5,8 +5,8 @@
 
 GPU_BEGIN
 GPU_STRUCT(OpacityParams) {
-  ivec4 steps;     // x: per layer, y: from the column's start toward the light
-  vec4 distances;  // x: how far the march toward a directional light goes (m)
+  ivec4 steps;     // x: per layer, y: from the column's start toward the light, z: 1 deep layers (Yuksel & Keyser 2008), 0 regular
+  vec4 distances;  // x: how far the march toward a directional light goes (m), y: the deep layers' spacing Δ (m)
 };
 GPU_END
 

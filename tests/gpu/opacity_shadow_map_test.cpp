@@ -71,6 +71,61 @@ TEST_P(OpacityShadowMap, TheOpacityShadowMapDimsSurfacesUnderTheMedia) {
   EXPECT_GT(checked[1], 20u);
 }
 
+// Deep opacity maps (Yuksel & Keyser 2008): a homogeneous box (σa 1, 2 m tall) lit from
+// straight above, its light view fitted to it. Every column through the box enters it at its top, so
+// deep layer k lies kΔ below it and holds τ = σt·kΔ exactly (Δ 0.25 m, 8 layers: all inside
+// the box, each march segment wholly in the medium; 1e-3 relative: fp16). Layer 0's alpha
+// records the layers' start and layer 1's their span, as fractions of the column: layer 0's
+// centre start + span/2n lies on the box's top, which the regular map's τ places too.
+TEST_P(OpacityShadowMap, TheDeepMapsLayersStartAtTheFirstMediumOfEachColumn) {
+  const auto map_of = [&](const char* variant) {
+    std::ostringstream text;
+    text << R"({ "output": { "size": [8, 8] },
+    "scene": { "camera": )" << kCameraAtTheLayer << R"(,
+      "media": { "volumes": [ { "shape": "box", "size": [4, 2, 4], "sigma_s": [0, 0, 0], "sigma_a": [1, 1, 1],
+                                "transform": { "translate": [0, 1, -2] } } ] },
+      "lights": [ { "type": "directional", "direction": [0, -1, 0], "irradiance": [3, 3, 3] } ] },
+    "graph": { "passes": [
+      { "name": "sun_shadow", "type": "shadow_map", "params": { "resolution": 64 } },
+      { "name": "media_shadow", "type": "opacity_shadow_map", "variant": ")" << variant << R"(",
+        "params": { "resolution": 8, "layers": 8, "steps_per_layer": 4, "layer_spacing": 0.25 },
+        "inputs": { "light_view": "sun_shadow.light_view" } } ],
+      "outputs": ["media_shadow.optical_depth"] } })";
+    const LoadedConfig config = load_config_text("deep.json", text.str(), registry_);
+    return render(config);
+  };
+  const Texels deep = map_of("deep");
+  ASSERT_EQ(deep.depth, 8u);
+  const uint32_t n = deep.depth, columns = deep.width * deep.height;
+  uint32_t through_the_box = 0;
+  for (uint32_t column = 0; column < columns; ++column) {
+    // A column that misses the box (the view's margin around it) holds τ 0 throughout.
+    const bool hits = deep.rgba[4 * (size_t(n - 1) * columns + column)] > 0;
+    through_the_box += hits;
+    for (uint32_t k = 0; k < n; ++k) {
+      const size_t texel = 4 * (size_t(k) * columns + column);
+      const double want = hits ? 1.0 * 0.25 * k : 0.0;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(deep.rgba[texel + c], want, 1e-3 * want + 1e-4) << "column " << column << " layer " << k;
+    }
+    const double start = deep.rgba[4 * column + 3], span = deep.rgba[4 * (size_t(columns) + column) + 3];
+    EXPECT_GT(span, 0.0) << column;
+    // Layer 0's centre (the box's top) as a fraction of the column, by the record.
+    const double top = start + span / (2.0 * n);
+    EXPECT_GE(top, -1e-3) << column;
+    EXPECT_LT(top, 1.0) << column;
+    // The record's spacing: the span is n·Δ of the column, the same for every column of a
+    // directional light's (orthographic) view.
+    EXPECT_NEAR(span, deep.rgba[4 * (size_t(columns) + 0) + 3], 1e-3 * span) << column;
+  }
+  EXPECT_GE(through_the_box, 4u);  // the central columns at least
+  // The regular map's record: start 0, span 1 (its texture coordinate is the fraction itself).
+  const Texels regular = map_of("layered");
+  for (uint32_t column = 0; column < columns; ++column) {
+    EXPECT_EQ(regular.rgba[4 * column + 3], 0.0f) << column;
+    EXPECT_EQ(regular.rgba[4 * (size_t(columns) + column) + 3], 1.0f) << column;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, OpacityShadowMap, ::testing::ValuesIn(gpu_backends()), backend_test_name);
 
 }  // namespace
