@@ -18,6 +18,17 @@ namespace volgraph::physics {
 template <typename Real>
 using Vec3Of = std::array<Real, 3>;
 
+// The level of a mip chain of what lies behind whose texels span the cone a rough interface
+// spreads the refracted rays into (HDRP's and Frostbite's rough refraction): α = roughness²,
+// turned by 1 − 1/η, over the path behind, seen at `pixel_angle` rad a pixel; log2 of the
+// footprint's width in pixels, in [0, 16] (16: past any chain). Twin of shaders/include/translucency.glsl's.
+template <typename Real>
+Real refraction_blur_lod(Real roughness, Real ior, Real path_behind, Real distance_behind, Real pixel_angle) {
+  const Real width = Real(2) * roughness * roughness * (Real(1) - Real(1) / std::max(ior, Real(1))) * std::max(path_behind, Real(0));
+  if (!(width > 0) || !(distance_behind > 0) || !(pixel_angle > 0)) return Real(0);
+  return std::clamp(std::log2(width / (distance_behind * pixel_angle)), Real(0), Real(16));
+}
+
 // Reflectance at normal incidence between media of indices n1 and n2: ((n1 − n2)/(n1 + n2))²
 // (RTR4 eq. 9.17; 0.04 for air and glass, n = 1.5).
 template <typename Real>

@@ -29,14 +29,23 @@ vec3 refracted_sample(SurfacePoint p) {
   return vec3(refracted_sample_at(p, iors.r).r, refracted_sample_at(p, iors.g).g, refracted_sample_at(p, iors.b).b);
 }
 
+// What lies behind at `uv` (texel `texel`): the texel itself for a smooth interface, else the
+// mip chain at level `lod` (trilinear; a refracted_color without a chain stays level 0).
+vec3 behind_color(ivec2 texel, vec2 uv, float lod) {
+  if (lod <= 0.0) return texelFetch(sampler2D(refracted_color, nearest), texel, 0).rgb;
+  return textureLod(sampler2D(refracted_color, trilinear), uv, lod).rgb;
+}
+
 vec3 refracted_sample_at(SurfacePoint p, float ior) {
   const ivec2 size = textureSize(sampler2D(scene_depth, nearest), 0);
   const ivec2 here = ivec2(gl_FragCoord.xy);
-  const vec3 straight = texelFetch(sampler2D(refracted_color, nearest), here, 0).rgb;
-  if (translucency.options.z < 0.5) return straight;
+  if (translucency.options.z < 0.5) return texelFetch(sampler2D(refracted_color, nearest), here, 0).rgb;
   // The opaque surface behind along the straight ray, then displaced across it.
   const float opaque_depth = view_depth_of(texelFetch(sampler2D(scene_depth, nearest), here, 0).r);
   const float behind = opaque_depth * p.distance / p.view_depth;  // view depth to distance along this ray
+  // A rough interface blurs what it refracts: the chain's level of its cone's footprint.
+  const float lod = refraction_blur_lod(object.emissive.w, ior, behind - p.distance, behind, translucency.options.w);
+  const vec3 straight = behind_color(here, (vec2(here) + 0.5) / vec2(size), lod);
   const vec3 offset = slab_exit_offset(p.to_camera, p.normal, ior, p.inside);
   if (offset == vec3(0.0)) return straight;  // IOR 1 or head-on: exactly the straight sample
   const vec4 clip = frame.view_projection * vec4(translucency.camera.xyz - p.to_camera * behind + offset, 1.0);
@@ -45,5 +54,5 @@ vec3 refracted_sample_at(SurfacePoint p, float ior) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return straight;
   const ivec2 there = ivec2(uv * vec2(size));
   if (texelFetch(sampler2D(scene_depth, nearest), there, 0).r <= gl_FragCoord.z) return straight;
-  return textureLod(sampler2D(refracted_color, trilinear), uv, 0.0).rgb;
+  return textureLod(sampler2D(refracted_color, trilinear), uv, lod).rgb;
 }

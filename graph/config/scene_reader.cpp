@@ -113,6 +113,7 @@ void read_translucency(const Node& n, Translucency& t) {
   read(n, "transmission", t.transmission, 0, 1);
   read(n, "ior", t.ior, 1, 4);
   read(n, "dispersion", t.dispersion, 0, kHuge);  // KHR_materials_dispersion: ≥ 0
+  read(n, "roughness", t.roughness, 0, 1);
   // 0 is allowed: the medium absorbs everything past its surface (physics::sigma_t_from_color).
   read(n, "attenuation_color", t.attenuation_color, 0, 1);
   read(n, "attenuation_distance", t.attenuation_distance, 1e-6, 1e30);
@@ -128,7 +129,7 @@ void read_translucency(const Node& n, Translucency& t) {
 }
 
 void read_material(const Node& n, const std::string& name, Material& m) {
-  if (!n.object({"albedo", "albedo_texture", "emissive", "alpha", "alpha_mode", "alpha_cutoff", "transmission", "ior", "dispersion",
+  if (!n.object({"albedo", "albedo_texture", "emissive", "alpha", "alpha_mode", "alpha_cutoff", "transmission", "ior", "dispersion", "roughness",
                  "attenuation_color", "attenuation_distance", "volume", "thickness"})) {
     return;
   }

@@ -56,6 +56,7 @@ struct Translucency {
   double attenuation_distance = 1e30;  // m (1e30: no absorption)
   VolumeKind volume = VolumeKind::thin_walled;
   double thickness = 0;  // m: the shell's; solid: the path where no back faces are measured
+  double roughness = 0;  // the interface's (glTF's roughnessFactor, 0–1): blurs what a solid refracts (a mip chain behind it)
   bool translucent() const { return alpha_mode == AlphaMode::blend || transmission > 0; }
 };
 

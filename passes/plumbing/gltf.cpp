@@ -152,6 +152,7 @@ void read_translucency(const tinygltf::Model& m, const tinygltf::Material& mat, 
   if (f.size() == 4) t.alpha = f[3];
   t.alpha_mode = alpha_mode(mat.alphaMode);
   t.alpha_cutoff = mat.alphaCutoff;
+  t.roughness = std::clamp(mat.pbrMetallicRoughness.roughnessFactor, 0.0, 1.0);  // glTF's default: 1
   if (const tinygltf::Value* transmission = extension(mat, "KHR_materials_transmission")) {
     t.transmission = std::clamp(number(*transmission, "transmissionFactor", 0), 0.0, 1.0);
     out.transmission_texture = texture(m, texture_index(*transmission, "transmissionTexture"));

@@ -67,6 +67,7 @@ void pack_translucency(const Translucency& t, double scale, GpuObjectBlock& bloc
   block.translucency[1] = float(t.transmission);
   block.translucency[2] = float(t.ior);
   block.translucency[3] = float(t.thickness * scale);
+  block.emissive[3] = float(t.roughness);
   for (size_t i = 0; i < 3; ++i) block.attenuation[i] = float(sigma_t_from_color(t.attenuation_color[i], t.attenuation_distance * scale));
   block.attenuation[3] = float(int(t.volume));
   block.alpha_test[0] = float(int(t.alpha_mode));

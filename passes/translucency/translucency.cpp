@@ -102,7 +102,8 @@ struct TranslucencyTable : PassTable {
   SlotHandle integrated_transmittance =
       optional_input("integrated_transmittance", ResourceKind::texture3d, Usage::sampled, "from scatter_integrate");
   SlotHandle refracted_color = optional_input("refracted_color", ResourceKind::texture2d, Usage::sampled,
-                                              "a copy of `color` before this pass: what refracting solids show");
+                                              "a copy of `color` before this pass: what refracting solids show (generate_mips.mips: a rough "
+                                              "interface reads the level its refracted cone spans, refraction_blur_lod)");
   SlotHandle aerial_lookup =
       optional_input("aerial_lookup", ResourceKind::buffer, Usage::uniform_read, "atmosphere_aerial_perspective's lookup: the air in front of each surface");
   SlotHandle aerial_scattering = optional_input("aerial_scattering", ResourceKind::texture3d, Usage::sampled, "from atmosphere_aerial_perspective");
@@ -347,6 +348,7 @@ class TranslucencyExecution final : public PassExecution {
     b.options[0] = fogged(c) ? 1.0f : 0.0f;
     b.options[1] = aired(c) ? 1.0f : 0.0f;
     b.options[2] = refracting(c) ? 1.0f : 0.0f;
+    b.options[3] = float(2 * std::tan(scene.camera.fov_y_deg * M_PI / 360) / double(c.frame_size().height));  // a pixel's angle
     c.device.write_buffer(block_, 0, std::as_bytes(std::span(&b, 1)));
   }
 

@@ -82,6 +82,19 @@ vec3 slab_exit_offset(vec3 to_incident, vec3 normal, float ior, float path_along
   return exit_point + to_incident * -dot(exit_point, to_incident);
 }
 
+// The level of a mip chain of what lies behind (generate_mips) whose texels span the cone a
+// rough interface spreads the refracted rays into (HDRP's and Frostbite's rough refraction:
+// cone width → level): GGX's lobe half-width α = roughness² (in slope) turned by 1 − 1/η
+// through the interface (the refracted ray's deviation per unit tilt of the normal, head-on),
+// over the path from the interface to the surface behind, seen from the camera at
+// `pixel_angle` rad a pixel: log2 of the footprint's width in pixels, in [0, 16] — 0 for a
+// smooth interface, at IOR 1, or with nothing behind. physics::refraction_blur_lod.
+float refraction_blur_lod(float roughness, float ior, float path_behind, float distance_behind, float pixel_angle) {
+  const float width = 2.0 * roughness * roughness * (1.0 - 1.0 / max(ior, 1.0)) * max(path_behind, 0.0);
+  if (!(width > 0.0) || !(distance_behind > 0.0) || !(pixel_angle > 0.0)) return 0.0;
+  return clamp(log2(width / (distance_behind * pixel_angle)), 0.0, 16.0);  // 16: past any chain (finite for any input)
+}
+
 // C = radiance + transmittance ⊙ C_behind, per channel.
 struct SurfaceLayer {
   vec3 radiance;

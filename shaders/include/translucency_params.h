@@ -8,7 +8,8 @@ GPU_STRUCT(TranslucencyParams) {
   vec4 camera;       // xyz: the camera's position; w: its near plane (m)
   vec4 environment;  // rgb: the radiance the specular reflection sees; w: the far plane (m)
   vec4 options;      // x: 1 where a froxel volume is wired; y: 1 where an aerial-perspective volume is;
-                     // z: 1 where solids refract what lies behind them (refracted_color)
+                     // z: 1 where solids refract what lies behind them (refracted_color);
+                     // w: the angle a pixel spans at the frame's centre (rad), 2 tan(fov_y/2) / height
 };
 GPU_END
 

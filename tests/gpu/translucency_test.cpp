@@ -258,7 +258,7 @@ TEST_P(Translucency, StaysFiniteAtTheLimits) {
   const std::string objects = R"(, { "shape": "box", "size": [0.5, 0.5, 0.5], "material": "black", "transform": { "translate": [-0.6, 0, 0] } },
     { "shape": "sphere", "size": [0.4, 0.4, 0.4], "material": "shell", "transform": { "translate": [0.6, 0, 0] } },
     { "shape": "plane", "size": [20, 1, 20], "material": "opaque_glass", "transform": { "translate": [0, -0.5, 0] } })";
-  for (const std::string camera : {std::string(kCamera), std::string(R"("camera": { "position": [-0.6, 0, 0], "target": [-0.6, 0, -1], "fov_y_deg": 170, "near": 0.01 },)"),
+  for (const std::string& camera : {std::string(kCamera), std::string(R"("camera": { "position": [-0.6, 0, 0], "target": [-0.6, 0, -1], "fov_y_deg": 170, "near": 0.01 },)"),
                                    std::string(R"("camera": { "position": [0, -0.49, 3], "target": [0, -0.5, -3], "fov_y_deg": 40 },)")}) {
     for (const std::string& layers : variant() == "depth_peeling" ? std::vector<std::string>{"1", "8", "16"} : std::vector<std::string>{""}) {
       const Texels image = render(with_layers(config(materials, objects, variant(), "", camera), layers));

@@ -125,5 +125,19 @@ TEST(Translucency, ASlabShiftsTheRayItPassesByTheLateralDisplacement) {
   EXPECT_NEAR(shift, slab_exit_offset(V{0.6, 0.8, 0}, V{0, 1, 0}, 1.5, 0.5)[0], 1e-6);
 }
 
+// The rough-refraction level: 0 where nothing blurs (smooth, IOR 1, nothing behind); log2
+// of the cone's footprint in pixels otherwise — 2 α (1 − 1/η) path / (distance · pixel
+// angle): roughness 0.5 at IOR 1.5 over 3 m behind, seen 6 m away at 0.01 rad a pixel, is
+// 2 · 0.25 · (1/3) · 3 / 0.06 = 8.33 px; twice the path is one level more.
+TEST(Translucency, TheRefractionBlurLevelIsTheConesFootprintInPixels) {
+  EXPECT_EQ(refraction_blur_lod(0.0, 1.5, 3.0, 6.0, 0.01), 0.0);
+  EXPECT_EQ(refraction_blur_lod(0.5, 1.0, 3.0, 6.0, 0.01), 0.0);
+  EXPECT_EQ(refraction_blur_lod(0.5, 1.5, 0.0, 6.0, 0.01), 0.0);
+  EXPECT_EQ(refraction_blur_lod(0.1, 1.5, 0.01, 6.0, 0.01), 0.0);  // under a pixel: level 0, never below
+  EXPECT_NEAR(refraction_blur_lod(0.5, 1.5, 3.0, 6.0, 0.01), std::log2(2 * 0.25 * (1.0 / 3.0) * 3 / 0.06), 1e-12);
+  EXPECT_NEAR(refraction_blur_lod(0.5, 1.5, 6.0, 6.0, 0.01) - refraction_blur_lod(0.5, 1.5, 3.0, 6.0, 0.01), 1.0, 1e-12);
+  EXPECT_TRUE(std::isfinite(refraction_blur_lod(1.0f, 4.0f, 1e30f, 1e-30f, 1e-9f)));
+}
+
 }  // namespace
 }  // namespace volgraph::physics

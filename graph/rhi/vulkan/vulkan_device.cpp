@@ -140,19 +140,29 @@ class VulkanEncoder final : public rhi::CommandEncoder {
     if (device_.context().has_debug_labels()) device_.context().end_label(cmd_);
   }
 
-  void begin_compute_pass(std::string_view label) override { label_ = std::string(label); }
+  void begin_compute_pass(std::string_view label) override {
+    label_ = std::string(label);
+    pipeline_in_pass_ = false;
+  }
   void set_pipeline(rhi::ComputePipelineId id) override {
     pipeline_ = device_.pipeline(id);
     bind_point_ = VK_PIPELINE_BIND_POINT_COMPUTE;
     vkCmdBindPipeline(cmd_, bind_point_, pipeline_.pipeline);
+    bind_pending_sets();
   }
+  // As WebGPU: a bind group set before the pass's first pipeline waits for it (its layout).
   void set_bind_group(uint32_t index, rhi::BindGroupId group) override {
     const VkDescriptorSet set = device_.bind_group(group);
+    if (!pipeline_in_pass_) {
+      pending_sets_.emplace_back(index, set);
+      return;
+    }
     vkCmdBindDescriptorSets(cmd_, bind_point_, pipeline_.layout, index, 1, &set, 0, nullptr);
   }
 
   void begin_render_pass(const rhi::RenderPassDesc& desc) override {
     label_ = desc.label;
+    pipeline_in_pass_ = false;
     std::vector<VkRenderingAttachmentInfo> colors;
     Extent size{};
     for (const rhi::ColorAttachment& c : desc.colors) {
@@ -193,6 +203,7 @@ class VulkanEncoder final : public rhi::CommandEncoder {
     pipeline_ = device_.pipeline(id);
     bind_point_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
     vkCmdBindPipeline(cmd_, bind_point_, pipeline_.pipeline);
+    bind_pending_sets();
   }
   void set_vertex_buffer(uint32_t slot, rhi::BufferId buffer, uint64_t offset) override {
     const VkBuffer b = device_.buffer(buffer).buffer;
@@ -252,9 +263,18 @@ class VulkanEncoder final : public rhi::CommandEncoder {
   }
 
  private:
+  // The sets bound before the pass's first pipeline, with its layout; later ones bind at once.
+  void bind_pending_sets() {
+    pipeline_in_pass_ = true;
+    for (const auto& [index, set] : pending_sets_) vkCmdBindDescriptorSets(cmd_, bind_point_, pipeline_.layout, index, 1, &set, 0, nullptr);
+    pending_sets_.clear();
+  }
+
   VulkanDevice& device_;
   VkCommandBuffer cmd_;
   VulkanDevice::Pipeline pipeline_;
+  bool pipeline_in_pass_ = false;  // a pipeline set since the pass began: its layout binds the sets
+  std::vector<std::pair<uint32_t, VkDescriptorSet>> pending_sets_;
   VkPipelineBindPoint bind_point_ = VK_PIPELINE_BIND_POINT_COMPUTE;
   std::string label_;
 };
