@@ -16,6 +16,7 @@
 #include "passes/passes.h"
 #include "physics/translucency.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/translucency_fixture.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
@@ -46,24 +47,7 @@ std::string dispersion_slab(const std::string& variant, double ior, const std::s
     "outputs": ["glass.color"] } })";
 }
 
-class TranslucencyDispersion : public OnEachBackend<std::tuple<Backend, std::string>> {
- protected:
-  Backend backend() const override { return std::get<0>(GetParam()); }
-  const std::string& variant() const { return std::get<1>(GetParam()); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
-  Texels render(const std::string& text) {
-    const LoadedConfig loaded = load_config_text("dispersion.json", text, registry_);
-    scene_ = loaded.config.scene;
-    Executor executor(device(), loaded.graph, &scene_, {});
-    executor.run_frame();
-    return executor.read_output(0);
-  }
-  PassRegistry registry_;
-  Scene scene_;
-};
+class TranslucencyDispersion : public TranslucencyVariantFixture {};
 
 TEST_P(TranslucencyDispersion, EachChannelIsThePlainSlabAtThatChannelsIor) {
   const double ior = 1.5, dispersion = 4;  // V_d = 5: the channels part by several pixels
@@ -94,12 +78,8 @@ TEST_P(TranslucencyDispersion, DispersionZeroIsTodaysImageBitForBit) {
   for (size_t p = 0; p < zero.rgba.size(); ++p) ASSERT_EQ(zero.rgba[p], without.rgba[p]) << "float " << p;
 }
 
-std::string dispersion_param_name(const ::testing::TestParamInfo<std::tuple<Backend, std::string>>& info) {
-  return std::string(backend_name(std::get<0>(info.param))) + "_" + std::get<1>(info.param);
-}
-
 INSTANTIATE_TEST_SUITE_P(Backends, TranslucencyDispersion,
-                         ::testing::Combine(::testing::ValuesIn(gpu_backends()), ::testing::Values("sorted", "weighted_oit", "depth_peeling")), dispersion_param_name);
+                         ::testing::Combine(::testing::ValuesIn(gpu_backends()), ::testing::Values("sorted", "weighted_oit", "depth_peeling")), TranslucencyVariantFixture::case_name);
 
 }  // namespace
 }  // namespace volgraph::testing

@@ -19,6 +19,7 @@
 #include "graph/execute/executor.h"
 #include "passes/passes.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/translucency_fixture.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
@@ -52,14 +53,8 @@ std::string dual_source_scene(const std::string& variant, bool dual_source, bool
     "outputs": ["glass.color"] } })";
 }
 
-class TranslucencyDualSource : public OnEachBackend<std::tuple<Backend, std::string>> {
+class TranslucencyDualSource : public TranslucencyVariantFixture {
  protected:
-  Backend backend() const override { return std::get<0>(GetParam()); }
-  const std::string& variant() const { return std::get<1>(GetParam()); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
   struct Rendered {
     Texels image;
     std::string note;  // the translucency pass's setup note
@@ -75,9 +70,6 @@ class TranslucencyDualSource : public OnEachBackend<std::tuple<Backend, std::str
     }
     return out;
   }
-
-  PassRegistry registry_;
-  Scene scene_;
 };
 
 // One draw rounds L + C·T to fp16 once; two draws round C·T first, then C·T + L. The
@@ -133,13 +125,9 @@ TEST_P(TranslucencyDualSource, ThePlanSaysHowManyDrawsALayerTakesAndWhy) {
   std::printf("%s: dual-source blending %s\n", name.c_str(), offered ? "offered" : "not offered");
 }
 
-std::string dual_source_case_name(const ::testing::TestParamInfo<std::tuple<Backend, std::string>>& info) {
-  return std::string(backend_name(std::get<0>(info.param))) + "_" + std::get<1>(info.param);
-}
-
 INSTANTIATE_TEST_SUITE_P(Backends, TranslucencyDualSource,
                          ::testing::Combine(::testing::ValuesIn(gpu_backends()), ::testing::Values("sorted", "depth_peeling", "weighted_oit")),
-                         dual_source_case_name);
+                         TranslucencyVariantFixture::case_name);
 
 }  // namespace
 }  // namespace volgraph::testing

@@ -18,6 +18,7 @@
 #include "graph/execute/executor.h"
 #include "passes/passes.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/translucency_fixture.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
@@ -54,22 +55,7 @@ std::string rough_glass(const std::string& variant, double roughness, bool chain
     "outputs": ["glass.color"] } })";
 }
 
-class TranslucencyRough : public OnEachBackend<std::tuple<Backend, std::string>> {
- protected:
-  Backend backend() const override { return std::get<0>(GetParam()); }
-  const std::string& variant() const { return std::get<1>(GetParam()); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
-  Texels render(const std::string& text) {
-    const LoadedConfig loaded = load_config_text("rough.json", text, registry_);
-    Executor executor(device(), loaded.graph, &loaded.config.scene, {});
-    executor.run_frame();
-    return executor.read_output(0);
-  }
-  PassRegistry registry_;
-};
+class TranslucencyRough : public TranslucencyVariantFixture {};
 
 // The red channel's standard deviation over the middle rows and columns of the glass (its
 // image spans about ±34 px × ±26 px around the centre here; the middle ±16 × ±8).
@@ -112,9 +98,7 @@ TEST_P(TranslucencyRough, AUniformWallStaysUniformThroughRoughGlass) {
 
 INSTANTIATE_TEST_SUITE_P(Variants, TranslucencyRough,
                          ::testing::Combine(::testing::ValuesIn(gpu_backends()), ::testing::Values("sorted", "depth_peeling")),
-                         [](const ::testing::TestParamInfo<std::tuple<Backend, std::string>>& info) {
-                           return std::get<1>(info.param) + "_" + std::string(backend_name(std::get<0>(info.param)));
-                         });
+                         TranslucencyVariantFixture::case_name);
 
 }  // namespace
 }  // namespace volgraph::testing

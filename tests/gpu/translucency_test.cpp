@@ -34,6 +34,7 @@
 #include "passes/plumbing/gltf.h"
 #include "reference/image_render.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/translucency_fixture.h"
 #include "tests/support/source_dir.h"
 #include "tests/support/image_compare.h"
 
@@ -70,29 +71,13 @@ std::string with_layers(std::string text, const std::string& layers) {
 }
 
 
-class Translucency : public OnEachBackend<std::tuple<Backend, std::string>> {
+class Translucency : public TranslucencyVariantFixture {
  protected:
-  Backend backend() const override { return std::get<0>(GetParam()); }
-  const std::string& variant() const { return std::get<1>(GetParam()); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
-  // `path` names the config (its includes resolve against its folder).
-  Texels render(const std::string& text, const std::string& path = "translucency.json") {
-    const LoadedConfig loaded = load_config_text(path, text, registry_);
-    scene_ = loaded.config.scene;
-    Executor executor(device(), loaded.graph, &scene_, {});
-    executor.run_frame();
-    return executor.read_output(0);
-  }
   // |cos θ| of pixel (i, j)'s ray to the slab's normal (z).
   double cos_to_z(uint32_t i, uint32_t j, uint32_t width = kTranslucencyWidth, uint32_t height = kTranslucencyHeight) const {
     return std::abs(physics::pixel_ray(scene_.camera, width, height, i, j)[2]);
   }
 
-  PassRegistry registry_;
-  Scene scene_;
 };
 
 double at(const Texels& t, uint32_t i, uint32_t j, size_t c) { return t.rgba[4 * (j * t.width + i) + c]; }
@@ -532,12 +517,9 @@ TEST_P(Translucency, AttenuationTestsRowsShowTheirAnswerKey) {
               variant().c_str(), pixels, worst);
 }
 
-std::string param_name(const ::testing::TestParamInfo<std::tuple<Backend, std::string>>& info) {
-  return std::string(backend_name(std::get<0>(info.param))) + "_" + std::get<1>(info.param);
-}
-
 INSTANTIATE_TEST_SUITE_P(Backends, Translucency,
-                         ::testing::Combine(::testing::ValuesIn(gpu_backends()), ::testing::Values("sorted", "weighted_oit", "depth_peeling")), param_name);
+                         ::testing::Combine(::testing::ValuesIn(gpu_backends()), ::testing::Values("sorted", "weighted_oit", "depth_peeling")),
+                         TranslucencyVariantFixture::case_name);
 
 }  // namespace
 }  // namespace volgraph::testing
