@@ -1,0 +1,41 @@
+// The 1D transfer function of volume_visualize (RTR4 14.3.1): density → colour and opacity,
+// piecewise linear between a small table's knots, and the opacity of a step of another
+// length than the table's. ONE TEXT FOR BOTH SIDES: GLSL includes this file, C++ includes it
+// inside a namespace with GLM's types (physics/volume_transfer.h).
+#ifndef VOLGRAPH_VOLUME_TRANSFER_H
+#define VOLGRAPH_VOLUME_TRANSFER_H
+
+#include "volume_fn.h"
+
+// The table's most knots.
+#define VOLUME_TRANSFER_MAX_KNOTS 8
+
+// The table at `density`: knot i at density knot_density[i].x (ascending; two knots at one
+// density make a step) with colour and opacity knot_rgba[i]; linear between neighbours,
+// the end knots' values outside them. At a knot's density the knot's value exactly (the
+// segment starting there, at fraction 0). `count` is clamped to [1, VOLUME_TRANSFER_MAX_KNOTS].
+VOLUME_FN vec4 volume_transfer_lookup(const vec4 knot_density[VOLUME_TRANSFER_MAX_KNOTS],
+                                      const vec4 knot_rgba[VOLUME_TRANSFER_MAX_KNOTS], int count, float density) {
+  const int n = clamp(count, 1, VOLUME_TRANSFER_MAX_KNOTS);
+  if (!(density > knot_density[0].x)) return knot_rgba[0];  // below the first knot, or NaN
+  for (int i = 1; i < n; ++i) {
+    if (density < knot_density[i].x) {
+      const float low = knot_density[i - 1].x;
+      const float f = (density - low) / (knot_density[i].x - low);  // low ≤ density < high: no division by 0
+      return mix(knot_rgba[i - 1], knot_rgba[i], f);
+    }
+  }
+  return knot_rgba[n - 1];
+}
+
+// The opacity of a step of length `step` when the table's opacity α holds for steps of
+// `reference_step` (Engel et al. 2006, Real-Time Volume Graphics, eq. 7.1; RTR4 14.3.1):
+// α' = 1 − (1 − α)^(Δ/Δ₀). 0 for an empty step, 1 for α = 1.
+VOLUME_FN float volume_step_opacity(float alpha, float step, float reference_step) {
+  const float a = clamp(alpha, 0.0f, 1.0f);
+  if (!(step > 0.0f) || !(reference_step > 0.0f)) return 0.0f;
+  if (a >= 1.0f) return 1.0f;
+  return 1.0f - exp(log(1.0f - a) * (step / reference_step));
+}
+
+#endif  // VOLGRAPH_VOLUME_TRANSFER_H
