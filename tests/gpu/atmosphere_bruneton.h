@@ -17,6 +17,7 @@
 #include "physics/atmosphere.h"
 #include "physics/atmosphere_bruneton.h"
 #include "tests/gpu/backends.h"
+#include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
 
@@ -42,10 +43,6 @@ class AtmosphereBrunetonFixture : public OnEachBackend<> {
 
   static physics::TransmittanceToTop exact_transmittance(const Atmosphere& a) {
     return [a](double r, double mu) { return physics::transmittance_to_top(a, r, mu); };
-  }
-
-  static bool all_finite(const Texels& t) {
-    return std::all_of(t.rgba.begin(), t.rgba.end(), [](float x) { return std::isfinite(x); });
   }
 
  protected:

@@ -81,12 +81,6 @@ class TranslucentShadow : public OnEachBackend<Backend> {
   Scene scene_;
 };
 
-bool all_finite(const Texels& t) {
-  for (float v : t.rgba) {
-    if (!std::isfinite(v)) return false;
-  }
-  return true;
-}
 
 bool all_one(const Texels& t) {
   for (size_t p = 0; p < t.rgba.size(); p += 4) {

@@ -15,6 +15,7 @@
 #include "physics/camera.h"
 #include "physics/volume_phantom.h"
 #include "tests/gpu/backends.h"
+#include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
 namespace {
@@ -136,9 +137,6 @@ TEST_P(VolumeVisualize, RaymarchThroughAHomogeneousBoxIsTheClosedForm) {
   }
 }
 
-bool all_finite(const Texels& t) {
-  return std::all_of(t.rgba.begin(), t.rgba.end(), [](float v) { return std::isfinite(v); });
-}
 
 TEST_P(VolumeVisualize, NoNaNUnderStress) {
   struct Case {

@@ -15,6 +15,13 @@ namespace volgraph::testing {
 // the tolerance of a value read back from an rgba16_float target.
 inline double fp16_steps(double value) { return 2 * std::ldexp(1.0, std::ilogb(std::max(std::abs(value), 6.1e-5)) - 10); }
 
+// Whether every float of a read-back image (anything with `rgba`: Texels) is finite: no NaN
+// or infinity left a pass.
+template <typename Image>
+bool all_finite(const Image& image) {
+  return std::all_of(image.rgba.begin(), image.rgba.end(), [](float v) { return std::isfinite(v); });
+}
+
 struct ImageDifference {
   double relative_mean_error = 0;  // Σ|a − b| / Σ|b| over RGB
   double outlier_fraction = 0;     // pixels with a channel off by > outlier_threshold · max(|b|, mean |b|)
