@@ -5,7 +5,8 @@
 // Roughness 0 with the chain wired is the image with a plain copy wired, bit for bit; the
 // stripes' contrast through the glass falls as the roughness grows (0 → 0.3 → 0.5 → 0.8:
 // levels about 1.6, 3.1 and 4.5 here); a uniform wall stays uniform through rough glass (a
-// blur of a constant is that constant: within two fp16 steps of the smooth image).
+// blur of a constant is that constant: within two fp16 steps of the smooth image); no NaN or
+// infinity at roughness 0 and 1 × IOR 1 and 4, inside the block and at 1 × 1.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -93,6 +94,28 @@ TEST_P(TranslucencyRough, AUniformWallStaysUniformThroughRoughGlass) {
   for (size_t p = 0; p < smooth.rgba.size(); ++p) {
     ASSERT_NEAR(rough.rgba[p], smooth.rgba[p], fp16_steps(smooth.rgba[p])) << "float " << p;
     ASSERT_TRUE(std::isfinite(rough.rgba[p]));
+  }
+}
+
+// Stress: roughness 0 and 1 × IOR 1 and 4, from outside and from inside the block, at 96 × 64
+// and at 1 × 1 (a chain of one level): every float finite.
+TEST_P(TranslucencyRough, NoNaNAtTheExtremes) {
+  for (const double roughness : {0.0, 1.0}) {
+    for (const double ior : {1.0, 4.0}) {
+      for (const bool inside : {false, true}) {
+        for (const char* size : {"[96, 64]", "[1, 1]"}) {
+          std::string text = rough_glass(variant(), roughness, true, true);
+          const std::string ior_key = R"("ior": 1.5)", size_key = R"("size": [96, 64])";
+          text.replace(text.find(ior_key), ior_key.size(), R"("ior": )" + std::to_string(ior));
+          text.replace(text.find(size_key), size_key.size(), std::string(R"("size": )") + size);
+          if (inside) {
+            const std::string camera = R"("position": [0, 0, 3])";
+            text.replace(text.find(camera), camera.size(), R"("position": [0, 0, 0.1], "near": 0.01)");
+          }
+          EXPECT_TRUE(all_finite(render(text))) << "roughness " << roughness << " ior " << ior << (inside ? " inside " : " outside ") << size;
+        }
+      }
+    }
   }
 }
 
