@@ -24,21 +24,7 @@ layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D surface_normal;
 
 const float kPi = 3.14159265358979;
 
-// The box's coordinates [0, 1]³ of world point p.
-vec3 box_coordinates(vec3 p) { return (p - params.box_min.xyz) / (params.box_max.xyz - params.box_min.xyz); }
-
-float density_at(vec3 p) { return textureLod(sampler3D(density, density_sampler), box_coordinates(p), 0.0).r; }
-
-// The interval of view depth z (point = origin + z·ray) inside the box, by the slab method
-// (Kay & Kajiya 1986); empty (x ≥ y) where the ray misses it.
-vec2 box_interval(vec3 origin, vec3 ray) {
-  const vec3 safe = mix(vec3(1e-20), ray, greaterThan(abs(ray), vec3(1e-20)));
-  const vec3 to_min = (params.box_min.xyz - origin) / safe, to_max = (params.box_max.xyz - origin) / safe;
-  const vec3 near = min(to_min, to_max), far = max(to_min, to_max);
-  return vec2(max(max(near.x, near.y), near.z), min(min(far.x, far.y), far.z));
-}
-
-vec4 transfer(float d) { return volume_transfer_lookup(params.knot_density, params.knot_rgba, params.march.z, d); }
+#include "include/volume_box.glsl"
 
 // Emission-absorption front to back over `steps` equal steps, each sampled at its midpoint,
 // each step's opacity corrected for its length (volume_step_opacity): rgb the emitted
@@ -111,7 +97,7 @@ void main() {
   const vec3 behind = texelFetch(sampler2D(scene_color, nearest), pixel, 0).rgb;
   vec4 result = vec4(behind, 1.0);
   vec4 hit_point = vec4(0.0), normal = vec4(0.0);
-  if (span.x < span.y) {
+  if (span.x < span.y && params.march.w != VOLUME_VISUALIZE_SLICES) {  // slices: the scene behind, blended over next
     if (params.march.w == VOLUME_VISUALIZE_ISOSURFACE) {
       const float z = first_crossing(origin, ray, span);
       if (z >= 0.0) {

@@ -170,7 +170,9 @@ enum class CullMode : uint8_t { none, front, back };
 // source_plus_dest_times_source1: src0 + dst × src1, the fragment's second output (index 1)
 // the destination's factor: a layer's radiance over its transmittance in one draw, on a
 // device with Device::has_dual_source_blending().
-enum class BlendMode : uint8_t { replace, additive, multiply, source_plus_dest_times_source1 };
+// premultiplied_over: src + dst × (1 − src alpha), Porter & Duff's over for premultiplied
+// colour (slices blended back to front).
+enum class BlendMode : uint8_t { replace, additive, multiply, source_plus_dest_times_source1, premultiplied_over };
 enum class IndexFormat : uint8_t { uint16, uint32 };
 enum class LoadOp : uint8_t { clear, load };
 

@@ -26,6 +26,8 @@
 #include "passes/plumbing/programs.h"
 #include "passes/register_pass.h"
 #include "physics/volume_transfer.h"
+#include "physics/camera.h"
+#include "shaders/bindings/volume_slices.frag.h"
 #include "shaders/bindings/volume_visualize.comp.h"
 
 namespace volgraph {
@@ -45,10 +47,13 @@ struct VolumeVisualizeTable : PassTable {
                                    VOLUME_VISUALIZE_RAYMARCH);
   VariantHandle isosurface = variant("isosurface", "the first crossing of `iso`, refined by bisection, Lambert-shaded by the gradient's normal",
                                      VOLUME_VISUALIZE_ISOSURFACE);
+  VariantHandle slices = variant("slices", "`slices` view-aligned slices through the box blended back to front (over), each sample's "
+                                           "opacity corrected for the slices' spacing along its ray", VOLUME_VISUALIZE_SLICES);
   // Parameters.
   ParamHandle<std::array<double, 3>> center = vec3("center", {0, 1, 0}, -1e6, 1e6, "m", "the volume's box's centre");
   ParamHandle<double> extent = number("extent", 2, 1e-6, 1e6, "m", "the volume's box's side (a cube)");
   ParamHandle<int64_t> steps = integer("steps", 128, 1, 4096, "", "equal steps over the ray's segment inside the box");
+  ParamHandle<int64_t> slice_count = integer("slices", 128, 1, 4096, "", "slices: view-aligned planes over the box's view-depth range");
   ParamHandle<int64_t> bisections = integer("bisections", 8, 0, 32, "", "isosurface: halvings of the step where the density crosses `iso`");
   ParamHandle<double> iso = number("iso", 0.5, 0, 1, "", "isosurface: the density of the surface");
   ParamHandle<double> opacity_length = number("opacity_length", 0.02, 1e-6, 1e6, "m",
@@ -63,11 +68,20 @@ struct VolumeVisualizeTable : PassTable {
   SlotHandle density = input("density", ResourceKind::texture3d, Usage::sampled, "volume_phantom.density: r the density in the unit box");
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth: the rays end there", {.format = Format::d32_float});
   SlotHandle scene_color = input("scene_color", ResourceKind::texture2d, Usage::sampled, "the scene's linear radiance, behind the volume");
-  SlotHandle color_out = output_like("color", scene_color, Usage::storage_write, "the scene's radiance seen through the volume");
+  SlotHandle color_out = output("color", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(),
+                                "the scene's radiance seen through the volume (the frame's size, as its scene_color)");
   SlotHandle hit = output("hit", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float, SizeSpec::of_output(),
                           "isosurface: xyz the hit point (m), w 1 where the ray meets the surface (0 elsewhere and in raymarch)");
   SlotHandle surface_normal = output("surface_normal", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float,
                                      SizeSpec::of_output(), "isosurface: xyz the surface's unit normal, w 1 where hit (0 elsewhere)");
+  // Steps: the compute step (raymarch and isosurface draw there; slices copy the scene behind),
+  // then slices' planes drawn over its colour.
+  StepHandle volume = step("volume", PassKind::compute,
+                           {{density, Usage::sampled}, {depth, Usage::sampled}, {scene_color, Usage::sampled},
+                            {color_out, Usage::storage_write}, {hit, Usage::storage_write}, {surface_normal, Usage::storage_write}});
+  StepHandle slice_planes = step("slices", PassKind::graphics,
+                                 {{density, Usage::sampled}, {depth, Usage::sampled}, {color_out, Usage::color_attachment_load}},
+                                 only_in({slices}));
 };
 
 physics::volume_transfer::TransferTable transfer_table(TransferPreset preset, const std::array<double, 3>& colour, double opacity) {
@@ -91,9 +105,15 @@ class VolumeVisualizeExecution final : public PassExecution {
     plumbing::check_wrapped_uniform_mirror<gpu::VolumeVisualizeParams>(program_, volume_visualize_shader::params, s.name() + " params");
     params_ = s.device.create_buffer(
         {s.name() + " params", sizeof(gpu::VolumeVisualizeParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
+    if (!s.variant_is(t_.slices)) return;
+    rhi::RenderPipelineDesc pipeline;
+    pipeline.label = s.name() + " slices";
+    pipeline.colors = {{s.desc(t_.color_out).format, rhi::BlendMode::premultiplied_over}};
+    slices_ = plumbing::create_render_program(s.device, pipeline, "volume_slices.vert", "volume_slices.frag");
   }
 
   void record(PassContext& c) override {
+    if (c.step_is(t_.slice_planes)) return record_slices(c);
     namespace shader = volume_visualize_shader;
     const gpu::VolumeVisualizeParams params = visualize_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
@@ -108,6 +128,40 @@ class VolumeVisualizeExecution final : public PassExecution {
   }
 
  private:
+  // The slices back to front over the compute step's copy of the scene (the params block it wrote).
+  void record_slices(PassContext& c) {
+    namespace shader = shaders::volume_slices_frag;
+    rhi::RenderPassDesc pass;
+    pass.label = c.name();
+    pass.colors = {{c.view(t_.color_out), rhi::LoadOp::load}};
+    c.encoder.begin_render_pass(pass);
+    c.encoder.set_pipeline(slices_.pipeline);
+    c.encoder.set_bind_group(0, c.bind_group(slices_, {bind(shader::params, params_), bind(shader::density, c.view(t_.density)),
+                                                       bind(shader::density_sampler, c.sampler(rhi::StockSampler::linear_clamp)),
+                                                       bind(shader::scene_depth, c.view(t_.depth)),
+                                                       bind(shader::nearest, c.sampler(rhi::StockSampler::nearest_clamp))}));
+    c.encoder.draw(3, uint32_t(c.param(t_.slice_count)));  // volume_slices.vert: one triangle a slice
+    c.encoder.end_render_pass();
+  }
+
+  // The slices' planes: `slices` of them, equally spaced over the box's view-depth range
+  // (its corners' depths, from the near plane on), the farthest first.
+  static void place_slices(const Scene& scene, const std::array<double, 3>& centre, double half, int64_t count, gpu::VolumeVisualizeParams& p) {
+    const Vec3 forward = physics::normalize(physics::sub(scene.camera.target, scene.camera.position));
+    double nearest = 1e30, farthest = -1e30;
+    for (int corner = 0; corner < 8; ++corner) {
+      Vec3 q{};
+      for (int i = 0; i < 3; ++i) q[size_t(i)] = centre[size_t(i)] + ((corner >> i) & 1 ? half : -half);
+      const double z = physics::dot(physics::sub(q, scene.camera.position), forward);
+      nearest = std::min(nearest, z), farthest = std::max(farthest, z);
+    }
+    nearest = std::max(nearest, scene.camera.near);
+    const double spacing = std::max(farthest - nearest, 0.0) / double(std::max<int64_t>(count, 1));
+    p.march.x = int32_t(count);
+    p.surface.z = float(spacing);
+    p.surface.w = float(farthest - 0.5 * spacing);
+  }
+
   gpu::VolumeVisualizeParams visualize_params(const PassContext& c) const {
     const Scene& scene = *c.scene;
     gpu::VolumeVisualizeParams p{};
@@ -121,6 +175,7 @@ class VolumeVisualizeExecution final : public PassExecution {
     const physics::volume_transfer::TransferTable table = transfer_table(c.param(t_.transfer), c.param(t_.color), c.param(t_.opacity));
     p.march = {int32_t(c.param(t_.steps)), int32_t(c.param(t_.bisections)), table.count, c.variant().shader_code};
     p.surface = {float(c.param(t_.iso)), float(c.param(t_.opacity_length)), 0, 0};
+    if (c.variant_is(t_.slices)) place_slices(scene, centre, half, c.param(t_.slice_count), p);
     for (int i = 0; i < VOLUME_TRANSFER_MAX_KNOTS; ++i) {
       p.knot_density[i] = gpu_vec4(table.density[size_t(i)]);
       p.knot_rgba[i] = gpu_vec4(table.rgba[size_t(i)]);
@@ -140,6 +195,7 @@ class VolumeVisualizeExecution final : public PassExecution {
 
   const VolumeVisualizeTable& t_;
   plumbing::ComputeProgram program_;
+  plumbing::RenderProgram slices_;  // the variant slices' planes
   rhi::BufferId params_;
 };
 

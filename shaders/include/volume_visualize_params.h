@@ -8,14 +8,16 @@
 // The variants' codes (VariantDecl::shader_code).
 #define VOLUME_VISUALIZE_RAYMARCH 0
 #define VOLUME_VISUALIZE_ISOSURFACE 1
+#define VOLUME_VISUALIZE_SLICES 2
 
 GPU_BEGIN
 GPU_STRUCT(VolumeVisualizeParams) {
   ViewRays view;          // the camera's rays; position.w its near plane, forward.w its far one (m)
   vec4 box_min;           // xyz the volume's world box, lowest corner (m)
   vec4 box_max;           // xyz its highest corner (m)
-  ivec4 march;            // x steps, y bisection steps, z knots, w VOLUME_VISUALIZE_RAYMARCH or _ISOSURFACE
-  vec4 surface;           // x the iso density, y the table's reference step Δ₀ (m)
+  ivec4 march;            // x steps (slices: the slice count), y bisection steps, z knots, w VOLUME_VISUALIZE_*
+  vec4 surface;           // x the iso density, y the table's reference step Δ₀ (m); slices: z the slices' spacing,
+                          // w the farthest slice's view depth (m)
   vec4 light_direction;   // xyz toward the light (unit); w 1: a scene light, 0: the headlight
   vec4 light_irradiance;  // rgb E (W/m²)
   vec4 knot_density[VOLUME_TRANSFER_MAX_KNOTS];  // x each knot's density

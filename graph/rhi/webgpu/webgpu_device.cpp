@@ -236,8 +236,13 @@ constexpr wgpu::BlendState kSourcePlusDestTimesSource1 = {
     {wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::Src1},
     {wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::Src1Alpha}};
 
+// src + dst × (1 − src alpha) for colour and alpha: over, premultiplied.
+constexpr wgpu::BlendState kPremultipliedOver = {{wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::OneMinusSrcAlpha},
+                                                 {wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::OneMinusSrcAlpha}};
+
 const wgpu::BlendState* blend_state(rhi::BlendMode mode) {
   switch (mode) {
+    case rhi::BlendMode::premultiplied_over: return &kPremultipliedOver;
     case rhi::BlendMode::additive: return &kAdditive;
     case rhi::BlendMode::multiply: return &kMultiply;
     case rhi::BlendMode::source_plus_dest_times_source1: return &kSourcePlusDestTimesSource1;

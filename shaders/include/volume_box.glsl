@@ -1,0 +1,23 @@
+// volume_visualize's box and volume (passes/volume/volume_visualize.cpp), shared by its
+// compute shader and its slices: the including shader declares `params`
+// (VolumeVisualizeParams), `density` (texture3D) and `density_sampler` before this file.
+#ifndef VOLGRAPH_VOLUME_BOX_GLSL
+#define VOLGRAPH_VOLUME_BOX_GLSL
+
+// The box's coordinates [0, 1]³ of world point p.
+vec3 box_coordinates(vec3 p) { return (p - params.box_min.xyz) / (params.box_max.xyz - params.box_min.xyz); }
+
+float density_at(vec3 p) { return textureLod(sampler3D(density, density_sampler), box_coordinates(p), 0.0).r; }
+
+// The interval of view depth z (point = origin + z·ray) inside the box, by the slab method
+// (Kay & Kajiya 1986); empty (x ≥ y) where the ray misses it.
+vec2 box_interval(vec3 origin, vec3 ray) {
+  const vec3 safe = mix(vec3(1e-20), ray, greaterThan(abs(ray), vec3(1e-20)));
+  const vec3 to_min = (params.box_min.xyz - origin) / safe, to_max = (params.box_max.xyz - origin) / safe;
+  const vec3 near = min(to_min, to_max), far = max(to_min, to_max);
+  return vec2(max(max(near.x, near.y), near.z), min(min(far.x, far.y), far.z));
+}
+
+vec4 transfer(float d) { return volume_transfer_lookup(params.knot_density, params.knot_rgba, params.march.z, d); }
+
+#endif
