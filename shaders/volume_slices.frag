@@ -31,7 +31,7 @@ void main() {
                                             params.view.position.w, params.view.forward.w);
   const vec2 box = box_interval(origin, ray);
   if (z < max(box.x, 0.0) || z >= min(box.y, surface_z)) discard;
-  const vec4 sample_rgba = transfer(density_at(origin + z * ray));
+  const vec4 sample_rgba = transfer_at(origin + z * ray);
   const float alpha = volume_step_opacity(sample_rgba.a, params.surface.z * length(ray), params.surface.y);
   over = vec4(sample_rgba.rgb * alpha, alpha);
 }

@@ -36,7 +36,7 @@ vec4 march(vec3 origin, vec3 ray, vec2 span) {
   vec3 emitted = vec3(0.0);
   float transmittance = 1.0;
   for (int i = 0; i < steps; ++i) {
-    const vec4 sample_rgba = transfer(density_at(origin + (span.x + (float(i) + 0.5) * dz) * ray));
+    const vec4 sample_rgba = transfer_at(origin + (span.x + (float(i) + 0.5) * dz) * ray);
     const float alpha = volume_step_opacity(sample_rgba.a, step_length, params.surface.y);
     emitted += transmittance * alpha * sample_rgba.rgb;
     transmittance *= 1.0 - alpha;
@@ -47,11 +47,7 @@ vec4 march(vec3 origin, vec3 ray, vec2 span) {
 // The outward normal at p: minus the density's gradient by central differences one texel
 // apart (in world units); toward the camera where the gradient vanishes.
 vec3 surface_normal_at(vec3 p, vec3 ray) {
-  const vec3 size = params.box_max.xyz - params.box_min.xyz;
-  const vec3 h = size / vec3(textureSize(sampler3D(density, density_sampler), 0));
-  const vec3 gradient = vec3(density_at(p + vec3(h.x, 0, 0)) - density_at(p - vec3(h.x, 0, 0)),
-                             density_at(p + vec3(0, h.y, 0)) - density_at(p - vec3(0, h.y, 0)),
-                             density_at(p + vec3(0, 0, h.z)) - density_at(p - vec3(0, 0, h.z))) / (2.0 * h);
+  const vec3 gradient = density_gradient(p);
   const float n = length(gradient);
   return n > 1e-6 ? -gradient / n : -normalize(ray);
 }

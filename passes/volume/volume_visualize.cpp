@@ -62,6 +62,10 @@ struct VolumeVisualizeTable : PassTable {
       "transfer", TransferPreset::shells,
       {{TransferPreset::shells, "shells"}, {TransferPreset::grey, "grey"}, {TransferPreset::constant, "constant"}},
       "the transfer function's table: shells (hats at the shells phantom's densities), grey (a ramp), constant (`color`, `opacity`)");
+  ParamHandle<double> gradient_low = number("gradient_low", 0, 0, 1e9, "1/m",
+                                            "the 2D transfer (Kniss et al. 2002): |∇ρ| below which a sample is transparent");
+  ParamHandle<double> gradient_high = number("gradient_high", 0, 0, 1e9, "1/m",
+                                             "the 2D transfer: |∇ρ| from which the table's opacity holds in full (0: off, the 1D table)");
   ParamHandle<std::array<double, 3>> color = vec3("color", {1, 1, 1}, 0, 1e6, "", "transfer constant: the colour at every density");
   ParamHandle<double> opacity = number("opacity", 0.1, 0, 1, "", "transfer constant: the opacity per opacity_length at every density");
   // Slots.
@@ -175,6 +179,7 @@ class VolumeVisualizeExecution final : public PassExecution {
     const physics::volume_transfer::TransferTable table = transfer_table(c.param(t_.transfer), c.param(t_.color), c.param(t_.opacity));
     p.march = {int32_t(c.param(t_.steps)), int32_t(c.param(t_.bisections)), table.count, c.variant().shader_code};
     p.surface = {float(c.param(t_.iso)), float(c.param(t_.opacity_length)), 0, 0};
+    p.gradient = {float(c.param(t_.gradient_low)), float(c.param(t_.gradient_high)), 0, 0};
     if (c.variant_is(t_.slices)) place_slices(scene, centre, half, c.param(t_.slice_count), p);
     for (int i = 0; i < VOLUME_TRANSFER_MAX_KNOTS; ++i) {
       p.knot_density[i] = gpu_vec4(table.density[size_t(i)]);

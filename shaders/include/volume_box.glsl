@@ -20,4 +20,21 @@ vec2 box_interval(vec3 origin, vec3 ray) {
 
 vec4 transfer(float d) { return volume_transfer_lookup(params.knot_density, params.knot_rgba, params.march.z, d); }
 
+// The density's gradient at p by central differences one texel apart (in world units).
+vec3 density_gradient(vec3 p) {
+  const vec3 size = params.box_max.xyz - params.box_min.xyz;
+  const vec3 h = size / vec3(textureSize(sampler3D(density, density_sampler), 0));
+  return vec3(density_at(p + vec3(h.x, 0, 0)) - density_at(p - vec3(h.x, 0, 0)),
+              density_at(p + vec3(0, h.y, 0)) - density_at(p - vec3(0, h.y, 0)),
+              density_at(p + vec3(0, 0, h.z)) - density_at(p - vec3(0, 0, h.z))) / (2.0 * h);
+}
+
+// The transfer function's colour and opacity at world point p: the 1D table at its density,
+// with the gradient ramp when on (volume_transfer_2d; six more lookups a sample).
+vec4 transfer_at(vec3 p) {
+  const vec4 from_table = transfer(density_at(p));
+  if (!(params.gradient.y > 0.0)) return from_table;
+  return volume_transfer_2d(from_table, length(density_gradient(p)), params.gradient.x, params.gradient.y);
+}
+
 #endif

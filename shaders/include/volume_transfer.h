@@ -28,6 +28,17 @@ VOLUME_FN vec4 volume_transfer_lookup(const vec4 knot_density[VOLUME_TRANSFER_MA
   return knot_rgba[n - 1];
 }
 
+// A 2D transfer function of density and gradient magnitude (Kniss, Kindlmann & Hansen 2002),
+// separable here: the 1D table's colour and opacity (`from_table`), the opacity times a ramp in
+// the gradient's magnitude |∇ρ| (per metre) from 0 at `gradient_low` to 1 at `gradient_high` —
+// uniform regions vanish, the boundaries between materials show. gradient_high ≤ 0: the table's.
+VOLUME_FN vec4 volume_transfer_2d(vec4 from_table, float gradient_magnitude, float gradient_low, float gradient_high) {
+  if (!(gradient_high > 0.0f)) return from_table;
+  if (!(gradient_magnitude > gradient_low)) return vec4(from_table.x, from_table.y, from_table.z, 0.0f);  // NaN too
+  const float ramp = min((gradient_magnitude - gradient_low) / max(gradient_high - gradient_low, 1e-20f), 1.0f);
+  return vec4(from_table.x, from_table.y, from_table.z, from_table.w * ramp);
+}
+
 // The opacity of a step of length `step` when the table's opacity α holds for steps of
 // `reference_step` (Engel et al. 2006, Real-Time Volume Graphics, eq. 7.1; RTR4 14.3.1):
 // α' = 1 − (1 − α)^(Δ/Δ₀). 0 for an empty step, 1 for α = 1.

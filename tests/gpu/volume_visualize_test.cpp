@@ -182,6 +182,30 @@ TEST_P(VolumeVisualize, SlicesAgreeWithTheMarchAsTheyGrowDense) {
   EXPECT_LT(previous, 0.01);
 }
 
+// The 2D transfer (gradient_low 1, gradient_high 2 per metre; the phantom's shell has
+// |∇ρ| = 1/(0.1 × 2 m) = 5/m, its core and the space around it 0): with the constant transfer,
+// which makes even density 0 glow, every pixel whose ray misses the sphere and its shell (no
+// crossing of density 0.001) is black as the background behind — uniform space is transparent
+// — where the 1D table alone lights it; rays through the sphere still gather its shell.
+TEST_P(VolumeVisualize, TheGradientRampMakesUniformRegionsTransparent) {
+  const std::string constant = R"("transfer": "constant", "color": [1, 1, 1], "opacity": 0.1, "steps": 128)";
+  const Texels flat = render("[0, 0.6, 4]", constant, "raymarch")[0];
+  const Texels ramped = render("[0, 0.6, 4]", constant + R"(, "gradient_low": 1, "gradient_high": 2)", "raymarch")[0];
+  const Texels missed = render("[0, 0.6, 4]", R"("iso": 0.001, "steps": 256)", "isosurface")[1];
+  int outside = 0, inside = 0;
+  for (size_t p = 0; p < flat.rgba.size(); p += 4) {
+    if (missed.rgba[p + 3] > 0.5) {
+      inside += ramped.rgba[p] > 0 ? 1 : 0;
+      continue;
+    }
+    if (flat.rgba[p] <= 0) continue;  // the ray misses the box too
+    ++outside;
+    ASSERT_EQ(ramped.rgba[p], 0.0f) << "pixel " << p / 4;
+  }
+  EXPECT_GT(outside, 200) << "rays through the box beside the sphere";
+  EXPECT_GT(inside, 200) << "rays through the sphere gather its shell";
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, VolumeVisualize, ::testing::ValuesIn(gpu_backends()), backend_test_name);
 
 }  // namespace

@@ -69,6 +69,18 @@ TEST(VolumeTransfer, StepOpacityHasNoNaNAtTheEdges) {
 }
 
 // The sphere phantom's ramp puts density ρ exactly on the sphere of volume_sphere_iso_radius(ρ).
+// The 2D transfer (density × gradient magnitude): off (gradient_high 0) the table's value
+// exactly; the opacity × 0 below gradient_low, × 1 from gradient_high, linear between; the
+// colour untouched.
+TEST(VolumeTransfer, TheGradientRampScalesOnlyTheOpacity) {
+  const vec4 table(0.2f, 0.4f, 0.6f, 0.5f);
+  EXPECT_EQ(volume_transfer_2d(table, 3.0f, 1.0f, 0.0f), table);
+  EXPECT_EQ(volume_transfer_2d(table, 0.5f, 1.0f, 2.0f), vec4(0.2f, 0.4f, 0.6f, 0.0f));
+  EXPECT_EQ(volume_transfer_2d(table, 2.5f, 1.0f, 2.0f), table);
+  EXPECT_EQ(volume_transfer_2d(table, 1.5f, 1.0f, 2.0f), vec4(0.2f, 0.4f, 0.6f, 0.25f));
+  EXPECT_EQ(volume_transfer_2d(table, std::numeric_limits<float>::quiet_NaN(), 1.0f, 2.0f).w, 0.0f);
+}
+
 TEST(VolumePhantom, TheSpheresIsosurfacesAreSpheresOfKnownRadius) {
   using namespace volume_phantom;
   for (const float iso : {0.2f, 0.5f, 0.8f}) {
