@@ -448,8 +448,8 @@ TEST_P(Translucency, ScreenSpaceRefractionShiftsWhatIsBehindAsTheSlabDoes) {
 // F Schlick's at the pixel's angle (physics::interface_reflectance), T_key^(1/cos θt) the
 // key's colour along the refracted path through the cube's thickness (1.3e-3 off T_key at
 // most here). The answer key row R1 itself, thin-walled cubes tinted by their base colour,
-// must show F L_env + (1 − F) ρ L_behind (one interface, no path). R3 (a thickness texture,
-// sampled since; its key not derived here) is not checked. Metric: |render − prediction| / prediction per channel, at most 3e-3 (fp16
+// must show F L_env + (1 − F) ρ L_behind (one interface, no path). R3 (thicknessFactor 2 ×
+// a thickness texture holding each cube's edge) must show its column's key as R2 does. Metric: |render − prediction| / prediction per channel, at most 3e-3 (fp16
 // steps and the slab approximation; measured 1.3e-3 at worst on lavapipe, every variant);
 // the prediction × the old exit-interface factor (0.960×) is 3.9e-2 off: fails.
 std::string attenuation_test(const std::string& variant) {
@@ -478,42 +478,60 @@ TEST_P(Translucency, AttenuationTestsRowsShowTheirAnswerKey) {
   const physics::ViewRays rays = physics::view_rays(scene_.camera, double(image.width) / image.height);
   double worst = 0;
   size_t pixels = 0;
-  for (const size_t row : {size_t(0), size_t(6), size_t(12), kAnswerRow}) {  // R2, R4, R5, R1 (the file's node order)
+  // Checks one cube's front face's middle third (in pixels) against the prediction.
+  const auto check_cube = [&](const std::string& what, const Vec3& lo, const Vec3& hi, const plumbing::GltfPrimitive& material,
+                              const Vec3& key, bool answer_key) {
+    const Vec3 front_lo{lo[0] + (hi[0] - lo[0]) / 3, lo[1] + (hi[1] - lo[1]) / 3, hi[2]};
+    const Vec3 front_hi{hi[0] - (hi[0] - lo[0]) / 3, hi[1] - (hi[1] - lo[1]) / 3, hi[2]};
+    const physics::ViewUvz a = physics::view_uvz(rays, front_lo), b = physics::view_uvz(rays, front_hi);
+    const uint32_t i0 = uint32_t(std::ceil(std::min(a.u, b.u) * image.width)), i1 = uint32_t(std::floor(std::max(a.u, b.u) * image.width));
+    const uint32_t j0 = uint32_t(std::ceil(std::min(a.v, b.v) * image.height)), j1 = uint32_t(std::floor(std::max(a.v, b.v) * image.height));
+    ASSERT_LT(i0, i1) << what;
+    for (uint32_t j = j0; j < j1; ++j) {
+      for (uint32_t i = i0; i < i1; ++i) {
+        const double cos_i = cos_to_z(i, j, image.width, image.height);
+        const double f = physics::interface_reflectance(material.translucency.ior, cos_i);
+        const double cos_t = physics::refracted_cosine(material.translucency.ior, cos_i);
+        for (size_t k = 0; k < 3; ++k) {
+          const double t_path = answer_key ? 1.0 : std::pow(key[k], 1 / cos_t);  // R1: its base colour ρ is the key
+          const double want = f * scene_.background[k] + (1 - f) * material.base_color[k] * t_path * at(behind, i, j, k);
+          const double error = std::abs(at(image, i, j, k) - want) / want;
+          worst = std::max(worst, error);
+          EXPECT_LT(error, 3e-3) << what << " pixel " << i << "," << j << " channel " << k << ": " << at(image, i, j, k) << " want " << want;
+        }
+        ++pixels;
+      }
+    }
+  };
+  const auto bounds = [](const plumbing::GltfPrimitive& p, double x_lo, double x_hi) {
+    Vec3 lo{1e30, 1e30, 1e30}, hi{-1e30, -1e30, -1e30};
+    for (size_t v = 0; v < p.vertices.size(); v += 8) {
+      if (p.vertices[v] < x_lo || p.vertices[v] > x_hi) continue;
+      for (size_t a = 0; a < 3; ++a) lo[a] = std::min(lo[a], double(p.vertices[v + a])), hi[a] = std::max(hi[a], double(p.vertices[v + a]));
+    }
+    return std::pair{lo, hi};
+  };
+  constexpr size_t kThicknessTextureRow = 11;  // R3: one mesh, thicknessFactor 2 × the texture's cube edges
+  for (const size_t row : {size_t(0), size_t(6), size_t(12), kAnswerRow}) {  // R2, R4, R5, R1 (the file's node order; R3 is node 11)
     const bool answer_key = row == kAnswerRow;
     for (size_t column = 0; column < 5; ++column) {
       const plumbing::GltfPrimitive& cube = model.primitives.at(row + column);
-      const Vec3 key = model.primitives.at(kAnswerRow + column).base_color;
       ASSERT_EQ(cube.translucency.volume, answer_key ? VolumeKind::thin_walled : VolumeKind::solid);
-      Vec3 lo{1e30, 1e30, 1e30}, hi{-1e30, -1e30, -1e30};
-      for (size_t v = 0; v < cube.vertices.size(); v += 8) {
-        for (size_t a = 0; a < 3; ++a) lo[a] = std::min(lo[a], double(cube.vertices[v + a])), hi[a] = std::max(hi[a], double(cube.vertices[v + a]));
-      }
-      // The front face's middle third, in pixels.
-      const Vec3 front_lo{lo[0] + (hi[0] - lo[0]) / 3, lo[1] + (hi[1] - lo[1]) / 3, hi[2]};
-      const Vec3 front_hi{hi[0] - (hi[0] - lo[0]) / 3, hi[1] - (hi[1] - lo[1]) / 3, hi[2]};
-      const physics::ViewUvz a = physics::view_uvz(rays, front_lo), b = physics::view_uvz(rays, front_hi);
-      const uint32_t i0 = uint32_t(std::ceil(std::min(a.u, b.u) * image.width)), i1 = uint32_t(std::floor(std::max(a.u, b.u) * image.width));
-      const uint32_t j0 = uint32_t(std::ceil(std::min(a.v, b.v) * image.height)), j1 = uint32_t(std::floor(std::max(a.v, b.v) * image.height));
-      ASSERT_LT(i0, i1) << "row " << row << " column " << column;
-      for (uint32_t j = j0; j < j1; ++j) {
-        for (uint32_t i = i0; i < i1; ++i) {
-          const double cos_i = cos_to_z(i, j, image.width, image.height);
-          const double f = physics::interface_reflectance(cube.translucency.ior, cos_i);
-          const double cos_t = physics::refracted_cosine(cube.translucency.ior, cos_i);
-          for (size_t k = 0; k < 3; ++k) {
-            const double t_path = answer_key ? 1.0 : std::pow(key[k], 1 / cos_t);  // R1: its base colour ρ is the key
-            const double want = f * scene_.background[k] + (1 - f) * cube.base_color[k] * t_path * at(behind, i, j, k);
-            const double error = std::abs(at(image, i, j, k) - want) / want;
-            worst = std::max(worst, error);
-            EXPECT_LT(error, 3e-3) << "row " << row << " column " << column << " pixel " << i << "," << j << " channel " << k
-                                   << ": " << at(image, i, j, k) << " want " << want;
-          }
-          ++pixels;
-        }
-      }
+      const auto [lo, hi] = bounds(cube, -1e30, 1e30);
+      check_cube("row " + std::to_string(row) + " column " + std::to_string(column), lo, hi, cube,
+                 model.primitives.at(kAnswerRow + column).base_color, answer_key);
+      if (row != 0) continue;
+      // R3's cube of this column: the row mesh's vertices over R2's cube's x range; its
+      // thickness from the texture must give the column's key as R2's factor does.
+      const plumbing::GltfPrimitive& textured = model.primitives.at(kThicknessTextureRow);
+      ASSERT_EQ(textured.translucency.volume, VolumeKind::solid);
+      const double margin = 1e-3 * (hi[0] - lo[0]);
+      const auto [tlo, thi] = bounds(textured, lo[0] - margin, hi[0] + margin);
+      check_cube("thickness-texture row column " + std::to_string(column), tlo, thi, textured,
+                 model.primitives.at(kAnswerRow + column).base_color, false);
     }
   }
-  std::printf("AttenuationTest (%s): %zu pixels of 15 solid and 5 thin-walled cubes, worst |render - F L_env - (1-F) rho T_key L_behind| / it = %.2e\n",
+  std::printf("AttenuationTest (%s): %zu pixels of 20 solid and 5 thin-walled cubes, worst |render - F L_env - (1-F) rho T_key L_behind| / it = %.2e\n",
               variant().c_str(), pixels, worst);
 }
 
