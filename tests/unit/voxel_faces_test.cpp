@@ -30,7 +30,7 @@ struct FaceCounts {
   size_t culled, greedy;
 };
 
-FaceCounts counts(const std::vector<uint8_t>& solid, int n) { return {culled_faces(solid, n).size(), greedy_faces(solid, n).size()}; }
+FaceCounts culled_and_greedy_counts(const std::vector<uint8_t>& solid, int n) { return {culled_faces(solid, n).size(), greedy_faces(solid, n).size()}; }
 
 using UnitFace = std::tuple<int, int, int, int, int, int>;  // least corner, normal
 
@@ -48,7 +48,7 @@ std::map<UnitFace, int> unit_face_cover(const std::vector<FaceQuad>& quads) {
 }
 
 TEST(VoxelFaces, ASingleVoxelHasSixFacesBothWays) {
-  const FaceCounts c = counts(grid_with(3, {{1, 1, 1}}), 3);
+  const FaceCounts c = culled_and_greedy_counts(grid_with(3, {{1, 1, 1}}), 3);
   EXPECT_EQ(c.culled, 6u);
   EXPECT_EQ(c.greedy, 6u);
 }
@@ -56,7 +56,7 @@ TEST(VoxelFaces, ASingleVoxelHasSixFacesBothWays) {
 // A solid n³ box: 6n² faces on its outside, none inside; each side one rectangle.
 TEST(VoxelFaces, ASolidBoxIsSixQuads) {
   for (const int n : {1, 2, 5, 8}) {
-    const FaceCounts c = counts(std::vector<uint8_t>(size_t(n) * n * n, 1), n);
+    const FaceCounts c = culled_and_greedy_counts(std::vector<uint8_t>(size_t(n) * n * n, 1), n);
     EXPECT_EQ(c.culled, size_t(6 * n * n)) << "n " << n;
     EXPECT_EQ(c.greedy, 6u) << "n " << n;
   }
@@ -64,7 +64,7 @@ TEST(VoxelFaces, ASolidBoxIsSixQuads) {
 
 // Two voxels sharing a face: 12 − 2 culled; the four long sides merge into 1×2 quads.
 TEST(VoxelFaces, TwoVoxelsSideBySide) {
-  const FaceCounts c = counts(grid_with(4, {{1, 1, 1}, {2, 1, 1}}), 4);
+  const FaceCounts c = culled_and_greedy_counts(grid_with(4, {{1, 1, 1}, {2, 1, 1}}), 4);
   EXPECT_EQ(c.culled, 10u);
   EXPECT_EQ(c.greedy, 6u);
 }
@@ -74,7 +74,7 @@ TEST(VoxelFaces, TwoVoxelsSideBySide) {
 // column at x = 0; −y one 2×1 row at y = 0; +x two (x = 1 for (0,1,0), x = 2 for (1,0,0));
 // +y two (y = 1 for (1,0,0), y = 2 for (0,1,0)): 2 + 2 + 1 + 1 + 2 + 2 = 10.
 TEST(VoxelFaces, AnLShape) {
-  const FaceCounts c = counts(grid_with(3, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), 3);
+  const FaceCounts c = culled_and_greedy_counts(grid_with(3, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), 3);
   EXPECT_EQ(c.culled, 14u);
   EXPECT_EQ(c.greedy, 10u);
 }
@@ -88,7 +88,7 @@ TEST(VoxelFaces, ACheckerboardSlabNeitherCullsNorMerges) {
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x)
       if ((x + y) % 2 == 0) black.push_back({x, y, 0});
-  const FaceCounts c = counts(grid_with(n, black), n);
+  const FaceCounts c = culled_and_greedy_counts(grid_with(n, black), n);
   EXPECT_EQ(c.culled, 48u);
   EXPECT_EQ(c.greedy, 48u);
 }
@@ -128,7 +128,7 @@ TEST(VoxelFaces, TheDemoModelsQuadCounts) {
   const std::vector<uint8_t> solid = voxelize_on_cpu(grid_corners(triangles, grid_around(triangles, n)), n);
   size_t voxels = 0;
   for (const uint8_t s : solid) voxels += s != 0;
-  const FaceCounts c = counts(solid, n);
+  const FaceCounts c = culled_and_greedy_counts(solid, n);
   std::printf("demo_voxels %d³: %zu solid voxels; naive %zu faces, culled %zu, greedy %zu quads\n", n, voxels,
               6 * voxels, c.culled, c.greedy);
   EXPECT_GT(voxels, 0u);
