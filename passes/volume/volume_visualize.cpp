@@ -24,6 +24,7 @@
 #include "graph/scene/scene.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
+#include "passes/plumbing/sun_for_shader.h"
 #include "passes/register_pass.h"
 #include "physics/volume_transfer.h"
 #include "physics/camera.h"
@@ -185,16 +186,7 @@ class VolumeVisualizeExecution final : public PassExecution {
       p.knot_density[i] = gpu_vec4(table.density[size_t(i)]);
       p.knot_rgba[i] = gpu_vec4(table.rgba[size_t(i)]);
     }
-    if (const int sun = scene.sun_light(); sun >= 0) {
-      const Light& light = scene.lights[size_t(sun)];
-      const double n = std::sqrt(light.direction[0] * light.direction[0] + light.direction[1] * light.direction[1] +
-                                 light.direction[2] * light.direction[2]);
-      for (int i = 0; i < 3; ++i) {
-        p.light_direction[i] = float(-light.direction[size_t(i)] / n);
-        p.light_irradiance[i] = float(light.irradiance[size_t(i)]);
-      }
-      p.light_direction[3] = 1;
-    }
+    plumbing::write_sun_for_shader(scene, p.light_direction, p.light_irradiance);
     return p;
   }
 
