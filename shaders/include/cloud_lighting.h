@@ -28,6 +28,18 @@ CLOUD_FN float cloud_phase(float cos_theta, float g_forward, float g_back, float
   return mix(phase_hg(g_forward, cos_theta), phase_hg(g_back, cos_theta), w);
 }
 
+// The octaves' scales as both sums take them: b and c clamped to [0, 1], a to [0, b]
+// (Wrenninge's energy condition a ≤ b), the count to [1, CLOUD_MAX_OCTAVES].
+struct CloudOctaveScales {
+  float a, b, c;
+  int count;
+};
+CLOUD_FN CloudOctaveScales cloud_octave_scales(int octaves, float a, float b, float c) {
+  const float bb = clamp(b, 0.0f, 1.0f);
+  const CloudOctaveScales k = {min(clamp(a, 0.0f, 1.0f), bb), bb, clamp(c, 0.0f, 1.0f), clamp(octaves, 1, CLOUD_MAX_OCTAVES)};  // GLSL 4.2's initializer list
+  return k;
+}
+
 // Wrenninge et al. 2013's multiple-scattering approximation (RTR4 eq. 14.18): the sum over
 // i < octaves of b^i σs p(θ, c^i g) T(a^i τ), T(x) = exp(−x), τ the optical depth toward
 // the sun. octaves = 1 is single scattering σs p(θ, g) T(τ). a ≤ b is enforced (a above b
@@ -35,19 +47,16 @@ CLOUD_FN float cloud_phase(float cos_theta, float g_forward, float g_back, float
 // [1, CLOUD_MAX_OCTAVES]. Radiance per metre per unit sun illuminance.
 CLOUD_FN float cloud_octaves(float sigma_s, float tau, float cos_theta, float g_forward, float g_back, float back_weight,
                              int octaves, float a, float b, float c) {
-  const float bb = clamp(b, 0.0f, 1.0f);
-  const float aa = min(clamp(a, 0.0f, 1.0f), bb);
-  const float cc = clamp(c, 0.0f, 1.0f);
-  const int n = clamp(octaves, 1, CLOUD_MAX_OCTAVES);
+  const CloudOctaveScales k = cloud_octave_scales(octaves, a, b, c);
   const float t = max(tau, 0.0f);
   const float s = max(sigma_s, 0.0f);
   float sum = 0.0f;
   float weight = 1.0f, depth = 1.0f, spread = 1.0f;  // b^i, a^i, c^i
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < k.count; ++i) {
     sum += weight * s * cloud_phase(cos_theta, spread * g_forward, spread * g_back, back_weight) * exp(-depth * t);
-    weight *= bb;
-    depth *= aa;
-    spread *= cc;
+    weight *= k.b;
+    depth *= k.a;
+    spread *= k.c;
   }
   return sum;
 }
@@ -57,19 +66,16 @@ CLOUD_FN float cloud_octaves(float sigma_s, float tau, float cos_theta, float g_
 // is exactly c^i g (the isotropic part has none), as the HG octaves' p(θ, c^i g). The same
 // clamps as cloud_octaves. Radiance per metre per unit sun illuminance, per channel.
 CLOUD_FN vec3 cloud_octaves_tabulated(float sigma_s, float tau, vec3 phase, int octaves, float a, float b, float c) {
-  const float bb = clamp(b, 0.0f, 1.0f);
-  const float aa = min(clamp(a, 0.0f, 1.0f), bb);
-  const float cc = clamp(c, 0.0f, 1.0f);
-  const int n = clamp(octaves, 1, CLOUD_MAX_OCTAVES);
+  const CloudOctaveScales k = cloud_octave_scales(octaves, a, b, c);
   const float t = max(tau, 0.0f);
   const float s = max(sigma_s, 0.0f);
   vec3 sum = vec3(0.0f);
   float weight = 1.0f, depth = 1.0f, spread = 1.0f;  // b^i, a^i, c^i
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < k.count; ++i) {
     sum += weight * s * mix(vec3(phase_isotropic()), phase, spread) * exp(-depth * t);
-    weight *= bb;
-    depth *= aa;
-    spread *= cc;
+    weight *= k.b;
+    depth *= k.a;
+    spread *= k.c;
   }
   return sum;
 }
