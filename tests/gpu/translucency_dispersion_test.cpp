@@ -22,29 +22,10 @@
 namespace volgraph::testing {
 namespace {
 
-std::string dispersion_json_number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
-
-// The slab (IOR `ior`, `glass_extra` more keys) before a wall bright on the left, dark on the right.
+// The fixture's slab before a bright/dark edge at 72 × 48 (IOR `ior`, `glass_extra` more keys),
+// screen-space refraction on (the pass's default).
 std::string dispersion_slab(const std::string& variant, double ior, const std::string& glass_extra) {
-  return R"({ "output": { "size": [72, 48] },
-  "scene": { "camera": { "position": [0, 0, 3], "target": [0, 0, 0], "fov_y_deg": 40 },
-    "background": { "radiance": [0.2, 0.3, 0.4] },
-    "materials": { "bright": { "albedo": [0, 0, 0], "emissive": [1, 1, 1] }, "dark": { "albedo": [0, 0, 0], "emissive": [0.1, 0.1, 0.1] },
-                   "glass": { "albedo": [1, 1, 1], "transmission": 1, "volume": "solid", "ior": )" + dispersion_json_number(ior) + glass_extra + R"( } },
-    "objects": [
-      { "shape": "plane", "size": [10, 1, 20], "material": "bright", "transform": { "rotate_deg": [90, 0, 0], "translate": [-5, 0, -3] } },
-      { "shape": "plane", "size": [10, 1, 20], "material": "dark", "transform": { "rotate_deg": [90, 0, 0], "translate": [5, 0, -3] } },
-      { "shape": "box", "size": [5, 8, 0.5], "material": "glass", "transform": { "rotate_deg": [0, 35, 0] } } ] },
-  "graph": { "passes": [
-    { "name": "lit", "type": "scene" },
-    { "name": "behind_glass", "type": "copy", "inputs": { "source": "lit.color" } },
-    { "name": "glass", "type": "translucency", "variant": ")" + variant + R"(",
-      "inputs": { "color": "lit.color", "depth": "lit.depth", "frame": "lit.frame", "refracted_color": "behind_glass.copy" } } ],
-    "outputs": ["glass.color"] } })";
+  return TranslucencyVariantFixture::slab_before_edge(variant, "screen_space", ior, glass_extra, "[72, 48]");
 }
 
 class TranslucencyDispersion : public TranslucencyVariantFixture {};

@@ -6,6 +6,7 @@
 // batches together share no namespace-scope names).
 #pragma once
 
+#include <cstdio>
 #include <string>
 #include <tuple>
 
@@ -21,6 +22,30 @@ namespace volgraph::testing {
 
 class TranslucencyVariantFixture : public OnEachBackend<std::tuple<Backend, std::string>> {
  public:
+  // A glass slab (IOR `ior`, `glass_extra` more material keys) turned 35° before a wall bright
+  // on the left, dark on the right, `size` ("[W, H]") pixels, the pass's variant and
+  // `refraction`, refracted_color a copy of the scene before it (the refraction and dispersion tests').
+  static std::string slab_before_edge(const std::string& variant, const std::string& refraction, double ior,
+                                      const std::string& glass_extra = "", const std::string& size = "[144, 96]") {
+    char ior_text[32];
+    std::snprintf(ior_text, sizeof ior_text, "%.17g", ior);
+    return R"({ "output": { "size": )" + size + R"( },
+  "scene": { "camera": { "position": [0, 0, 3], "target": [0, 0, 0], "fov_y_deg": 40 },
+    "background": { "radiance": [0.2, 0.3, 0.4] },
+    "materials": { "bright": { "albedo": [0, 0, 0], "emissive": [1, 1, 1] }, "dark": { "albedo": [0, 0, 0], "emissive": [0.1, 0.1, 0.1] },
+                   "glass": { "albedo": [1, 1, 1], "transmission": 1, "volume": "solid", "ior": )" + ior_text + glass_extra + R"( } },
+    "objects": [
+      { "shape": "plane", "size": [10, 1, 20], "material": "bright", "transform": { "rotate_deg": [90, 0, 0], "translate": [-5, 0, -3] } },
+      { "shape": "plane", "size": [10, 1, 20], "material": "dark", "transform": { "rotate_deg": [90, 0, 0], "translate": [5, 0, -3] } },
+      { "shape": "box", "size": [5, 8, 0.5], "material": "glass", "transform": { "rotate_deg": [0, 35, 0] } } ] },
+  "graph": { "passes": [
+    { "name": "lit", "type": "scene" },
+    { "name": "behind_glass", "type": "copy", "inputs": { "source": "lit.color" } },
+    { "name": "glass", "type": "translucency", "variant": ")" + variant + R"(", "params": { "refraction": ")" + refraction + R"(" },
+      "inputs": { "color": "lit.color", "depth": "lit.depth", "frame": "lit.frame", "refracted_color": "behind_glass.copy" } } ],
+    "outputs": ["glass.color"] } })";
+  }
+
   static std::string case_name(const ::testing::TestParamInfo<std::tuple<Backend, std::string>>& info) {
     return std::string(backend_name(std::get<0>(info.param))) + "_" + std::get<1>(info.param);
   }

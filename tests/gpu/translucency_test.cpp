@@ -377,26 +377,8 @@ TEST_P(Translucency, AirIsAppliedAtTheTranslucentSurfacesOwnDistance) {
 // where the reference sees it (within the pixel its sample straddles) on every row, where
 // the straight-through image (refraction none) has it 3 px off; the mean absolute error is
 // lower too (what remains: the reference's inner reflections). The slab is wide enough that
-// no side face is in view (the slab approximation's case). At IOR 1 the refracted image is
-// the straight one bit for bit.
-std::string slab_before_edge(const std::string& variant, const std::string& refraction, double ior) {
-  return R"({ "output": { "size": [144, 96] },
-  "scene": { "camera": { "position": [0, 0, 3], "target": [0, 0, 0], "fov_y_deg": 40 },
-    "background": { "radiance": [0.2, 0.3, 0.4] },
-    "materials": { "bright": { "albedo": [0, 0, 0], "emissive": [1, 1, 1] }, "dark": { "albedo": [0, 0, 0], "emissive": [0.1, 0.1, 0.1] },
-                   "glass": { "albedo": [1, 1, 1], "transmission": 1, "volume": "solid", "ior": )" + std::to_string(ior) + R"( } },
-    "objects": [
-      { "shape": "plane", "size": [10, 1, 20], "material": "bright", "transform": { "rotate_deg": [90, 0, 0], "translate": [-5, 0, -3] } },
-      { "shape": "plane", "size": [10, 1, 20], "material": "dark", "transform": { "rotate_deg": [90, 0, 0], "translate": [5, 0, -3] } },
-      { "shape": "box", "size": [5, 8, 0.5], "material": "glass", "transform": { "rotate_deg": [0, 35, 0] } } ] },
-  "graph": { "passes": [
-    { "name": "lit", "type": "scene" },
-    { "name": "behind_glass", "type": "copy", "inputs": { "source": "lit.color" } },
-    { "name": "glass", "type": "translucency", "variant": ")" + variant + R"(", "params": { "refraction": ")" + refraction + R"(" },
-      "inputs": { "color": "lit.color", "depth": "lit.depth", "frame": "lit.frame", "refracted_color": "behind_glass.copy" } } ],
-    "outputs": ["glass.color"] } })";
-}
-
+// no side face is in view (the slab approximation's case; the scene is the fixture's
+// slab_before_edge). At IOR 1 the refracted image is the straight one bit for bit.
 TEST_P(Translucency, ScreenSpaceRefractionShiftsWhatIsBehindAsTheSlabDoes) {
   if (variant() == "weighted_oit") GTEST_SKIP() << "screen-space refraction is sorted's and depth_peeling's";
   const Texels refracted = render(slab_before_edge(variant(), "screen_space", 1.5));
