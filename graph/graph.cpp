@@ -189,7 +189,7 @@ Extent extent_of(const SizeSpec& size, ResourceKind kind, Extent output_size, in
       break;
     }
   }
-  if (kind == ResourceKind::texture2d) e.depth = 1;
+  if (kind == ResourceKind::texture2d || kind == ResourceKind::texture_cube) e.depth = 1;  // a cube's faces are layers, not depth
   return e;
 }
 

@@ -17,6 +17,7 @@ std::string extent_text(const ResourceDesc& d) {
   if (d.kind == ResourceKind::buffer) return std::to_string(d.buffer_bytes) + " B";
   std::string s = std::to_string(d.extent.width) + "x" + std::to_string(d.extent.height);
   if (d.kind == ResourceKind::texture3d) s += "x" + std::to_string(d.extent.depth);
+  if (d.kind == ResourceKind::texture_cube) s += " cube";
   return s;
 }
 

@@ -56,7 +56,7 @@ std::vector<std::string> probe_names(const Graph& graph) {
     for (const ResourceUse& u : g.uses) {
       if (u.direction == SlotDirection::input) continue;
       const ResourceKind kind = graph.resources[u.resource].desc.kind;
-      if (kind != ResourceKind::texture2d && kind != ResourceKind::texture3d) continue;
+      if (kind == ResourceKind::buffer) continue;
       const std::string name = user_pass_name(g) + "." + g.decl->slots[u.slot].name;
       if (std::find(names.begin(), names.end(), name) != names.end()) continue;
       try {

@@ -23,7 +23,7 @@ constexpr std::array<FormatInfo, 14> kFormats = {{
     {"d32_float", 4, true, false},
 }};
 
-constexpr std::array<std::string_view, 3> kKinds = {"texture2d", "texture3d", "buffer"};
+constexpr std::array<std::string_view, 4> kKinds = {"texture2d", "texture3d", "buffer", "texture_cube"};
 
 }  // namespace
 
@@ -133,7 +133,7 @@ uint64_t content_bytes(const ResourceDesc& desc) {
     texels += uint64_t{std::max(1u, desc.extent.width >> level)} * std::max(1u, desc.extent.height >> level) *
               std::max(1u, desc.extent.depth >> level);
   }
-  return uint64_t{format_info(desc.format).bytes_per_texel} * texels;
+  return uint64_t{format_info(desc.format).bytes_per_texel} * texels * array_layers(desc.kind);
 }
 
 }  // namespace volgraph

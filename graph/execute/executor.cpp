@@ -49,7 +49,8 @@ DeviceError not_texels(const ResourceDesc& d) {
                          "; reading back takes rgba32_float, rgba16_float, rgba8_unorm, r32_float or d32_float textures");
 }
 
-uint32_t slices(const ResourceDesc& d) { return d.kind == ResourceKind::texture3d ? std::max(1u, d.extent.depth) : 1; }
+// A volume's slices, a cube's faces (+x, −x, +y, −y, +z, −z), else 1.
+uint32_t slices(const ResourceDesc& d) { return d.kind == ResourceKind::texture3d ? std::max(1u, d.extent.depth) : array_layers(d.kind); }
 
 uint64_t readback_bytes(const ResourceDesc& d) {
   if (d.kind == ResourceKind::buffer) return d.buffer_bytes;

@@ -36,7 +36,7 @@ class ContentKey {
 ContentKey& add_layout_entries(ContentKey& key, const std::vector<LayoutEntry>& entries) {
   key.add(entries.size());
   for (const LayoutEntry& e : entries) {
-    key.add(e.binding).add(e.visibility).add(e.type).add(e.texture_kind).add(e.storage_format).add(e.filtered).add(e.storage_access);
+    key.add(e.binding).add(e.visibility).add(e.type).add(e.texture_kind).add(e.cube_faces).add(e.storage_format).add(e.filtered).add(e.storage_access);
   }
   return key;
 }

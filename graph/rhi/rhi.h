@@ -109,6 +109,9 @@ struct LayoutEntry {
   uint32_t visibility = shader_stage::compute;
   BindingType type = BindingType::uniform_buffer;
   ResourceKind texture_kind = ResourceKind::texture2d;  // sampled and storage textures
+  // A texture_cube's faces as a 2D array (image2DArray, texture2DArray: storage writes, a
+  // face per layer) rather than the cube (samplerCube).
+  bool cube_faces = false;
   Format storage_format = Format::undefined;            // storage textures
   // Sampled textures and samplers, as the shaders use them (reflection): true when
   // some shader samples through them (texture(), textureLod …), false when the texture

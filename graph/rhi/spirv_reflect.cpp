@@ -303,6 +303,7 @@ std::string describe(const LayoutEntry& entry) {
   std::string text(binding_type_name(entry.type));
   const bool is_texture = entry.type == BindingType::sampled_texture || entry.type == BindingType::storage_texture;
   if (is_texture) text += " " + std::string(kind_name(entry.texture_kind));
+  if (is_texture && entry.cube_faces) text += " faces";
   if (entry.type == BindingType::storage_texture) text += " " + std::string(format_info(entry.storage_format).name);
   return text;
 }
@@ -389,11 +390,13 @@ constexpr std::pair<SpvImageFormat, Format> kImageFormats[] = {
     {SpvImageFormatR8, Format::r8_unorm},                 {SpvImageFormatR32ui, Format::r32_uint},
 };
 
-ResourceKind image_kind(SpvDim dim, const Where& where) {
-  if (dim == SpvDim2D) return ResourceKind::texture2d;
+// A 2D array is read as a cube's six faces (the only arrayed textures the graph makes).
+ResourceKind image_kind(SpvDim dim, bool arrayed, const Where& where) {
+  if (arrayed && dim != SpvDim2D) where.fail("arrayed images other than a cube's faces (2D arrays) are not supported");
+  if (dim == SpvDim2D) return arrayed ? ResourceKind::texture_cube : ResourceKind::texture2d;
   if (dim == SpvDim3D) return ResourceKind::texture3d;
-  if (dim == SpvDimCube) where.fail("cube textures have no ResourceKind");
-  where.fail("image Dim " + std::to_string(dim) + " is neither 2D nor 3D");
+  if (dim == SpvDimCube) return ResourceKind::texture_cube;
+  where.fail("image Dim " + std::to_string(dim) + " is neither 2D, 3D nor Cube");
 }
 
 Format storage_format(SpvImageFormat image_format, const Where& where) {
@@ -404,11 +407,11 @@ Format storage_format(SpvImageFormat image_format, const Where& where) {
              " (SPIR-V Image Format) is not a storage format of both backends");
 }
 
-// A separate texture or a storage image: 2D or 3D, neither arrayed nor multisampled.
+// A separate texture or a storage image: 2D, 3D, a cube or its faces as a 2D array; not multisampled.
 LayoutEntry image_entry(spvc_type image, BindingType type, const Where& where) {
-  if (spvc_type_get_image_arrayed(image)) where.fail("arrayed images are not supported");
   if (spvc_type_get_image_multisampled(image)) where.fail("multisampled images are not supported");
-  LayoutEntry entry{.type = type, .texture_kind = image_kind(spvc_type_get_image_dimension(image), where)};
+  const bool arrayed = spvc_type_get_image_arrayed(image);
+  LayoutEntry entry{.type = type, .texture_kind = image_kind(spvc_type_get_image_dimension(image), arrayed, where), .cube_faces = arrayed};
   if (type == BindingType::storage_texture) {
     entry.storage_format = storage_format(spvc_type_get_image_storage_format(image), where);
   }
@@ -482,7 +485,7 @@ std::vector<DeclaredBinding> declared_bindings(const Module& module, uint32_t st
 }
 
 bool same_resource(const LayoutEntry& a, const LayoutEntry& b) {
-  return a.type == b.type && a.texture_kind == b.texture_kind && a.storage_format == b.storage_format;
+  return a.type == b.type && a.texture_kind == b.texture_kind && a.cube_faces == b.cube_faces && a.storage_format == b.storage_format;
 }
 
 using BindingKey = std::pair<uint32_t, uint32_t>;  // set, binding

@@ -11,7 +11,13 @@
 
 namespace volgraph {
 
-enum class ResourceKind : uint8_t { texture2d, texture3d, buffer };
+// texture_cube: six square faces (+x, −x, +y, −y, +z, −z: Vulkan's and WebGPU's layer
+// order), sampled as a cube; its per-level views are the faces as a 2D array (storage
+// writes, one face per layer).
+enum class ResourceKind : uint8_t { texture2d, texture3d, buffer, texture_cube };
+
+// The array layers a texture of `kind` has (a cube's six faces; else one).
+constexpr uint32_t array_layers(ResourceKind kind) { return kind == ResourceKind::texture_cube ? 6u : 1u; }
 
 // Texel formats a slot may hold. Storage-capable ones match WebGPU storage formats.
 enum class Format : uint8_t {

@@ -34,6 +34,7 @@
 #include "passes/atmosphere/atmosphere_block.h"
 #include "passes/register_pass.h"
 #include "passes/atmosphere/bruneton_uniforms.h"
+#include "passes/atmosphere/sky_pass_frame.h"
 #include "passes/fog/fog_frame.h"
 #include "passes/plumbing/programs.h"
 #include "passes/uniform_mirrors.h"
@@ -158,24 +159,10 @@ class SkyExecution final : public PassExecution {
   bool has_multiscattering(const PassContext& c) const { return c.bound(t_.multiscattering); }
 
   gpu::SkyPassFrame sky_frame(const PassContext& c) const {
-    const Atmosphere& a = *c.scene->atmosphere;
-    const atmosphere::PlanetFrame planet = atmosphere::planet_frame(*c.scene);
-    gpu::SkyPassFrame f{};
-    f.view = fog::pack_view_rays(c.scene->camera, c.extent(t_.sky_color));
-    f.planet_up = gpu::vec4_of(planet.planet_up);
-    f.toward_sun = gpu::vec4_of(planet.toward_sun);
-    f.sun = gpu::vec4_of(planet.sun);
-    f.sun_disk[0] = float(a.sun_angular_radius);
-    f.sun_disk[1] = c.param(t_.sun_disk) ? 1.0f : 0.0f;
-    f.sun_disk[2] = c.param(t_.limb_darkening) ? 1.0f : 0.0f;
-    f.sun_disk[3] = c.param(t_.ground) ? 1.0f : 0.0f;
-    f.camera[0] = float(physics::atmosphere_view(*c.scene).r);
-    f.camera[1] = c.param(t_.multiscattering_term) && has_multiscattering(c) ? 1.0f : 0.0f;
-    f.sampling[0] = float(c.param(t_.min_samples));
-    f.sampling[1] = float(c.param(t_.max_samples));
-    f.sampling[2] = 100e3f;  // Hillaire 2020: rays of 100 km and longer take the max
-    f.sampling[3] = float(c.param(t_.sample_offset));
-    return f;
+    const atmosphere::SkyLook look{c.param(t_.sun_disk), c.param(t_.limb_darkening), c.param(t_.ground),
+                                   c.param(t_.multiscattering_term) && has_multiscattering(c), c.param(t_.min_samples),
+                                   c.param(t_.max_samples), c.param(t_.sample_offset)};
+    return atmosphere::sky_pass_frame(*c.scene, c.extent(t_.sky_color), look);
   }
 
   const SkyTable& t_;

@@ -62,7 +62,7 @@ VkImageMemoryBarrier2 image_barrier(VkImage image, Format format, const AccessSt
   v.newLayout = to_vk(to.layout);
   v.srcQueueFamilyIndex = v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   v.image = image;
-  v.subresourceRange = {aspect_of(format), 0, VK_REMAINING_MIP_LEVELS, 0, 1};  // every mip level
+  v.subresourceRange = {aspect_of(format), 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};  // every level and layer
   return v;
 }
 

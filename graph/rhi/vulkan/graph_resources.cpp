@@ -6,6 +6,11 @@
 namespace volgraph::vulkan {
 namespace {
 
+VkImageViewType view_type(ResourceKind kind) {
+  if (kind == ResourceKind::texture3d) return VK_IMAGE_VIEW_TYPE_3D;
+  return kind == ResourceKind::texture_cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D;
+}
+
 constexpr uint32_t heap_class(uint32_t memory_type, bool buffer) { return memory_type * 2 + (buffer ? 1 : 0); }
 
 }  // namespace
@@ -64,7 +69,8 @@ void GraphResources::create(uint32_t r, VkImageUsageFlags image_usage, VkBufferU
     info.format = to_vk(d.format);
     info.extent = {d.extent.width, d.extent.height, d.kind == ResourceKind::texture3d ? d.extent.depth : 1};
     info.mipLevels = std::max(1u, d.mip_levels);
-    info.arrayLayers = 1;
+    info.arrayLayers = array_layers(d.kind);
+    if (d.kind == ResourceKind::texture_cube) info.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = image_usage ? image_usage : VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -127,13 +133,17 @@ void GraphResources::create_view(uint32_t r) {
   if (!(o.usage & viewable)) return;
   VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   info.image = o.image;
-  info.viewType = d.kind == ResourceKind::texture3d ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
+  info.viewType = view_type(d.kind);
   info.format = to_vk(d.format);
-  info.subresourceRange = {aspect_of(d.format), 0, std::max(1u, d.mip_levels), 0, 1};
+  const uint32_t layers = array_layers(d.kind);
+  info.subresourceRange = {aspect_of(d.format), 0, std::max(1u, d.mip_levels), 0, layers};
   check(vkCreateImageView(context_.device(), &info, nullptr, &o.view), "vkCreateImageView");
   name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(o.view), d.name);
-  for (uint32_t level = 0; d.mip_levels > 1 && level < d.mip_levels; ++level) {
-    info.subresourceRange = {aspect_of(d.format), level, 1, 0, 1};
+  // A cube's levels are always views of their own: its faces as a 2D array (storage writes).
+  const bool cube = d.kind == ResourceKind::texture_cube;
+  if (cube) info.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+  for (uint32_t level = 0; (d.mip_levels > 1 || cube) && level < d.mip_levels; ++level) {
+    info.subresourceRange = {aspect_of(d.format), level, 1, 0, layers};
     VkImageView view = VK_NULL_HANDLE;
     check(vkCreateImageView(context_.device(), &info, nullptr, &view), "vkCreateImageView");
     name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view), d.name + " level " + std::to_string(level));

@@ -96,11 +96,11 @@ VkSamplerAddressMode to_vk(rhi::AddressMode mode) {
   return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
 }
 
-// One mip level of a texture (level 0: the whole texture).
+// One mip level of a texture, every layer (level 0: the whole texture; a cube face after face).
 VkBufferImageCopy whole_level(const rhi::TextureDesc& d, uint64_t offset, uint32_t level = 0) {
   VkBufferImageCopy region{};
   region.bufferOffset = offset;
-  region.imageSubresource = {aspect_of(d.format), level, 0, 1};
+  region.imageSubresource = {aspect_of(d.format), level, 0, array_layers(d.kind)};
   const uint32_t depth = d.kind == ResourceKind::texture3d ? d.size.depth : 1;
   region.imageExtent = {std::max(1u, d.size.width >> level), std::max(1u, d.size.height >> level), std::max(1u, depth >> level)};
   return region;
@@ -246,7 +246,8 @@ class VulkanEncoder final : public rhi::CommandEncoder {
     const auto& s = device_.texture(source);
     const auto& d = device_.texture(destination);
     const VkImageAspectFlags aspect = aspect_of(s.desc.format);
-    VkImageCopy region{{aspect, 0, 0, 1}, {}, {aspect, 0, 0, 1}, {},
+    const uint32_t layers = array_layers(s.desc.kind);
+    VkImageCopy region{{aspect, 0, 0, layers}, {}, {aspect, 0, 0, layers}, {},
                        {s.desc.size.width, s.desc.size.height, s.desc.kind == ResourceKind::texture3d ? s.desc.size.depth : 1}};
     vkCmdCopyImage(cmd_, s.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                    &region);
@@ -363,7 +364,8 @@ rhi::TextureId VulkanDevice::create_texture(const rhi::TextureDesc& desc) {
   info.format = to_vk(desc.format);
   info.extent = {desc.size.width, desc.size.height, desc.kind == ResourceKind::texture3d ? desc.size.depth : 1};
   info.mipLevels = std::max(1u, desc.mip_levels);
-  info.arrayLayers = 1;
+  info.arrayLayers = array_layers(desc.kind);
+  if (desc.kind == ResourceKind::texture_cube) info.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = texture_usage_flags(desc.usage, desc.format);
@@ -381,9 +383,11 @@ rhi::TextureViewId VulkanDevice::create_view(rhi::TextureId id) {
   const Texture& t = textures_.at(id.id);
   VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   info.image = t.image;
-  info.viewType = t.desc.kind == ResourceKind::texture3d ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
+  info.viewType = t.desc.kind == ResourceKind::texture3d      ? VK_IMAGE_VIEW_TYPE_3D
+                  : t.desc.kind == ResourceKind::texture_cube ? VK_IMAGE_VIEW_TYPE_CUBE
+                                                              : VK_IMAGE_VIEW_TYPE_2D;
   info.format = to_vk(t.desc.format);
-  info.subresourceRange = {aspect_of(t.desc.format), 0, std::max(1u, t.desc.mip_levels), 0, 1};
+  info.subresourceRange = {aspect_of(t.desc.format), 0, std::max(1u, t.desc.mip_levels), 0, array_layers(t.desc.kind)};
   VkImageView view = VK_NULL_HANDLE;
   check(vkCreateImageView(context_.device(), &info, nullptr, &view), "vkCreateImageView");
   name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view), t.desc.label);

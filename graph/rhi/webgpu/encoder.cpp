@@ -156,7 +156,7 @@ WebGpuEncoder::RowCopy WebGpuEncoder::rows_of(rhi::TextureId id, uint32_t mip_le
   r.texture.mipLevel = mip_level;
   r.texture.aspect = copy_aspect(t.desc.format);
   const uint32_t width = std::max(1u, t.desc.size.width >> mip_level), height = std::max(1u, t.desc.size.height >> mip_level);
-  const uint32_t depth = t.desc.kind == ResourceKind::texture3d ? std::max(1u, t.desc.size.depth >> mip_level) : 1;
+  const uint32_t depth = t.desc.kind == ResourceKind::texture3d ? std::max(1u, t.desc.size.depth >> mip_level) : array_layers(t.desc.kind);
   r.extent = {width, height, depth};
   r.row_bytes = width * format_info(t.desc.format).bytes_per_texel;
   r.padded_bytes = (r.row_bytes + kCopyRowAlignment - 1) / kCopyRowAlignment * kCopyRowAlignment;

@@ -28,8 +28,10 @@ wgpu::TextureDimension dimension_of(ResourceKind kind) {
   return kind == ResourceKind::texture3d ? wgpu::TextureDimension::e3D : wgpu::TextureDimension::e2D;
 }
 
-wgpu::TextureViewDimension view_dimension_of(ResourceKind kind) {
-  return kind == ResourceKind::texture3d ? wgpu::TextureViewDimension::e3D : wgpu::TextureViewDimension::e2D;
+wgpu::TextureViewDimension view_dimension_of(ResourceKind kind, bool cube_faces) {
+  if (kind == ResourceKind::texture3d) return wgpu::TextureViewDimension::e3D;
+  if (kind != ResourceKind::texture_cube) return wgpu::TextureViewDimension::e2D;
+  return cube_faces ? wgpu::TextureViewDimension::e2DArray : wgpu::TextureViewDimension::Cube;
 }
 
 wgpu::TextureAspect copy_aspect(Format format) {

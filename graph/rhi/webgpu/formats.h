@@ -12,7 +12,8 @@ namespace volgraph::webgpu {
 
 wgpu::TextureFormat to_wgpu(Format format);
 wgpu::TextureDimension dimension_of(ResourceKind kind);
-wgpu::TextureViewDimension view_dimension_of(ResourceKind kind);
+// A cube's view is the cube; `cube_faces`: its faces as a 2D array (storage writes).
+wgpu::TextureViewDimension view_dimension_of(ResourceKind kind, bool cube_faces = false);
 // The aspect a copy of the whole texture names: depth formats copy their depth only.
 wgpu::TextureAspect copy_aspect(Format format);
 

@@ -75,14 +75,19 @@ void WebGpuGraphResources::create_object(const PooledObject& object, uint32_t in
     descriptor.label = std::string_view(label);
     descriptor.usage = texture_usage == wgpu::TextureUsage::None ? wgpu::TextureUsage::CopyDst : texture_usage;
     descriptor.dimension = dimension_of(d.kind);
-    descriptor.size = {d.extent.width, d.extent.height, d.kind == ResourceKind::texture3d ? d.extent.depth : 1};
+    descriptor.size = {d.extent.width, d.extent.height, d.kind == ResourceKind::texture3d ? d.extent.depth : array_layers(d.kind)};
     descriptor.format = to_wgpu(d.format);
     descriptor.mipLevelCount = std::max(1u, d.mip_levels);
     const wgpu::Texture made = device_.make_texture(descriptor);
     texture = device_.add_texture(made, desc);
-    if (texture_usage & kViewable) view = device_.add_view(made.CreateView());
-    for (uint32_t level = 0; (texture_usage & kViewable) && d.mip_levels > 1 && level < d.mip_levels; ++level) {
+    wgpu::TextureViewDescriptor whole;
+    whole.dimension = view_dimension_of(d.kind);
+    if (texture_usage & kViewable) view = device_.add_view(made.CreateView(&whole));
+    // A cube's levels are always views of their own: its faces as a 2D array (storage writes).
+    const bool cube = d.kind == ResourceKind::texture_cube;
+    for (uint32_t level = 0; (texture_usage & kViewable) && (d.mip_levels > 1 || cube) && level < d.mip_levels; ++level) {
       wgpu::TextureViewDescriptor one;
+      one.dimension = view_dimension_of(d.kind, true);
       one.baseMipLevel = level;
       one.mipLevelCount = 1;
       level_views.push_back(device_.add_view(made.CreateView(&one)));

@@ -32,7 +32,7 @@ wgpu::BindGroupLayoutEntry layout_entry(const rhi::LayoutEntry& e) {
     case rhi::BindingType::read_only_storage_buffer: out.buffer.type = wgpu::BufferBindingType::ReadOnlyStorage; break;
     case rhi::BindingType::sampled_texture:
       out.texture.sampleType = e.filtered ? wgpu::TextureSampleType::Float : wgpu::TextureSampleType::UnfilterableFloat;
-      out.texture.viewDimension = view_dimension_of(e.texture_kind);
+      out.texture.viewDimension = view_dimension_of(e.texture_kind, e.cube_faces);
       break;
     case rhi::BindingType::sampler:
       out.sampler.type = e.filtered ? wgpu::SamplerBindingType::Filtering : wgpu::SamplerBindingType::NonFiltering;
@@ -42,21 +42,22 @@ wgpu::BindGroupLayoutEntry layout_entry(const rhi::LayoutEntry& e) {
       // texture it loads from: the layout must say so (a level of a mip chain, generate_mips).
       if (e.storage_access == rhi::StorageAccess::read_only) {
         out.texture.sampleType = wgpu::TextureSampleType::UnfilterableFloat;
-        out.texture.viewDimension = view_dimension_of(e.texture_kind);
+        out.texture.viewDimension = view_dimension_of(e.texture_kind, e.cube_faces);
         break;
       }
       out.storageTexture.access = to_wgpu(e.storage_access);
       out.storageTexture.format = to_wgpu(e.storage_format);
-      out.storageTexture.viewDimension = view_dimension_of(e.texture_kind);
+      out.storageTexture.viewDimension = view_dimension_of(e.texture_kind, e.cube_faces);
       break;
   }
   return out;
 }
 
+// A level's extent; a cube's depthOrArrayLayers is its six faces at every level.
 wgpu::Extent3D level_extent(const rhi::TextureDesc& d, uint32_t level) {
   const uint32_t depth = d.kind == ResourceKind::texture3d ? d.size.depth : 1;
   return {std::max(1u, d.size.width >> level), std::max(1u, d.size.height >> level),
-          d.kind == ResourceKind::texture3d ? std::max(1u, depth >> level) : 1u};
+          d.kind == ResourceKind::texture3d ? std::max(1u, depth >> level) : array_layers(d.kind)};
 }
 
 }  // namespace
@@ -117,7 +118,10 @@ rhi::TextureId WebGpuDevice::create_texture(const rhi::TextureDesc& desc) {
 }
 
 rhi::TextureViewId WebGpuDevice::create_view(rhi::TextureId texture) {
-  return add_view(textures_.at(texture.id).texture.CreateView());
+  const Texture& t = textures_.at(texture.id);
+  wgpu::TextureViewDescriptor whole;
+  whole.dimension = view_dimension_of(t.desc.kind);
+  return add_view(t.texture.CreateView(&whole));
 }
 
 rhi::SamplerId WebGpuDevice::create_sampler(const rhi::SamplerDesc& desc) {
