@@ -138,6 +138,51 @@ Vec3Of<Real> slab_exit_offset(const Vec3Of<Real>& to_incident, const Vec3Of<Real
   return exit;
 }
 
+// Where a ray leaves a solid taken locally as a sphere (HDRP's sphere refraction model): the
+// sphere tangent at the entry whose chord along the view ray is `path_along_view`, so of
+// diameter D = path / cos θi (exact for a sphere); the ray refracted in by Bec's form with
+// 1/ior crosses it, s = −(t·n) D, and is refracted out at the exit, whose normal points to
+// the centre, with eta = ior — mirrored back inside where that is total internal reflection
+// (taken as leaving: one bounce, no more). `offset`: the exit point from the entry; straight
+// through (offset −to_incident × path, direction −to_incident) at ior 1, head-on or with no path.
+template <typename Real>
+struct SphereExit {
+  Vec3Of<Real> offset;
+  Vec3Of<Real> direction;
+};
+
+template <typename Real>
+SphereExit<Real> sphere_exit(const Vec3Of<Real>& to_incident, const Vec3Of<Real>& normal, Real ior, Real path_along_view) {
+  const auto dot3 = [](const Vec3Of<Real>& a, const Vec3Of<Real>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const Vec3Of<Real> view{-to_incident[0], -to_incident[1], -to_incident[2]};
+  const Real path = std::max(path_along_view, Real(0));
+  const SphereExit<Real> straight{{view[0] * path, view[1] * path, view[2] * path}, view};
+  const Real cos_i = dot3(to_incident, normal);
+  if (ior == Real(1) || !(path > Real(0)) || !(cos_i > Real(0))) return straight;
+  const std::optional<Vec3Of<Real>> in = refract_bec(to_incident, normal, Real(1) / ior);
+  if (!in) return straight;
+  const Real diameter = path / cos_i;
+  const Real s = -dot3(*in, normal) * diameter;
+  SphereExit<Real> out;
+  Vec3Of<Real> to_centre;  // from the exit point: the entry's centre offset −n D/2, minus the exit's offset
+  for (size_t k = 0; k < 3; ++k) {
+    out.offset[k] = (*in)[k] * s;
+    to_centre[k] = -normal[k] * diameter / Real(2) - out.offset[k];
+  }
+  const Real length = std::sqrt(dot3(to_centre, to_centre));
+  if (!(length > Real(0))) return straight;
+  for (Real& c : to_centre) c /= length;
+  const Vec3Of<Real> back{-(*in)[0], -(*in)[1], -(*in)[2]};
+  const std::optional<Vec3Of<Real>> leaving = refract_bec(back, to_centre, ior);
+  if (leaving) {
+    out.direction = *leaving;
+  } else {  // total internal reflection: r = d − 2 (d·n) n
+    const Real d_n = dot3(*in, to_centre);
+    for (size_t k = 0; k < 3; ++k) out.direction[k] = (*in)[k] - Real(2) * d_n * to_centre[k];
+  }
+  return out;
+}
+
 // The IOR per colour channel (red, green, blue) of a dispersive medium: KHR_materials_dispersion's
 // `dispersion` = 20/V_d spreads it as the extension's sample implementation does,
 // halfSpread = (ior − 1)·0.025·dispersion, red ior − halfSpread, green ior, blue ior + halfSpread.

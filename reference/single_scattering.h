@@ -58,6 +58,11 @@ struct IntegrationSettings {
   // Whether translucent surfaces shadow (by their transmittance); false: they cast none,
   // as on the GPU (for comparisons with it), masked holes and opaque casters still do.
   bool translucent_shadows = true;
+  // Whether a translucent surface's reflection sees what a ray leaving toward the mirrored
+  // direction sees (the sky, or the background), as the translucency pass does with an
+  // environment cube wired; false: the uniform L_env (the background, or under an
+  // atmosphere the sky's ambient radiance), as it does without one.
+  bool directional_environment = false;
   double min_branch_weight = 1e-4;
 };
 

@@ -118,7 +118,7 @@ physics::LayerInputs<double> Renderer::layer_inputs(const SurfaceHit& hit, const
   if (lit) {
     in.emissive = emission_at(triangles_, m, hit.u, hit.v);
     in.irradiance = surface_irradiance(hit.position, hit.normal);
-    in.environment = environment_;
+    in.environment = integration_.directional_environment ? miss_radiance(reflect(direction, hit.normal)) : environment_;
   }
   in.reflectance = physics::interface_reflectance(ior, cos_view);
   double path = 0;

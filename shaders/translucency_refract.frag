@@ -6,8 +6,11 @@
 // × the layer's transmittance (replacing what is there). The ray is bent by Bec's form at
 // the entry and leaves parallel to where it came from (the slab approximation,
 // slab_exit_offset), then reaches the opaque surface behind as the straight ray would,
-// displaced. Depth-aware rejection: a sample that lands on something in front of the
-// refractor, or off the screen, falls back to the straight sample.
+// displaced; or, with refraction_shape sphere, leaves the sphere tangent at the entry
+// (HDRP's sphere model) bent twice. Depth-aware rejection: a sample that lands on something
+// in front of the refractor, or off the screen, falls back to the environment cube toward
+// the way out where one is wired, else to the straight sample; a sample that lands on the
+// sky takes the cube's sky toward the way out.
 #include "include/translucency_shadow_set.glsl"
 #include "include/translucency.glsl"
 #include "include/surface_point.glsl"
@@ -36,6 +39,14 @@ vec3 behind_color(ivec2 texel, vec2 uv, float lod) {
   return textureLod(sampler2D(refracted_color, trilinear), uv, lod).rgb;
 }
 
+// Where the refracted ray leaves the solid and which way: the slab approximation (parallel
+// to the view ray, displaced across it: slab_exit_offset) or, with refraction_shape sphere,
+// the sphere tangent at the entry (sphere_exit: the way out bent twice).
+SphereExit refracted_exit(SurfacePoint p, float ior) {
+  if (translucency.refraction.x > 0.5) return sphere_exit(p.to_camera, p.normal, ior, p.inside);
+  return SphereExit(slab_exit_offset(p.to_camera, p.normal, ior, p.inside), -p.to_camera);
+}
+
 vec3 refracted_sample_at(SurfacePoint p, float ior) {
   const ivec2 size = textureSize(sampler2D(scene_depth, nearest), 0);
   const ivec2 here = ivec2(gl_FragCoord.xy);
@@ -46,13 +57,24 @@ vec3 refracted_sample_at(SurfacePoint p, float ior) {
   // A rough interface blurs what it refracts: the chain's level of its cone's footprint.
   const float lod = refraction_blur_lod(object.emissive.w, ior, behind - p.distance, behind, translucency.options.w);
   const vec3 straight = behind_color(here, (vec2(here) + 0.5) / vec2(size), lod);
-  const vec3 offset = slab_exit_offset(p.to_camera, p.normal, ior, p.inside);
-  if (offset == vec3(0.0)) return straight;  // IOR 1 or head-on: exactly the straight sample
-  const vec4 clip = frame.view_projection * vec4(translucency.camera.xyz - p.to_camera * behind + offset, 1.0);
-  if (clip.w <= 0.0) return straight;
+  const SphereExit exit = refracted_exit(p, ior);
+  const bool slab = translucency.refraction.x < 0.5;
+  if (slab && exit.offset == vec3(0.0)) return straight;  // IOR 1 or head-on: exactly the straight sample
+  // What screen space cannot show (off the screen, behind the camera, hidden by something in
+  // front of the refractor) and the sky where the ray meets no surface: the environment
+  // toward the way out, where a cube is wired; else the straight sample.
+  const vec3 missed = has_environment_cube() ? environment_toward(exit.direction) : straight;
+  // The point the way out reaches at the distance the straight ray meets the opaque surface.
+  const vec3 exit_point = p.position + exit.offset;
+  const vec3 target = slab ? translucency.camera.xyz - p.to_camera * behind + exit.offset
+                           : exit_point + exit.direction * max(behind - p.distance - length(exit.offset), 0.0);
+  const vec4 clip = frame.view_projection * vec4(target, 1.0);
+  if (clip.w <= 0.0) return missed;
   const vec2 uv = vec2(0.5 + 0.5 * clip.x / clip.w, 0.5 - 0.5 * clip.y / clip.w);  // NDC +y is the image's top
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return straight;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return missed;
   const ivec2 there = ivec2(uv * vec2(size));
-  if (texelFetch(sampler2D(scene_depth, nearest), there, 0).r <= gl_FragCoord.z) return straight;
+  const float depth_there = texelFetch(sampler2D(scene_depth, nearest), there, 0).r;
+  if (depth_there <= gl_FragCoord.z) return missed;
+  if (depth_there >= 1.0 && has_environment_cube()) return missed;  // the sky: toward the way out, not where the pixel looks
   return textureLod(sampler2D(refracted_color, trilinear), uv, lod).rgb;
 }

@@ -58,6 +58,8 @@ struct PeelSteps {
 
 // What a solid of IOR ≠ 1 shows behind it (the `refraction` choice).
 enum class Refraction { screen_space, none };
+// The shape a refracting solid is taken to have where its ray leaves it (`refraction_shape`).
+enum class RefractionShape { slab, sphere };
 
 struct TranslucencyTable : PassTable {
   TranslucencyTable()
@@ -78,6 +80,10 @@ struct TranslucencyTable : PassTable {
       choice("refraction", Refraction::screen_space, {{Refraction::screen_space, "screen_space"}, {Refraction::none, "none"}},
              "sorted: solids of IOR ≠ 1 show refracted_color where their refracted ray lands (Sousa 2005; the slab approximation), "
              "when it is wired; none: what lies straight behind");
+  ChoiceHandle<RefractionShape> refraction_shape =
+      choice("refraction_shape", RefractionShape::slab, {{RefractionShape::slab, "slab"}, {RefractionShape::sphere, "sphere"}},
+             "screen_space: where a solid's refracted ray leaves it — slab: parallel to the view ray, displaced (exact for plane-parallel "
+             "panes); sphere: bent out of the sphere tangent at the entry whose chord is the path inside (HDRP's sphere model; exact for spheres)");
   ParamHandle<bool> dual_source = flag("dual_source", true,
                                        "sorted and depth_peeling: one draw a layer (radiance + colour × transmittance, dual-source "
                                        "blending) where the device offers it, else two");
@@ -104,6 +110,10 @@ struct TranslucencyTable : PassTable {
   SlotHandle refracted_color = optional_input("refracted_color", ResourceKind::texture2d, Usage::sampled,
                                               "a copy of `color` before this pass: what refracting solids show (generate_mips.mips: a rough "
                                               "interface reads the level its refracted cone spans, refraction_blur_lod)");
+  SlotHandle environment = optional_input("environment", ResourceKind::texture_cube, Usage::sampled,
+                                          "a cube of the radiance around (sky_cube.cube): what the surfaces reflect toward the mirrored view "
+                                          "ray, and what refracted rays screen space cannot follow (off the screen, behind the camera, the sky) "
+                                          "see toward their way out; without it the background's (or the sky's mean) uniform radiance");
   SlotHandle aerial_lookup =
       optional_input("aerial_lookup", ResourceKind::buffer, Usage::uniform_read, "atmosphere_aerial_perspective's lookup: the air in front of each surface");
   SlotHandle aerial_scattering = optional_input("aerial_scattering", ResourceKind::texture3d, Usage::sampled, "from atmosphere_aerial_perspective");
@@ -170,7 +180,7 @@ struct TranslucencyTable : PassTable {
   // What every step that shades surfaces reads, beside its own targets.
   std::vector<std::pair<SlotHandle, Usage>> with_surface_inputs(std::vector<std::pair<SlotHandle, Usage>> uses) const {
     for (const SlotHandle s : {depth, shadow_map, translucent_shadow, translucent_shadow_depth, integrated_scattering,
-                               integrated_transmittance, aerial_scattering, aerial_transmittance}) {
+                               integrated_transmittance, aerial_scattering, aerial_transmittance, environment}) {
       uses.push_back({s, Usage::sampled});
     }
     for (const SlotHandle s : {frame, light_view, fog_frame, aerial_lookup}) uses.push_back({s, Usage::uniform_read});
@@ -332,6 +342,14 @@ class TranslucencyExecution final : public PassExecution {
     const std::array<std::byte, 8> zero{};
     s.device.write_texture(no_volume_texture_, zero);
     no_volume_ = s.device.create_view(no_volume_texture_);
+    rhi::TextureDesc cube = volume;
+    cube.label = s.name() + " no environment cube";
+    cube.kind = ResourceKind::texture_cube;
+    cube.size = {1, 1, 1};
+    no_environment_texture_ = s.device.create_texture(cube);
+    const std::array<std::byte, 8 * 6> black_faces{};
+    s.device.write_texture(no_environment_texture_, black_faces);
+    no_environment_ = s.device.create_view(no_environment_texture_);
     const std::vector<std::byte> no_air(kAerialLookupBytes);
     no_aerial_lookup_ = plumbing::create_uniform_buffer(s.device, s.name() + " no aerial lookup", no_air);
   }
@@ -349,6 +367,8 @@ class TranslucencyExecution final : public PassExecution {
     b.options[1] = aired(c) ? 1.0f : 0.0f;
     b.options[2] = refracting(c) ? 1.0f : 0.0f;
     b.options[3] = float(2 * std::tan(scene.camera.fov_y_deg * M_PI / 360) / double(c.frame_size().height));  // a pixel's angle
+    b.refraction[0] = c.param(t_.refraction_shape) == RefractionShape::sphere ? 1.0f : 0.0f;
+    b.refraction[1] = c.bound(t_.environment) ? 1.0f : 0.0f;
     c.device.write_buffer(block_, 0, std::as_bytes(std::span(&b, 1)));
   }
 
@@ -374,7 +394,8 @@ class TranslucencyExecution final : public PassExecution {
     c.encoder.set_bind_group(0, c.bind_group(p, {bind(shader::frame, c.buffer(t_.frame)), bind(shader::translucency, block_),
                                                  bind(shader::scene_depth, c.view(t_.depth)), bind(shader::back_depth, back),
                                                  bind(shader::nearest, nearest), bind(shader::refracted_color, refracted),
-                                                 bind(shader::back_distance, back_distance)}));
+                                                 bind(shader::back_distance, back_distance),
+                                                 bind(shader::environment_cube, c.bound(t_.environment) ? c.view(t_.environment) : no_environment_)}));
     const bool shadow = shadowed(c), tint = tinted(c);
     c.encoder.set_bind_group(
         2, c.bind_group(p, {bind(shader::shadow_depth, shadow ? c.view(t_.shadow_map) : textures_->white()),
@@ -535,8 +556,8 @@ class TranslucencyExecution final : public PassExecution {
   const plumbing::RenderProgram none_{};  // no pipeline: a layer drawn twice
   std::array<plumbing::RenderProgram, 2> resolve_;
   rhi::BufferId block_, no_shadow_view_, no_fog_frame_, no_aerial_lookup_;
-  rhi::TextureId no_volume_texture_;
-  rhi::TextureViewId no_volume_;
+  rhi::TextureId no_volume_texture_, no_environment_texture_;
+  rhi::TextureViewId no_volume_, no_environment_;
   std::unique_ptr<plumbing::SceneGeometry> geometry_;
   std::unique_ptr<plumbing::TextureCache> textures_;
   plumbing::SceneLighting lighting_;

@@ -82,6 +82,32 @@ vec3 slab_exit_offset(vec3 to_incident, vec3 normal, float ior, float path_along
   return exit_point + to_incident * -dot(exit_point, to_incident);
 }
 
+// Where a ray leaves a solid taken locally as a sphere (HDRP's sphere refraction model): the
+// sphere tangent at the entry whose chord along the view ray is `path_along_view` (diameter
+// path / cos θi: exact for a sphere), crossed by the ray Bec refracts in (1/ior) and
+// refracted out at the exit (eta = ior; mirrored back inside at total internal reflection).
+// physics::sphere_exit.
+struct SphereExit {
+  vec3 offset;     // the exit point from the entry
+  vec3 direction;  // unit, leaving
+};
+SphereExit sphere_exit(vec3 to_incident, vec3 normal, float ior, float path_along_view) {
+  const float path = max(path_along_view, 0.0);
+  const SphereExit straight = SphereExit(-to_incident * path, -to_incident);
+  const float cos_i = dot(to_incident, normal);
+  vec3 inward;
+  if (ior == 1.0 || !(path > 0.0) || !(cos_i > 0.0) || !refract_bec(to_incident, normal, 1.0 / ior, inward)) return straight;
+  const float diameter = path / cos_i;
+  SphereExit leaving;
+  leaving.offset = inward * (-dot(inward, normal) * diameter);
+  const vec3 to_centre_unnormalised = -normal * (diameter * 0.5) - leaving.offset;
+  const float to_centre_length = length(to_centre_unnormalised);
+  if (!(to_centre_length > 0.0)) return straight;
+  const vec3 to_centre = to_centre_unnormalised / to_centre_length;
+  if (!refract_bec(-inward, to_centre, ior, leaving.direction)) leaving.direction = inward - 2.0 * dot(inward, to_centre) * to_centre;
+  return leaving;
+}
+
 // The level of a mip chain of what lies behind (generate_mips) whose texels span the cone a
 // rough interface spreads the refracted rays into (HDRP's and Frostbite's rough refraction:
 // cone width → level): GGX's lobe half-width α = roughness² (in slope) turned by 1 − 1/η

@@ -10,6 +10,8 @@ GPU_STRUCT(TranslucencyParams) {
   vec4 options;      // x: 1 where a froxel volume is wired; y: 1 where an aerial-perspective volume is;
                      // z: 1 where solids refract what lies behind them (refracted_color);
                      // w: the angle a pixel spans at the frame's centre (rad), 2 tan(fov_y/2) / height
+  vec4 refraction;   // x: 1 where solids refract as spheres (refraction_shape sphere), 0 as slabs;
+                     // y: 1 where an environment cube is wired (reflections, refracted rays screen space misses)
 };
 GPU_END
 

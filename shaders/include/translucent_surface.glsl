@@ -24,6 +24,7 @@ layout(set = 0, binding = 3) uniform texture2D back_depth;   // the solid transl
 layout(set = 0, binding = 4) uniform sampler nearest;
 layout(set = 0, binding = 5) uniform texture2D refracted_color;  // the colour before the pass (screen-space refraction)
 layout(set = 0, binding = 6) uniform texture2D back_distance;    // r32f: back_depth's surface's distance from the camera (m)
+layout(set = 0, binding = 7) uniform textureCube environment_cube;  // what the surfaces reflect (a 1-texel stand-in when none is wired)
 
 layout(set = 3, binding = 0) uniform FogBlock { FogFrame f; } fog;
 layout(set = 3, binding = 1) uniform texture3D integrated_scattering;
@@ -32,6 +33,14 @@ layout(set = 3, binding = 3) uniform sampler trilinear;
 layout(set = 3, binding = 4) uniform AerialBlock { AerialLookup f; } air;
 layout(set = 3, binding = 5) uniform texture3D aerial_scattering;
 layout(set = 3, binding = 6) uniform texture3D aerial_transmittance;
+
+// The environment's radiance toward `direction`: the wired cube's (sky_cube), else the
+// uniform radiance of the block (the background, or the sky's mean under an atmosphere).
+bool has_environment_cube() { return translucency.refraction.y > 0.5; }
+vec3 environment_toward(vec3 direction) {
+  if (!has_environment_cube()) return translucency.environment.rgb;
+  return textureLod(samplerCube(environment_cube, trilinear), direction, 0.0).rgb;
+}
 
 layout(location = 0) in vec3 world_position;
 layout(location = 1) in vec3 world_normal;
@@ -99,7 +108,7 @@ void main() {
   l.albedo = albedo;
   l.emissive = emission;
   l.irradiance = surface_irradiance(world_position, n);
-  l.environment = translucency.environment.rgb;
+  l.environment = environment_toward(reflect(-to_camera / distance_to_fragment, n));  // the mirrored view ray
   const float inside = inside_path(cos_view, distance_to_fragment, thickness, object.translucency.z);  // along the view ray (refraction's offset needs it)
   SurfaceLayer layer = layer_at_ior(l, object.translucency.z, cos_view, inside);
   if (dispersive()) {

@@ -141,3 +141,59 @@ TEST(Translucency, TheRefractionBlurLevelIsTheConesFootprintInPixels) {
 
 }  // namespace
 }  // namespace volgraph::physics
+
+namespace volgraph::physics {
+namespace {
+
+using Vec3d = Vec3Of<double>;
+
+Vec3d unit_of(const Vec3d& v) {
+  const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return {v[0] / l, v[1] / l, v[2] / l};
+}
+double dot_of(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// A ball of radius 1 at the origin: a ray from `origin` along unit `d` enters it, is bent by
+// Bec's form, meets the sphere again and leaves by Bec's form — the exact two interfaces —
+// and sphere_exit, given only the entry, its normal and the chord along the view ray, finds
+// the same exit point and direction (to double rounding) at IOR 1.2, 1.5 and 2.4.
+TEST(Translucency, TheSphereModelLeavesABallWhereTheBallIsLeft) {
+  for (const double ior : {1.2, 1.5, 2.4}) {
+    for (const double height : {0.0, 0.3, 0.6, 0.9}) {
+      const Vec3d origin{height, 0.2 * height, 5}, d{0, 0, -1};
+      // Entry: |origin + t d| = 1, the nearer root; the chord along the view ray to the far root.
+      const double b = dot_of(origin, d), c = dot_of(origin, origin) - 1, root = std::sqrt(b * b - c);
+      const double t_in = -b - root, chord = 2 * root;
+      const Vec3d entry{origin[0] + t_in * d[0], origin[1] + t_in * d[1], origin[2] + t_in * d[2]};
+      const Vec3d to_incident{-d[0], -d[1], -d[2]};
+      const Vec3d normal = unit_of(entry);
+      const SphereExit<double> model = sphere_exit(to_incident, normal, ior, chord);
+      // The exact path.
+      const Vec3d inside = *refract_bec(to_incident, normal, 1 / ior);
+      const double s = -2 * dot_of(entry, inside);  // the second root of |entry + s inside| = 1
+      const Vec3d exit{entry[0] + s * inside[0], entry[1] + s * inside[1], entry[2] + s * inside[2]};
+      const Vec3d exit_normal_inward{-exit[0], -exit[1], -exit[2]};
+      const std::optional<Vec3d> out = refract_bec(Vec3d{-inside[0], -inside[1], -inside[2]}, exit_normal_inward, ior);
+      ASSERT_TRUE(out);
+      for (size_t k = 0; k < 3; ++k) {
+        EXPECT_NEAR(entry[k] + model.offset[k], exit[k], 1e-12) << "ior " << ior << " height " << height;
+        EXPECT_NEAR(model.direction[k], (*out)[k], 1e-12) << "ior " << ior << " height " << height;
+      }
+    }
+  }
+}
+
+// Straight through where nothing bends it: IOR 1, no path, a grazing entry.
+TEST(Translucency, TheSphereModelGoesStraightWithoutAnInterface) {
+  const Vec3d to_incident{0, 0, 1}, normal = unit_of({0.3, 0, 1});
+  for (const auto& [ior, path] : {std::pair{1.0, 0.7}, std::pair{1.5, 0.0}}) {
+    const SphereExit<double> e = sphere_exit(to_incident, normal, ior, path);
+    EXPECT_EQ(e.direction, (Vec3d{0, 0, -1}));
+    EXPECT_EQ(e.offset, (Vec3d{0, 0, -path}));
+  }
+  const SphereExit<double> grazing = sphere_exit(to_incident, Vec3d{1, 0, 0}, 1.5, 0.5);
+  EXPECT_EQ(grazing.direction, (Vec3d{0, 0, -1}));
+}
+
+}  // namespace
+}  // namespace volgraph::physics
