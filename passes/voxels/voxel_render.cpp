@@ -95,7 +95,7 @@ struct VoxelFaceMeshes {
 };
 
 // FNV-1a over bytes: the key of an object's triangles (in the grid's coordinates) and grid.
-uint64_t content_hash(std::span<const std::byte> bytes, uint64_t hash = 14695981039346656037ull) {
+uint64_t voxel_content_hash(std::span<const std::byte> bytes, uint64_t hash = 14695981039346656037ull) {
   for (const std::byte b : bytes) hash = (hash ^ uint64_t(b)) * 1099511628211ull;
   return hash;
 }
@@ -108,7 +108,7 @@ std::shared_ptr<const VoxelFaceMeshes> voxel_face_meshes(const Scene& scene, siz
   const std::vector<voxels::Triangle> triangles = voxels::world_triangles(scene, object);
   const gpu::VoxelGrid grid = voxels::grid_around(triangles, resolution);
   const std::vector<float> corners = voxels::grid_corners(triangles, grid);
-  const std::pair key{content_hash(std::as_bytes(std::span(&grid, 1)), content_hash(std::as_bytes(std::span(corners)))), resolution};
+  const std::pair key{voxel_content_hash(std::as_bytes(std::span(&grid, 1)), voxel_content_hash(std::as_bytes(std::span(corners)))), resolution};
   const std::lock_guard lock(mutex);
   if (const auto found = cache.find(key); found != cache.end()) return found->second;
   auto meshes = std::make_shared<VoxelFaceMeshes>();

@@ -16,6 +16,8 @@
 #include "passes/passes.h"
 #include "passes/voxels/voxel_faces.h"
 #include "passes/voxels/voxel_mesh.h"
+#include "passes/voxels/voxel_shading.h"
+#include "physics/camera.h"
 #include "tests/gpu/backends.h"
 #include "tests/support/image_compare.h"
 
@@ -76,13 +78,13 @@ constexpr int kFaceEdgePixels = 3;
 
 // Where both hit, the distance within 1e-4 relative; the colour within one fp16 step except at
 // kFaceEdgePixels pixels at most (another face's colour, its distance still within 1e-4).
-struct Agreement {
+struct FaceImageAgreement {
   int both = 0, only_first = 0, only_second = 0, colour_differs = 0, bits_differ = 0;
   double worst_distance = 0;
 };
 
-Agreement agreement(const Texels& first_colour, const Texels& first_hit, const Texels& second_colour, const Texels& second_hit) {
-  Agreement r;
+FaceImageAgreement face_image_agreement(const Texels& first_colour, const Texels& first_hit, const Texels& second_colour, const Texels& second_hit) {
+  FaceImageAgreement r;
   for (size_t p = 0; p < size_t(first_hit.width) * first_hit.height; ++p) {
     const float a = first_hit.rgba[4 * p], b = second_hit.rgba[4 * p];
     bool bits_differ = a != b, colour_differs = false;
@@ -106,7 +108,7 @@ Agreement agreement(const Texels& first_colour, const Texels& first_hit, const T
 
 TEST_P(VoxelFaces, FacesDrawWhatTheDdaCasts) {
   ASSERT_TRUE(all_finite(out_[2]) && all_finite(out_[3]));
-  const Agreement r = agreement(out_[0], out_[1], out_[2], out_[3]);
+  const FaceImageAgreement r = face_image_agreement(out_[0], out_[1], out_[2], out_[3]);
   std::printf("dda against faces (greedy): %d pixels both hit, %d only dda, %d only faces; worst relative distance %.2e; "
               "%d pixels past one fp16 step in colour\n", r.both, r.only_first, r.only_second, r.worst_distance, r.colour_differs);
   EXPECT_GT(r.both, 1000);
@@ -115,8 +117,37 @@ TEST_P(VoxelFaces, FacesDrawWhatTheDdaCasts) {
   EXPECT_LE(r.colour_differs, kFaceEdgePixels);
 }
 
+// Every hit pixel of faces is one of the six faces' flat Lambert radiances by the C++ twin of
+// the shading header (shaders/include/voxel_shading.h), within one fp16 step.
+TEST_P(VoxelFaces, FacesAreShadedByTheSharedLambert) {
+  const Scene& scene = config_.config.scene;
+  const Vec3 sun = physics::normalize(scene.lights.at(0).direction);
+  const glm::vec4 to_light(-float(sun[0]), -float(sun[1]), -float(sun[2]), 1.0f);
+  std::vector<glm::vec3> radiances;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const float sign : {-1.0f, 1.0f}) {
+      glm::vec3 normal(0.0f);
+      normal[axis] = sign;
+      radiances.push_back(voxels::shading::voxel_face_radiance(normal, glm::vec3(0, 0, -1), to_light, glm::vec3(3.0f), glm::vec3(0.8f, 0.55f, 0.3f)));
+    }
+  int hits = 0, unmatched = 0;
+  for (size_t p = 0; p < size_t(out_[3].width) * out_[3].height; ++p) {
+    if (out_[3].rgba[4 * p] <= 0) continue;
+    ++hits;
+    const bool matched = std::any_of(radiances.begin(), radiances.end(), [&](const glm::vec3& l) {
+      for (int k = 0; k < 3; ++k)
+        if (!within_one_half_step(out_[2].rgba[4 * p + size_t(k)], l[k])) return false;
+      return true;
+    });
+    unmatched += !matched;
+  }
+  std::printf("%d hit pixels, %d not one of the six faces' radiances\n", hits, unmatched);
+  EXPECT_GT(hits, 1000);
+  EXPECT_EQ(unmatched, 0);
+}
+
 TEST_P(VoxelFaces, GreedyAndCulledQuadsDrawTheSameImage) {
-  const Agreement r = agreement(out_[2], out_[3], out_[4], out_[5]);
+  const FaceImageAgreement r = face_image_agreement(out_[2], out_[3], out_[4], out_[5]);
   std::printf("greedy against culled: %d pixels both hit, %d only greedy, %d only culled; worst relative distance %.2e; "
               "%d pixels differ in any bit, %d past one fp16 step in colour\n",
               r.both, r.only_first, r.only_second, r.worst_distance, r.bits_differ, r.colour_differs);
