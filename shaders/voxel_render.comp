@@ -1,14 +1,16 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// voxel_render, variant dda (passes/voxels/voxel_render.cpp): per pixel, the camera ray against
-// the grid's box (slab method), then Amanatides & Woo 1987's DDA from voxel to voxel to the
-// first set one; Lambert by the normal of the face the ray entered it through, over the scene's
-// colour where it misses or the scene is nearer. `hit`: the distance (m) along the ray to the
-// entered face, 0 where nothing is hit.
+// voxel_render's compute step (passes/voxels/voxel_render.cpp). Variant dda: per pixel, the
+// camera ray against the grid's box (slab method), then Amanatides & Woo 1987's DDA from voxel
+// to voxel to the first set one; Lambert by the normal of the face the ray entered it through
+// (include/voxel_shading.h), over the scene's colour where it misses or the scene is nearer.
+// `hit`: the distance (m) along the ray to the entered face, 0 where nothing is hit. Variant
+// faces: the scene's colour and hit 0 everywhere, what voxel_faces.frag draws its quads over.
 #include "include/voxel_render_params.h"
 #include "include/voxel_grid.h"
 #include "include/view_rays.glsl"
 #include "include/depth_buffer.glsl"
+#include "include/voxel_shading.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -21,7 +23,6 @@ layout(set = 0, binding = 5) uniform sampler nearest;
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image2D color;
 layout(set = 0, binding = 7, r32f) uniform writeonly image2D hit;
 
-const float kPi = 3.14159265358979;
 const float kFar = 1e30;
 
 bool solid(ivec3 voxel) { return texelFetch(sampler3D(voxels, nearest), voxel, 0).r > 0.5; }
@@ -62,14 +63,6 @@ vec2 traverse(vec3 o, vec3 d) {
   return vec2(-1.0);
 }
 
-// Lambert (DESIGN.md: ρ/π · E · cos θ), lit by the scene's sun or a headlight of irradiance π.
-vec3 shade(vec3 normal, vec3 d) {
-  const bool lit = params.light_direction.w > 0.5;
-  const vec3 to_light = lit ? params.light_direction.xyz : -d;
-  const vec3 irradiance = lit ? params.light_irradiance.rgb : vec3(kPi);
-  return params.albedo.rgb / kPi * irradiance * max(dot(normal, to_light), 0.0);
-}
-
 void main() {
   const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy), size = imageSize(color);
   if (any(greaterThanEqual(pixel, size))) return;
@@ -80,7 +73,7 @@ void main() {
   const float surface_z = linear_view_depth(texelFetch(sampler2D(scene_depth, nearest), pixel, 0).r,
                                             params.view.position.w, params.view.forward.w);
   const float surface_distance = surface_z * length(ray);
-  const vec2 found = traverse(o, d);
+  const vec2 found = params.variant.x == VOXEL_RENDER_DDA ? traverse(o, d) : vec2(-1.0);
   const float distance = found.x * voxel_side;
   vec3 result = texelFetch(sampler2D(scene_color, nearest), pixel, 0).rgb;
   float hit_distance = 0.0;
@@ -91,7 +84,7 @@ void main() {
       normal = vec3(0.0);
       normal[axis] = -sign(d[axis]);
     }
-    result = shade(normal, d);
+    result = voxel_face_radiance(normal, d, params.light_direction, params.light_irradiance.rgb, params.albedo.rgb);
     hit_distance = distance;
   }
   imageStore(color, pixel, vec4(result, 1.0));

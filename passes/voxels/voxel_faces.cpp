@@ -1,6 +1,8 @@
 // Culled and greedily merged cube-face meshes of a voxel grid (RTR4 13.10).
 #include "passes/voxels/voxel_faces.h"
 
+#include <utility>
+
 namespace volgraph::voxels {
 namespace {
 
@@ -95,6 +97,28 @@ std::vector<FaceQuad> greedy_faces(const std::vector<uint8_t>& solid, int resolu
           mask[size_t(j) * resolution + i] = face_exposed(solid, resolution, voxel_in_slice(d, layer, i, j), d);
       merge_mask(mask, resolution, d, layer, out);
     }
+  return out;
+}
+
+FaceTriangles face_triangles(const std::vector<FaceQuad>& quads, glm::vec3 origin, float voxel_side) {
+  FaceTriangles out;
+  out.vertices.reserve(quads.size() * 4 * kFaceVertexFloats);
+  out.indices.reserve(quads.size() * 6);
+  for (const FaceQuad& q : quads) {
+    int axis = 0;
+    while (q.normal[axis] == 0) ++axis;
+    // Along u then v (cyclic after the normal's axis, u × v = +axis) is counter-clockwise seen from +axis.
+    glm::ivec3 along_u(0), along_v(0);
+    along_u[(axis + 1) % 3] = q.size[(axis + 1) % 3];
+    along_v[(axis + 2) % 3] = q.size[(axis + 2) % 3];
+    if (q.normal[axis] < 0) std::swap(along_u, along_v);
+    const uint32_t first = uint32_t(out.vertices.size() / kFaceVertexFloats);
+    for (const glm::ivec3 corner : {q.corner, q.corner + along_u, q.corner + along_u + along_v, q.corner + along_v}) {
+      const glm::vec3 p = origin + voxel_side * glm::vec3(corner);
+      out.vertices.insert(out.vertices.end(), {p.x, p.y, p.z, float(q.normal.x), float(q.normal.y), float(q.normal.z)});
+    }
+    out.indices.insert(out.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+  }
   return out;
 }
 

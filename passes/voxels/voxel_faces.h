@@ -31,4 +31,16 @@ std::vector<FaceQuad> culled_faces(const std::vector<uint8_t>& solid, int resolu
 // culled faces, each once.
 std::vector<FaceQuad> greedy_faces(const std::vector<uint8_t>& solid, int resolution);
 
+// Floats per vertex of face_triangles: the world position (m) and the outward unit normal.
+constexpr uint32_t kFaceVertexFloats = 6;
+
+// Quads as the rasterizer draws them (voxel_render's faces variant).
+struct FaceTriangles {
+  std::vector<float> vertices;    // four a quad, kFaceVertexFloats each
+  std::vector<uint32_t> indices;  // two triangles a quad, counter-clockwise seen from the normal's side
+};
+
+// The quads in the world: voxel units carried by the grid's placement, world = origin + side · p.
+FaceTriangles face_triangles(const std::vector<FaceQuad>& quads, glm::vec3 origin, float voxel_side);
+
 }  // namespace volgraph::voxels

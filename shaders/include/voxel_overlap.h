@@ -10,11 +10,11 @@
 #ifndef VOLGRAPH_VOXEL_OVERLAP_H
 #define VOLGRAPH_VOXEL_OVERLAP_H
 
+#include "voxel_fn.h"
+
 #ifdef __cplusplus
-#define VOXEL_FN inline
 #define VOXEL_PRECISE
 #else
-#define VOXEL_FN
 #define VOXEL_PRECISE precise
 #endif
 

@@ -114,6 +114,33 @@ TEST(VoxelFaces, GreedyQuadsCoverExactlyTheCulledFaces) {
 
 // The demo model (configs/demo_voxels.json's voxelized object at its resolution) as naive cubes
 // (6 faces per solid voxel), culled faces and greedy quads, as RTR4 13.10's figure reports them.
+// The quads as triangles: two a quad, counter-clockwise seen from the normal's side (their
+// cross product along the normal), their areas summing to the quads' (world = origin + side · p).
+TEST(VoxelFaces, TrianglesAreTwoPerQuadFacingTheNormal) {
+  std::mt19937 random(11);
+  std::bernoulli_distribution half(0.5);
+  const int n = 6;
+  std::vector<uint8_t> solid(size_t(n) * n * n);
+  for (uint8_t& s : solid) s = half(random);
+  const std::vector<FaceQuad> quads = greedy_faces(solid, n);
+  const float side = 0.25f;
+  const FaceTriangles mesh = face_triangles(quads, glm::vec3(1, -2, 3), side);
+  ASSERT_EQ(mesh.indices.size(), 6 * quads.size());
+  ASSERT_EQ(mesh.vertices.size(), 4 * kFaceVertexFloats * quads.size());
+  const auto position = [&](uint32_t v) { return glm::dvec3(mesh.vertices[v * kFaceVertexFloats], mesh.vertices[v * kFaceVertexFloats + 1], mesh.vertices[v * kFaceVertexFloats + 2]); };
+  for (size_t q = 0; q < quads.size(); ++q) {
+    double area = 0;
+    for (size_t t = 2 * q; t < 2 * q + 2; ++t) {
+      const glm::dvec3 a = position(mesh.indices[3 * t]), b = position(mesh.indices[3 * t + 1]), c = position(mesh.indices[3 * t + 2]);
+      const glm::dvec3 normal_times_twice_area = glm::cross(b - a, c - a);
+      EXPECT_GT(glm::dot(normal_times_twice_area, glm::dvec3(quads[q].normal)), 0) << "quad " << q;
+      EXPECT_NEAR(glm::length(glm::cross(normal_times_twice_area, glm::dvec3(quads[q].normal))), 0, 1e-9) << "quad " << q;
+      area += 0.5 * glm::length(normal_times_twice_area);
+    }
+    EXPECT_NEAR(area, double(face_count(quads[q])) * side * side, 1e-9) << "quad " << q;
+  }
+}
+
 TEST(VoxelFaces, TheDemoModelsQuadCounts) {
   const std::string path = std::string(::volgraph::testing::source_dir()) + "/configs/demo_voxels.json";
   PassRegistry registry;
