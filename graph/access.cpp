@@ -80,7 +80,7 @@ bool usage_fits_kind(Usage usage, ResourceKind kind) {
     case Usage::color_attachment_load:
     case Usage::depth_attachment:
     case Usage::depth_read:
-      return kind == ResourceKind::texture2d;
+      return kind == ResourceKind::texture2d || kind == ResourceKind::texture_cube;  // a cube: a face at a time (PassSetup::face_view)
     default:
       return true;
   }

@@ -61,6 +61,8 @@ class PassSetup {
   rhi::TextureViewId view(SlotHandle slot) const { return resources_.view(resource(slot)); }
   // One mip level of the slot's texture (storage images take one level: generate_mips).
   rhi::TextureViewId view(SlotHandle slot, uint32_t level) const { return resources_.level_view(resource(slot), level); }
+  // One face of the slot's cube at level 0 (a render target: scene_probe draws each face).
+  rhi::TextureViewId face_view(SlotHandle slot, uint32_t face) const { return resources_.face_view(resource(slot), face); }
   rhi::BufferId buffer(SlotHandle slot) const { return resources_.buffer(resource(slot)); }
   // The integer parameter `param` of the pass that makes the resource wired to `slot`: a
   // reader takes its input's shape from its producer (one source for it, never a copy of

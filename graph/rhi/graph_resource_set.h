@@ -21,6 +21,9 @@ class GraphResourceSet {
   // One mip level alone (storage images and attachments take one level); level 0 of a
   // texture without a chain is view().
   virtual TextureViewId level_view(uint32_t resource, uint32_t level) const = 0;
+  // One face of a texture_cube (0–5: +x, −x, +y, −y, +z, −z) at level 0 as a 2D view: a
+  // render target (colour or depth attachment); none for other kinds.
+  virtual TextureViewId face_view(uint32_t resource, uint32_t face) const = 0;
   virtual BufferId buffer(uint32_t resource) const = 0;
   // The two resources trade their objects (a history pair, every frame; graph.h).
   virtual void swap(uint32_t a, uint32_t b) = 0;

@@ -149,6 +149,14 @@ void GraphResources::create_view(uint32_t r) {
     name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view), d.name + " level " + std::to_string(level));
     o.level_views.push_back(view);
   }
+  for (uint32_t face = 0; cube && face < layers; ++face) {
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.subresourceRange = {aspect_of(d.format), 0, 1, face, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    check(vkCreateImageView(context_.device(), &info, nullptr, &view), "vkCreateImageView");
+    name(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view), d.name + " face " + std::to_string(face));
+    o.face_views.push_back(view);
+  }
 }
 
 void GraphResources::name(VkObjectType type, uint64_t handle, const std::string& text) const {
@@ -161,6 +169,7 @@ GraphResources::~GraphResources() {
   for (const Object& o : objects_) {
     if (o.view) vkDestroyImageView(device, o.view, nullptr);
     for (VkImageView level : o.level_views) vkDestroyImageView(device, level, nullptr);
+    for (VkImageView face : o.face_views) vkDestroyImageView(device, face, nullptr);
     if (o.image) vkDestroyImage(device, o.image, nullptr);
     if (o.buffer) vkDestroyBuffer(device, o.buffer, nullptr);
   }

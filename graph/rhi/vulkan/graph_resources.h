@@ -37,6 +37,11 @@ class GraphResources {
     const std::vector<VkImageView>& levels = objects_[resource].level_views;
     return level < levels.size() ? levels[level] : VK_NULL_HANDLE;
   }
+  // One face of a cube at level 0 (attachments); VK_NULL_HANDLE for other kinds.
+  VkImageView face_view(uint32_t resource, uint32_t face) const {
+    const std::vector<VkImageView>& faces = objects_[resource].face_views;
+    return face < faces.size() ? faces[face] : VK_NULL_HANDLE;
+  }
   VkBuffer buffer(uint32_t resource) const { return objects_[resource].buffer; }
   // Bytes allocated for the plan's heaps (transients) and for persistent resources.
   uint64_t transient_bytes() const { return transient_bytes_; }
@@ -47,6 +52,7 @@ class GraphResources {
     VkImage image = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE;  // made once the image is bound: every mip level
     std::vector<VkImageView> level_views;  // a mip chain's levels, one view each
+    std::vector<VkImageView> face_views;   // a cube's faces at level 0, one 2D view each
     VkBuffer buffer = VK_NULL_HANDLE;
     VkImageUsageFlags usage = 0;
     VkMemoryRequirements requirements{};

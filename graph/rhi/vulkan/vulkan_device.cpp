@@ -726,6 +726,7 @@ class VulkanGraphResources final : public rhi::GraphResourceSet {
     textures_.assign(graph_.resources.size(), {});
     views_.assign(graph_.resources.size(), {});
     level_views_.assign(graph_.resources.size(), {});
+    face_views_.assign(graph_.resources.size(), {});
     buffers_.assign(graph_.resources.size(), {});
     for (uint32_t r = 0; r < graph_.resources.size(); ++r) {
       if (plan.lifetimes[r].first == kNone) continue;
@@ -739,6 +740,9 @@ class VulkanGraphResources final : public rhi::GraphResourceSet {
       for (uint32_t level = 0; resources_.level_view(r, level); ++level) {
         level_views_[r].push_back(device_.import_view(resources_.level_view(r, level), textures_[r]));
       }
+      for (uint32_t face = 0; resources_.face_view(r, face); ++face) {
+        face_views_[r].push_back(device_.import_view(resources_.face_view(r, face), textures_[r]));
+      }
     }
   }
 
@@ -748,11 +752,16 @@ class VulkanGraphResources final : public rhi::GraphResourceSet {
     const std::vector<rhi::TextureViewId>& levels = level_views_.at(r);
     return levels.empty() && level == 0 ? views_.at(r) : levels.at(level);
   }
+  rhi::TextureViewId face_view(uint32_t r, uint32_t face) const override {
+    const std::vector<rhi::TextureViewId>& faces = face_views_.at(r);
+    return face < faces.size() ? faces[face] : rhi::TextureViewId{};
+  }
   rhi::BufferId buffer(uint32_t r) const override { return buffers_.at(r); }
   void swap(uint32_t a, uint32_t b) override {
     std::swap(textures_.at(a), textures_.at(b));
     std::swap(views_.at(a), views_.at(b));
     std::swap(level_views_.at(a), level_views_.at(b));
+    std::swap(face_views_.at(a), face_views_.at(b));
     std::swap(buffers_.at(a), buffers_.at(b));
   }
 
@@ -763,6 +772,7 @@ class VulkanGraphResources final : public rhi::GraphResourceSet {
   std::vector<rhi::TextureId> textures_;
   std::vector<rhi::TextureViewId> views_;
   std::vector<std::vector<rhi::TextureViewId>> level_views_;  // a mip chain's levels
+  std::vector<std::vector<rhi::TextureViewId>> face_views_;   // a cube's faces
   std::vector<rhi::BufferId> buffers_;
 };
 

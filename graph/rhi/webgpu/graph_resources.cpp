@@ -40,6 +40,7 @@ void WebGpuGraphResources::swap(uint32_t a, uint32_t b) {
   std::swap(textures_.at(a), textures_.at(b));
   std::swap(views_.at(a), views_.at(b));
   std::swap(level_views_.at(a), level_views_.at(b));
+  std::swap(face_views_.at(a), face_views_.at(b));
   std::swap(buffers_.at(a), buffers_.at(b));
 }
 
@@ -48,6 +49,7 @@ void WebGpuGraphResources::bind(const Plan& plan) {
   textures_.assign(graph_.resources.size(), {});
   views_.assign(graph_.resources.size(), {});
   level_views_.assign(graph_.resources.size(), {});
+  face_views_.assign(graph_.resources.size(), {});
   buffers_.assign(graph_.resources.size(), {});
   for (uint32_t i = 0; i < pool.objects.size(); ++i) create_object(pool.objects[i], i);
 }
@@ -64,7 +66,7 @@ void WebGpuGraphResources::create_object(const PooledObject& object, uint32_t in
   const std::string label = d.name + " (pooled object " + std::to_string(index) + ")";
   rhi::TextureId texture;
   rhi::TextureViewId view;
-  std::vector<rhi::TextureViewId> level_views;
+  std::vector<rhi::TextureViewId> level_views, face_views;
   rhi::BufferId buffer;
   if (d.kind == ResourceKind::buffer) {
     const wgpu::BufferUsage usage = buffer_usage == wgpu::BufferUsage::None ? wgpu::BufferUsage::CopyDst : buffer_usage;
@@ -92,6 +94,14 @@ void WebGpuGraphResources::create_object(const PooledObject& object, uint32_t in
       one.mipLevelCount = 1;
       level_views.push_back(device_.add_view(made.CreateView(&one)));
     }
+    for (uint32_t face = 0; (texture_usage & kViewable) && cube && face < array_layers(d.kind); ++face) {
+      wgpu::TextureViewDescriptor one;
+      one.dimension = wgpu::TextureViewDimension::e2D;
+      one.mipLevelCount = 1;
+      one.baseArrayLayer = face;
+      one.arrayLayerCount = 1;
+      face_views.push_back(device_.add_view(made.CreateView(&one)));
+    }
   }
   (object.persistent ? created_.persistent_objects : created_.transient_objects) += 1;
   if (!object.persistent) created_.transient_bytes += estimate_requirements(d).size;
@@ -99,6 +109,7 @@ void WebGpuGraphResources::create_object(const PooledObject& object, uint32_t in
     textures_[r] = texture;
     views_[r] = view;
     level_views_[r] = level_views;
+    face_views_[r] = face_views;
     buffers_[r] = buffer;
   }
 }

@@ -31,6 +31,10 @@ class WebGpuGraphResources final : public rhi::GraphResourceSet {
     const std::vector<rhi::TextureViewId>& levels = level_views_.at(resource);
     return levels.empty() && level == 0 ? views_.at(resource) : levels.at(level);
   }
+  rhi::TextureViewId face_view(uint32_t resource, uint32_t face) const override {
+    const std::vector<rhi::TextureViewId>& faces = face_views_.at(resource);
+    return face < faces.size() ? faces[face] : rhi::TextureViewId{};
+  }
   rhi::BufferId buffer(uint32_t resource) const override { return buffers_.at(resource); }
   void swap(uint32_t a, uint32_t b) override;
 
@@ -52,6 +56,7 @@ class WebGpuGraphResources final : public rhi::GraphResourceSet {
   std::vector<rhi::TextureId> textures_;  // per graph resource: its pooled object's
   std::vector<rhi::TextureViewId> views_;
   std::vector<std::vector<rhi::TextureViewId>> level_views_;  // a mip chain's levels, one view each (storage takes one)
+  std::vector<std::vector<rhi::TextureViewId>> face_views_;   // a cube's faces at level 0 (attachments)
   std::vector<rhi::BufferId> buffers_;
   Created created_;
 };
