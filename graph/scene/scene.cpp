@@ -1,5 +1,7 @@
 #include "graph/scene/scene.h"
 
+#include <filesystem>
+
 namespace volgraph {
 namespace {
 
@@ -209,6 +211,27 @@ void hash_clouds(SceneHasher& h, const std::optional<CloudLayer>& clouds) {
   for (const double v : {c.weather_map->size, c.weather_map->offset[0], c.weather_map->offset[1]}) h.add(v);
 }
 
+// The volume file's path, its layout and window, and the file's size and time of last
+// change (a rewritten file gives another key; the header's detached data file is not watched).
+void hash_volume_data(SceneHasher& h, const std::optional<VolumeData>& volume) {
+  h.add(volume.has_value());
+  if (!volume) return;
+  const VolumeData& v = *volume;
+  h.add(v.file);
+  std::error_code error;
+  const auto bytes = std::filesystem::file_size(v.file, error);
+  h.add(int64_t(error ? -1 : int64_t(bytes)));
+  const auto changed = std::filesystem::last_write_time(v.file, error);
+  h.add(int64_t(error ? -1 : int64_t(changed.time_since_epoch().count())));
+  h.add(v.window.has_value());
+  if (v.window) h.add((*v.window)[0]), h.add((*v.window)[1]);
+  h.add(v.raw);
+  h.add(v.raw_type);
+  for (const int64_t n : v.raw_sizes) h.add(n);
+  h.add(v.raw_spacing);
+  h.add(v.raw_big_endian);
+}
+
 }  // namespace
 
 uint64_t Scene::hash(ScenePartMask parts) const {
@@ -221,6 +244,7 @@ uint64_t Scene::hash(ScenePartMask parts) const {
   if (parts & part_bit(ScenePart::background)) h.add(background);
   if (parts & part_bit(ScenePart::atmosphere)) hash_atmosphere(h, atmosphere, lights);
   if (parts & part_bit(ScenePart::clouds)) hash_clouds(h, clouds);
+  if (parts & part_bit(ScenePart::volume_data)) hash_volume_data(h, volume_data);
   return h.value();
 }
 

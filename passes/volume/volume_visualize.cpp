@@ -1,5 +1,6 @@
 // volume_visualize: a scalar 3D texture (volume_phantom's `density`) drawn over the scene
-// (RTR4 14.3.1). The volume fills the world box of `center` and `extent` (a cube); each
+// (RTR4 14.3.1). The volume fills the world box of `center` and `extent` (a cube, or with
+// `box: volume_data` the scene's volume file's proportions, sizes × spacing); each
 // pixel's ray through it, clipped by the scene's depth, is either
 //   raymarch:   marched front to back in `steps` equal steps with emission-absorption, each
 //               sample's colour and opacity from the 1D transfer function (a preset table,
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
@@ -26,6 +28,7 @@
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/sun_for_shader.h"
 #include "passes/register_pass.h"
+#include "passes/volume/volume_file_reader.h"
 #include "physics/volume_transfer.h"
 #include "physics/camera.h"
 #include "shaders/bindings/volume_slices.frag.h"
@@ -38,11 +41,17 @@ namespace volume_visualize_shader = shaders::volume_visualize_comp;
 
 // The transfer function's table (physics/volume_transfer.h's presets).
 enum class TransferPreset : uint8_t { shells, grey, constant };
+// The box's shape: a cube, or the proportions of the scene's volume file (sizes × spacing).
+enum class BoxShape : uint8_t { cube, volume_data };
+
+std::vector<ParamProblem> volume_box_problems(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params);
 
 struct VolumeVisualizeTable : PassTable {
   VolumeVisualizeTable()
       : PassTable("volume_visualize", PassKind::compute,
-                  "A scalar volume over the scene: ray marched with a 1D transfer function, or its isosurface (RTR4 14.3.1).") {}
+                  "A scalar volume over the scene: ray marched with a 1D transfer function, or its isosurface (RTR4 14.3.1).") {
+    decl.check_scene = volume_box_problems;
+  }
   // Variants.
   VariantHandle raymarch = variant("raymarch", "front-to-back emission-absorption with the transfer function, opacity corrected per step",
                                    VOLUME_VISUALIZE_RAYMARCH);
@@ -52,7 +61,9 @@ struct VolumeVisualizeTable : PassTable {
                                            "opacity corrected for the slices' spacing along its ray", VOLUME_VISUALIZE_SLICES);
   // Parameters.
   ParamHandle<std::array<double, 3>> center = vec3("center", {0, 1, 0}, -1e6, 1e6, "m", "the volume's box's centre");
-  ParamHandle<double> extent = number("extent", 2, 1e-6, 1e6, "m", "the volume's box's side (a cube)");
+  ParamHandle<double> extent = number("extent", 2, 1e-6, 1e6, "m", "the volume's box's side (its longest side when `box` is volume_data)");
+  ChoiceHandle<BoxShape> box = choice("box", BoxShape::cube, {{BoxShape::cube, "cube"}, {BoxShape::volume_data, "volume_data"}},
+                                      "the box's shape: a cube of side `extent`, or the scene's volume file's sizes × spacing, its longest side `extent`");
   ParamHandle<int64_t> steps = integer("steps", 128, 1, 4096, "", "equal steps over the ray's segment inside the box");
   ParamHandle<int64_t> slice_count = integer("slices", 128, 1, 4096, "", "slices: view-aligned planes over the box's view-depth range");
   ParamHandle<int64_t> bisections = integer("bisections", 8, 0, 32, "", "isosurface: halvings of the step where the density crosses `iso`");
@@ -88,6 +99,26 @@ struct VolumeVisualizeTable : PassTable {
                                  {{density, Usage::sampled}, {depth, Usage::sampled}, {color_out, Usage::color_attachment_load}},
                                  only_in({slices}));
 };
+
+// `box: volume_data` needs the scene's volume file, whose header must read.
+std::vector<ParamProblem> volume_box_problems(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params) {
+  static const VolumeVisualizeTable table;
+  if (param_in(params, table.box.text) != "volume_data") return {};
+  if (!scene.volume_data) return {{param_name(decl, table.box.text), "volume_data needs scene.volume_data (a NRRD or .raw file)"}};
+  try {
+    volume_file::volume_layout(*scene.volume_data);
+  } catch (const volume_file::VolumeFileError& e) {
+    return {{param_name(decl, table.box.text), e.what()}};
+  }
+  return {};
+}
+
+// Half the box's sides (m): a cube of side `extent`, or the volume file's proportions, its longest side `extent`.
+std::array<double, 3> box_half_sides(BoxShape shape, double extent, const Scene& scene) {
+  std::array<double, 3> proportions{1, 1, 1};
+  if (shape == BoxShape::volume_data) proportions = volume_file::box_proportions(volume_file::volume_layout(*scene.volume_data));
+  return {0.5 * extent * proportions[0], 0.5 * extent * proportions[1], 0.5 * extent * proportions[2]};
+}
 
 physics::volume_transfer::TransferTable transfer_table(TransferPreset preset, const std::array<double, 3>& colour, double opacity) {
   namespace vt = physics::volume_transfer;
@@ -151,12 +182,13 @@ class VolumeVisualizeExecution final : public PassExecution {
 
   // The slices' planes: `slices` of them, equally spaced over the box's view-depth range
   // (its corners' depths, from the near plane on), the farthest first.
-  static void place_slices(const Scene& scene, const std::array<double, 3>& centre, double half, int64_t count, gpu::VolumeVisualizeParams& p) {
+  static void place_slices(const Scene& scene, const std::array<double, 3>& centre, const std::array<double, 3>& half, int64_t count,
+                           gpu::VolumeVisualizeParams& p) {
     const Vec3 forward = physics::normalize(physics::sub(scene.camera.target, scene.camera.position));
     double nearest = 1e30, farthest = -1e30;
     for (int corner = 0; corner < 8; ++corner) {
       Vec3 q{};
-      for (int i = 0; i < 3; ++i) q[size_t(i)] = centre[size_t(i)] + ((corner >> i) & 1 ? half : -half);
+      for (size_t i = 0; i < 3; ++i) q[i] = centre[i] + ((corner >> i) & 1 ? half[i] : -half[i]);
       const double z = physics::dot(physics::sub(q, scene.camera.position), forward);
       nearest = std::min(nearest, z), farthest = std::max(farthest, z);
     }
@@ -172,10 +204,10 @@ class VolumeVisualizeExecution final : public PassExecution {
     gpu::VolumeVisualizeParams p{};
     p.view = fog::pack_view_rays(scene.camera, c.extent(t_.color_out));
     const std::array<double, 3> centre = c.param(t_.center);
-    const double half = 0.5 * c.param(t_.extent);
-    for (int i = 0; i < 3; ++i) {
-      p.box_min[i] = float(centre[size_t(i)] - half);
-      p.box_max[i] = float(centre[size_t(i)] + half);
+    const std::array<double, 3> half = box_half_sides(c.param(t_.box), c.param(t_.extent), scene);
+    for (size_t i = 0; i < 3; ++i) {
+      p.box_min[int(i)] = float(centre[i] - half[i]);
+      p.box_max[int(i)] = float(centre[i] + half[i]);
     }
     const physics::volume_transfer::TransferTable table = transfer_table(c.param(t_.transfer), c.param(t_.color), c.param(t_.opacity));
     p.march = {int32_t(c.param(t_.steps)), int32_t(c.param(t_.bisections)), table.count, c.variant().shader_code};
