@@ -65,10 +65,9 @@ std::vector<ParamProblem> volume_file_problems(const PassDecl& decl, const Scene
   for (size_t i = 0; i < 3; ++i) {
     const int64_t asked = param_in(params, sides[i]);
     if (asked != int64_t(layout.sizes[i])) {
-      problems.push_back({param_name(decl, sides[i]), "is " + std::to_string(asked) + ", but " + volume.file + " holds " +
-                                                          std::to_string(layout.sizes[0]) + " × " + std::to_string(layout.sizes[1]) +
-                                                          " × " + std::to_string(layout.sizes[2]) + " samples: expected " +
-                                                          std::to_string(layout.sizes[i])});
+      problems.push_back({param_name(decl, sides[i]), volume.file + " holds " + std::to_string(layout.sizes[0]) + " × " +
+                                                          std::to_string(layout.sizes[1]) + " × " + std::to_string(layout.sizes[2]) +
+                                                          " samples: expected " + std::to_string(layout.sizes[i]) + ", got " + std::to_string(asked)});
     }
   }
   return problems;
