@@ -1,8 +1,9 @@
 // volume_file: the scene's volume file (scene.volume_data: a NRRD file or a .raw file with its
 // layout; RTR4 14.3.1) as the scalar 3D texture volume_phantom makes: `density`, r the
 // samples mapped to [0, 1] through the window (the config's, else the sample type's range),
-// x the file's fastest axis. r16float: filterable on both backends, a copy target (a half
-// float holds every uchar value /255 within 2⁻¹¹ relative). Its size is the params `width`,
+// x the file's fastest axis. rgba16float as the phantom's (g b a zero): filterable on both
+// backends, and its rows are whole 4-byte words whatever the width, as WebGPU's copies need
+// (r16float rows of an odd width are not); a half float is within 2⁻¹¹ relative. Its size is the params `width`,
 // `height`, `depth`, which must equal the file's (the graph sizes resources before any file
 // is read; the scene check says what the file holds). Read once and cached: the file's path,
 // size and time of change are in the key (ScenePart::volume_data). volume_visualize's
@@ -40,8 +41,8 @@ struct VolumeFileTable : PassTable {
   ParamHandle<int64_t> height = integer("height", 64, 1, 16384, "texels", "the file's samples along y (must equal the file's)");
   ParamHandle<int64_t> depth = integer("depth", 64, 1, 16384, "texels", "the file's samples along z (must equal the file's)");
   // Slots.
-  SlotHandle density = output("density", ResourceKind::texture3d, Usage::copy_dst, Format::r16_float, SizeSpec::volume_of(width, height, depth),
-                              "r the sample mapped to [0, 1]; texel (i, j, k) the file's sample i + w·(j + h·k)");
+  SlotHandle density = output("density", ResourceKind::texture3d, Usage::copy_dst, Format::rgba16_float, SizeSpec::volume_of(width, height, depth),
+                              "r the sample mapped to [0, 1] (g b a zero); texel (i, j, k) the file's sample i + w·(j + h·k)");
 };
 
 // The scene must name a volume file whose header reads, whose data holds sizes × the
@@ -82,8 +83,8 @@ class VolumeFileExecution final : public PassExecution {
     const VolumeData& volume = *c.scene->volume_data;
     const volume_file::VolumeLayout layout = volume_file::volume_layout(volume);
     const std::vector<float> values = volume_file::normalised(volume_file::read_samples(layout), volume_file::volume_window(volume, layout));
-    std::vector<uint16_t> texels(values.size());
-    for (size_t i = 0; i < values.size(); ++i) texels[i] = glm::packHalf1x16(values[i]);
+    std::vector<uint16_t> texels(values.size() * 4, 0);  // r the value, g b a zero
+    for (size_t i = 0; i < values.size(); ++i) texels[4 * i] = glm::packHalf1x16(values[i]);
     const size_t bytes = texels.size() * sizeof(uint16_t);
     if (staging_bytes_ != bytes) {
       staging_ = c.device.create_buffer({c.name() + " texels", bytes, rhi::buffer_usage::copy_src | rhi::buffer_usage::copy_dst});
