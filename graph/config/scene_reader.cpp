@@ -723,10 +723,11 @@ bool read_raw_layout(const Node& n, VolumeData& v) {
 }
 
 // scene.volume_data: a NRRD (.nrrd, .nhdr) or .raw file relative to the config, an optional
-// window [low, high] mapped to [0, 1], and a raw file's layout. The file's own header is
+// window [low, high] mapped to [0, 1], a raw file's layout, and an optional 2D transfer
+// table's image (transfer_2d: density along x, gradient magnitude up y). The file's own header is
 // checked by volume_file (its scene check), where the message can say what the file holds.
 void read_volume_data(const Node& n, Scene& scene) {
-  if (!n.object({"file", "window", "raw"})) return;
+  if (!n.object({"file", "window", "raw", "transfer_2d"})) return;
   VolumeData v;
   v.where = n.where();
   const auto file = n.member("file");
@@ -756,6 +757,11 @@ void read_volume_data(const Node& n, Scene& scene) {
     return;
   }
   if (raw && !read_raw_layout(*raw, v)) return;
+  if (auto table = n.member("transfer_2d")) {
+    const auto image = table->existing_path();
+    if (!image) return;
+    v.transfer_2d = *image;
+  }
   scene.volume_data = v;
 }
 

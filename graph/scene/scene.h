@@ -225,6 +225,7 @@ struct VolumeData {
   std::array<int64_t, 3> raw_sizes{1, 1, 1};
   std::array<double, 3> raw_spacing{1, 1, 1};
   bool raw_big_endian = false;
+  std::string transfer_2d;                   // a 2D transfer table's image (transfer_table), resolved; "" none
   Where where;                               // where the config gives it
 };
 

@@ -4,7 +4,9 @@
 // pixel's ray through it, clipped by the scene's depth, is either
 //   raymarch:   marched front to back in `steps` equal steps with emission-absorption, each
 //               sample's colour and opacity from the 1D transfer function (a preset table,
-//               piecewise linear: shaders/include/volume_transfer.h), the opacity corrected
+//               piecewise linear: shaders/include/volume_transfer.h), or with the optional
+//               input `transfer_table` from that 2D table of density × |∇ρ| (Kniss et al.
+//               2002; texels fetched whole, exact at its samples), the opacity corrected
 //               for the step's length, α' = 1 − (1 − α)^(Δ/Δ₀) with Δ₀ = `opacity_length`;
 //   isosurface: searched in `steps` equal steps for the first sample at or above `iso`,
 //               the crossing refined by `bisections`, shaded by Lambert with the normal of
@@ -33,6 +35,7 @@
 #include "physics/camera.h"
 #include "shaders/bindings/volume_slices.frag.h"
 #include "shaders/bindings/volume_visualize.comp.h"
+#include "shaders/bindings/volume_visualize_transfer_table.comp.h"
 
 namespace volgraph {
 namespace {
@@ -78,12 +81,18 @@ struct VolumeVisualizeTable : PassTable {
                                             "the 2D transfer (Kniss et al. 2002): |∇ρ| below which a sample is transparent");
   ParamHandle<double> gradient_high = number("gradient_high", 0, 0, 1e9, "1/m",
                                              "the 2D transfer: |∇ρ| from which the table's opacity holds in full (0: off, the 1D table)");
+  ParamHandle<double> gradient_max = number("gradient_max", 10, 1e-9, 1e9, "1/m",
+                                             "with a transfer_table: the |∇ρ| of the table's top row (its bottom row 0)");
   ParamHandle<std::array<double, 3>> color = vec3("color", {1, 1, 1}, 0, 1e6, "", "transfer constant: the colour at every density");
   ParamHandle<double> opacity = number("opacity", 0.1, 0, 1, "", "transfer constant: the opacity per opacity_length at every density");
   // Slots.
   SlotHandle density = input("density", ResourceKind::texture3d, Usage::sampled, "volume_phantom.density: r the density in the unit box");
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth: the rays end there", {.format = Format::d32_float});
   SlotHandle scene_color = input("scene_color", ResourceKind::texture2d, Usage::sampled, "the scene's linear radiance, behind the volume");
+  SlotHandle transfer_table = optional_input("transfer_table", ResourceKind::texture2d, Usage::sampled,
+                                             "raymarch: transfer_table.table, the full 2D transfer (density × |∇ρ| up to gradient_max) "
+                                             "in place of `transfer` and the gradient ramp (unbound: those)",
+                                             {.format = Format::rgba8_unorm, .read_in = {raymarch}});
   SlotHandle color_out = output("color", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(),
                                 "the scene's radiance seen through the volume (the frame's size, as its scene_color)");
   SlotHandle hit = output("hit", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float, SizeSpec::of_output(),
@@ -93,7 +102,7 @@ struct VolumeVisualizeTable : PassTable {
   // Steps: the compute step (raymarch and isosurface draw there; slices copy the scene behind),
   // then slices' planes drawn over its colour.
   StepHandle volume = step("volume", PassKind::compute,
-                           {{density, Usage::sampled}, {depth, Usage::sampled}, {scene_color, Usage::sampled},
+                           {{density, Usage::sampled}, {depth, Usage::sampled}, {scene_color, Usage::sampled}, {transfer_table, Usage::sampled},
                             {color_out, Usage::storage_write}, {hit, Usage::storage_write}, {surface_normal, Usage::storage_write}});
   StepHandle slice_planes = step("slices", PassKind::graphics,
                                  {{density, Usage::sampled}, {depth, Usage::sampled}, {color_out, Usage::color_attachment_load}},
@@ -137,7 +146,8 @@ class VolumeVisualizeExecution final : public PassExecution {
   explicit VolumeVisualizeExecution(const VolumeVisualizeTable& table) : t_(table) {}
 
   void setup(PassSetup& s) override {
-    program_ = plumbing::create_compute_program(s.device, "volume_visualize.comp");
+    tabulated_ = s.bound(t_.transfer_table);
+    program_ = plumbing::create_compute_program(s.device, tabulated_ ? "volume_visualize_transfer_table.comp" : "volume_visualize.comp");
     plumbing::check_wrapped_uniform_mirror<gpu::VolumeVisualizeParams>(program_, volume_visualize_shader::params, s.name() + " params");
     params_ = s.device.create_buffer(
         {s.name() + " params", sizeof(gpu::VolumeVisualizeParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
@@ -154,12 +164,13 @@ class VolumeVisualizeExecution final : public PassExecution {
     const gpu::VolumeVisualizeParams params = visualize_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
-    const rhi::BindGroupId group = c.bind_group(
-        program_, {bind(shader::params, params_), bind(shader::density, c.view(t_.density)),
-                   bind(shader::density_sampler, c.sampler(rhi::StockSampler::linear_clamp)), bind(shader::scene_depth, c.view(t_.depth)),
-                   bind(shader::scene_color, c.view(t_.scene_color)), bind(shader::nearest, nearest),
-                   bind(shader::color, c.view(t_.color_out)), bind(shader::hit, c.view(t_.hit)),
-                   bind(shader::surface_normal, c.view(t_.surface_normal))});
+    std::vector<rhi::BoundResource> entries = {
+        bind(shader::params, params_), bind(shader::density, c.view(t_.density)),
+        bind(shader::density_sampler, c.sampler(rhi::StockSampler::linear_clamp)), bind(shader::scene_depth, c.view(t_.depth)),
+        bind(shader::scene_color, c.view(t_.scene_color)), bind(shader::nearest, nearest), bind(shader::color, c.view(t_.color_out)),
+        bind(shader::hit, c.view(t_.hit)), bind(shader::surface_normal, c.view(t_.surface_normal))};
+    if (tabulated_) entries.push_back(bind(shaders::volume_visualize_transfer_table_comp::transfer_table, c.view(t_.transfer_table)));
+    const rhi::BindGroupId group = c.bind_group(program_, entries);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.color_out));
   }
 
@@ -212,7 +223,7 @@ class VolumeVisualizeExecution final : public PassExecution {
     const physics::volume_transfer::TransferTable table = transfer_table(c.param(t_.transfer), c.param(t_.color), c.param(t_.opacity));
     p.march = {int32_t(c.param(t_.steps)), int32_t(c.param(t_.bisections)), table.count, c.variant().shader_code};
     p.surface = {float(c.param(t_.iso)), float(c.param(t_.opacity_length)), 0, 0};
-    p.gradient = {float(c.param(t_.gradient_low)), float(c.param(t_.gradient_high)), 0, 0};
+    p.gradient = {float(c.param(t_.gradient_low)), float(c.param(t_.gradient_high)), float(c.param(t_.gradient_max)), 0};
     if (c.variant_is(t_.slices)) place_slices(scene, centre, half, c.param(t_.slice_count), p);
     for (int i = 0; i < VOLUME_TRANSFER_MAX_KNOTS; ++i) {
       p.knot_density[i] = gpu_vec4(table.density[size_t(i)]);
@@ -225,6 +236,7 @@ class VolumeVisualizeExecution final : public PassExecution {
   const VolumeVisualizeTable& t_;
   plumbing::ComputeProgram program_;
   plumbing::RenderProgram slices_;  // the variant slices' planes
+  bool tabulated_ = false;          // the transfer_table input bound: volume_visualize_transfer_table.comp
   rhi::BufferId params_;
 };
 
