@@ -39,7 +39,7 @@ constexpr bool needs_hold(SceneFeatures needs, SceneFeatures needs_any, SceneFea
 // The parts of a scene a pass's result may depend on (its cache key, PassDecl::reads_scene).
 // `atmosphere`: the planet's atmosphere and its sun light's direction and irradiance (not
 // the other lights), so that its LUTs stay cached until the sky changes.
-enum class ScenePart : uint8_t { camera, lights, media, geometry, background, atmosphere, clouds };
+enum class ScenePart : uint8_t { camera, lights, media, geometry, background, atmosphere, clouds, volume_data };
 using ScenePartMask = uint32_t;  // bit (1 << part)
 constexpr ScenePartMask part_bit(ScenePart p) { return 1u << static_cast<uint32_t>(p); }
 

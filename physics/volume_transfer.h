@@ -2,8 +2,10 @@
 // GLM's types, and the tables volume_visualize's `transfer` parameter names (its presets).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <string_view>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -25,6 +27,22 @@ struct TransferTable {
     ++count;
   }
   vec4 operator()(float at) const { return volume_transfer_lookup(density.data(), rgba.data(), count, at); }
+};
+
+// A 2D table (volume_transfer_table_position's layout): W × H texels, row j at gradient
+// j/(H − 1)·gradient_max, texel (i, j) at rgba[j·W + i]; the lookup the shader makes with
+// texelFetch, bilinear by volume_transfer_table_mix.
+struct TransferTable2d {
+  int width = 1, height = 1;
+  std::vector<vec4> rgba;
+  float gradient_max = 1.0f;
+
+  vec4 texel(int i, int j) const { return rgba[size_t(std::min(j, height - 1)) * size_t(width) + size_t(std::min(i, width - 1))]; }
+  vec4 operator()(float density, float gradient_magnitude) const {
+    const vec2 at = volume_transfer_table_position(density, gradient_magnitude, gradient_max, vec2(float(width), float(height)));
+    const int i = int(floor(at.x)), j = int(floor(at.y));
+    return volume_transfer_table_mix(texel(i, j), texel(i + 1, j), texel(i, j + 1), texel(i + 1, j + 1), at - vec2(float(i), float(j)));
+  }
 };
 
 // The presets (volume_visualize's `transfer`):

@@ -367,7 +367,7 @@ endfunction()
 # uses is a configure warning.
 set(VOLGRAPH_QUICK_CONFIGS demo_atmosphere_sunset_fog demo_atmosphere_noon_bruneton demo_raymarch_fog demo_attenuation_test
     tests_vignette demo_analytic_fog demo_atmosphere_haze demo_depth_fog demo_light_volume demo_primitives demo_clouds demo_clouds_weather tests_oracle_clouds_mie
-    demo_clouds_temporal demo_rough_glass demo_volume_phantom demo_voxels demo_glass_of_water)
+    demo_clouds_temporal demo_rough_glass demo_volume_phantom demo_volume_file demo_voxels demo_glass_of_water)
 set(_vg_quick_files "")
 foreach(_vg_config ${VOLGRAPH_QUICK_CONFIGS})
   string(REGEX REPLACE "^tests_" "tests/" _vg_file "${_vg_config}")

@@ -1,5 +1,6 @@
 #include "graph/config/scene_reader.h"
 
+#include <filesystem>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -683,10 +684,91 @@ void read_clouds(const Node& n, Scene& scene) {
   scene.clouds = c;
 }
 
+// scene.volume_data.raw: a headerless file's layout (sample type, sizes, spacing, endian).
+bool read_raw_layout(const Node& n, VolumeData& v) {
+  if (!n.object({"type", "sizes", "spacing", "endian"})) return false;
+  if (auto type = n.member("type")) {
+    const auto name = type->string();
+    if (!name) return false;
+    if (*name != "uchar" && *name != "ushort" && *name != "short" && *name != "float") {
+      type->error("expected one of uchar, ushort, short, float, got \"" + *name + "\"");
+      return false;
+    }
+    v.raw_type = *name;
+  }
+  const auto sizes = n.member("sizes");
+  if (!sizes) {
+    n.error("missing key \"sizes\" (the raw file's samples along x, y, z)");
+    return false;
+  }
+  if (!sizes->array() || sizes->size() != 3) {
+    sizes->error("expected an array of 3 whole numbers (samples along x, y, z), got " + sizes->json().dump());
+    return false;
+  }
+  for (size_t i = 0; i < 3; ++i) {
+    const auto size = sizes->element(i).integer(1, 16384);
+    if (!size) return false;
+    v.raw_sizes[i] = *size;
+  }
+  read(n, "spacing", v.raw_spacing, 1e-9, 1e9);
+  if (auto endian = n.member("endian")) {
+    const auto name = endian->string();
+    if (!name || (*name != "little" && *name != "big")) {
+      endian->error("expected \"little\" or \"big\"");
+      return false;
+    }
+    v.raw_big_endian = *name == "big";
+  }
+  return true;
+}
+
+// scene.volume_data: a NRRD (.nrrd, .nhdr) or .raw file relative to the config, an optional
+// window [low, high] mapped to [0, 1], a raw file's layout, and an optional 2D transfer
+// table's image (transfer_2d: density along x, gradient magnitude up y). The file's own header is
+// checked by volume_file (its scene check), where the message can say what the file holds.
+void read_volume_data(const Node& n, Scene& scene) {
+  if (!n.object({"file", "window", "raw", "transfer_2d"})) return;
+  VolumeData v;
+  v.where = n.where();
+  const auto file = n.member("file");
+  if (!file) {
+    n.error("missing key \"file\" (a NRRD or .raw volume file, relative to the config)");
+    return;
+  }
+  const auto path = file->existing_path();
+  if (!path) return;
+  v.file = *path;
+  if (auto window = n.member("window")) {
+    const bool pair = window->array() && window->size() == 2 && window->json()[0].is_number() && window->json()[1].is_number();
+    if (!pair || !(window->json()[1].get<double>() > window->json()[0].get<double>())) {
+      window->error("expected [low, high] with high > low (the sample values mapped to 0 and 1), got " + window->json().dump());
+      return;
+    }
+    v.window = std::array<double, 2>{window->json()[0].get<double>(), window->json()[1].get<double>()};
+  }
+  v.raw = std::filesystem::path(v.file).extension() == ".raw";
+  const auto raw = n.member("raw");
+  if (v.raw && !raw) {
+    n.error("a .raw file needs \"raw\": {\"type\", \"sizes\", \"spacing\", \"endian\"} (it has no header)");
+    return;
+  }
+  if (!v.raw && raw) {
+    raw->error("only a .raw file takes a layout here (a NRRD file's header gives its own)");
+    return;
+  }
+  if (raw && !read_raw_layout(*raw, v)) return;
+  if (auto table = n.member("transfer_2d")) {
+    const auto image = table->existing_path();
+    if (!image) return;
+    v.transfer_2d = *image;
+  }
+  scene.volume_data = v;
+}
+
 }  // namespace
 
 void read_scene(const Node& n, Scene& scene) {
-  if (!n.object({"camera", "background", "materials", "objects", "lights", "media", "atmosphere", "clouds"})) return;
+  if (!n.object({"camera", "background", "materials", "objects", "lights", "media", "atmosphere", "clouds", "volume_data"})) return;
   if (auto c = n.member("camera")) {
     Camera camera;
     read_camera(*c, camera);
@@ -742,6 +824,10 @@ void read_scene(const Node& n, Scene& scene) {
   if (auto clouds = n.member("clouds")) {
     scene.clouds.reset();
     read_clouds(*clouds, scene);
+  }
+  if (auto volume = n.member("volume_data")) {
+    scene.volume_data.reset();
+    read_volume_data(*volume, scene);
   }
 }
 

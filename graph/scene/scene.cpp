@@ -1,5 +1,7 @@
 #include "graph/scene/scene.h"
 
+#include <filesystem>
+
 namespace volgraph {
 namespace {
 
@@ -209,6 +211,33 @@ void hash_clouds(SceneHasher& h, const std::optional<CloudLayer>& clouds) {
   for (const double v : {c.weather_map->size, c.weather_map->offset[0], c.weather_map->offset[1]}) h.add(v);
 }
 
+// A file's path, size and time of last change (a rewritten file hashes anew); -1 for none.
+void hash_file(SceneHasher& h, const std::string& path) {
+  h.add(path);
+  std::error_code error;
+  const auto bytes = std::filesystem::file_size(path, error);
+  h.add(int64_t(error ? -1 : int64_t(bytes)));
+  const auto changed = std::filesystem::last_write_time(path, error);
+  h.add(int64_t(error ? -1 : int64_t(changed.time_since_epoch().count())));
+}
+
+// The volume file and the 2D table's image (hash_file), the layout and window (a detached
+// NRRD data file is not watched).
+void hash_volume_data(SceneHasher& h, const std::optional<VolumeData>& volume) {
+  h.add(volume.has_value());
+  if (!volume) return;
+  const VolumeData& v = *volume;
+  hash_file(h, v.file);
+  h.add(v.window.has_value());
+  if (v.window) h.add((*v.window)[0]), h.add((*v.window)[1]);
+  h.add(v.raw);
+  h.add(v.raw_type);
+  for (const int64_t n : v.raw_sizes) h.add(n);
+  h.add(v.raw_spacing);
+  h.add(v.raw_big_endian);
+  hash_file(h, v.transfer_2d);
+}
+
 }  // namespace
 
 uint64_t Scene::hash(ScenePartMask parts) const {
@@ -221,6 +250,7 @@ uint64_t Scene::hash(ScenePartMask parts) const {
   if (parts & part_bit(ScenePart::background)) h.add(background);
   if (parts & part_bit(ScenePart::atmosphere)) hash_atmosphere(h, atmosphere, lights);
   if (parts & part_bit(ScenePart::clouds)) hash_clouds(h, clouds);
+  if (parts & part_bit(ScenePart::volume_data)) hash_volume_data(h, volume_data);
   return h.value();
 }
 

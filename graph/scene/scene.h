@@ -214,6 +214,21 @@ struct CloudLayer {
   Where where;                    // where the config gives the layer
 };
 
+// A scalar volume file for volume_file (scene.volume_data; RTR4 14.3.1): a NRRD file, or a
+// headerless .raw file whose layout `raw_*` gives. The samples map to [0, 1] through
+// `window` (low, high) when set, else the sample type's range.
+struct VolumeData {
+  std::string file;                          // resolved against the config's folder
+  std::optional<std::array<double, 2>> window;
+  bool raw = false;                          // a .raw file: the layout below
+  std::string raw_type = "uchar";            // uchar, ushort, short, float
+  std::array<int64_t, 3> raw_sizes{1, 1, 1};
+  std::array<double, 3> raw_spacing{1, 1, 1};
+  bool raw_big_endian = false;
+  std::string transfer_2d;                   // a 2D transfer table's image (transfer_table), resolved; "" none
+  Where where;                               // where the config gives it
+};
+
 struct Scene {
   Camera camera;
   Vec3 background{0, 0, 0};  // radiance
@@ -223,6 +238,7 @@ struct Scene {
   Media media;
   std::optional<Atmosphere> atmosphere;  // none: no sky, no aerial perspective
   std::optional<CloudLayer> clouds;      // none: no cloud passes, no cloud noise
+  std::optional<VolumeData> volume_data; // none: no volume file for volume_file
 
   SceneFeatures features() const;
   // A hash of the parts named (every value in them): equal scenes give equal hashes, and

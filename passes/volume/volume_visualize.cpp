@@ -1,9 +1,12 @@
 // volume_visualize: a scalar 3D texture (volume_phantom's `density`) drawn over the scene
-// (RTR4 14.3.1). The volume fills the world box of `center` and `extent` (a cube); each
+// (RTR4 14.3.1). The volume fills the world box of `center` and `extent` (a cube, or with
+// `box: volume_data` the scene's volume file's proportions, sizes × spacing); each
 // pixel's ray through it, clipped by the scene's depth, is either
 //   raymarch:   marched front to back in `steps` equal steps with emission-absorption, each
 //               sample's colour and opacity from the 1D transfer function (a preset table,
-//               piecewise linear: shaders/include/volume_transfer.h), the opacity corrected
+//               piecewise linear: shaders/include/volume_transfer.h), or with the optional
+//               input `transfer_table` from that 2D table of density × |∇ρ| (Kniss et al.
+//               2002; texels fetched whole, exact at its samples), the opacity corrected
 //               for the step's length, α' = 1 − (1 − α)^(Δ/Δ₀) with Δ₀ = `opacity_length`;
 //   isosurface: searched in `steps` equal steps for the first sample at or above `iso`,
 //               the crossing refined by `bisections`, shaded by Lambert with the normal of
@@ -19,6 +22,7 @@
 #include <cmath>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
@@ -26,10 +30,12 @@
 #include "passes/plumbing/programs.h"
 #include "passes/plumbing/sun_for_shader.h"
 #include "passes/register_pass.h"
+#include "passes/volume/volume_file_reader.h"
 #include "physics/volume_transfer.h"
 #include "physics/camera.h"
 #include "shaders/bindings/volume_slices.frag.h"
 #include "shaders/bindings/volume_visualize.comp.h"
+#include "shaders/bindings/volume_visualize_transfer_table.comp.h"
 
 namespace volgraph {
 namespace {
@@ -38,11 +44,17 @@ namespace volume_visualize_shader = shaders::volume_visualize_comp;
 
 // The transfer function's table (physics/volume_transfer.h's presets).
 enum class TransferPreset : uint8_t { shells, grey, constant };
+// The box's shape: a cube, or the proportions of the scene's volume file (sizes × spacing).
+enum class BoxShape : uint8_t { cube, volume_data };
+
+std::vector<ParamProblem> volume_box_problems(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params);
 
 struct VolumeVisualizeTable : PassTable {
   VolumeVisualizeTable()
       : PassTable("volume_visualize", PassKind::compute,
-                  "A scalar volume over the scene: ray marched with a 1D transfer function, or its isosurface (RTR4 14.3.1).") {}
+                  "A scalar volume over the scene: ray marched with a 1D transfer function, or its isosurface (RTR4 14.3.1).") {
+    decl.check_scene = volume_box_problems;
+  }
   // Variants.
   VariantHandle raymarch = variant("raymarch", "front-to-back emission-absorption with the transfer function, opacity corrected per step",
                                    VOLUME_VISUALIZE_RAYMARCH);
@@ -52,7 +64,9 @@ struct VolumeVisualizeTable : PassTable {
                                            "opacity corrected for the slices' spacing along its ray", VOLUME_VISUALIZE_SLICES);
   // Parameters.
   ParamHandle<std::array<double, 3>> center = vec3("center", {0, 1, 0}, -1e6, 1e6, "m", "the volume's box's centre");
-  ParamHandle<double> extent = number("extent", 2, 1e-6, 1e6, "m", "the volume's box's side (a cube)");
+  ParamHandle<double> extent = number("extent", 2, 1e-6, 1e6, "m", "the volume's box's side (its longest side when `box` is volume_data)");
+  ChoiceHandle<BoxShape> box = choice("box", BoxShape::cube, {{BoxShape::cube, "cube"}, {BoxShape::volume_data, "volume_data"}},
+                                      "the box's shape: a cube of side `extent`, or the scene's volume file's sizes × spacing, its longest side `extent`");
   ParamHandle<int64_t> steps = integer("steps", 128, 1, 4096, "", "equal steps over the ray's segment inside the box");
   ParamHandle<int64_t> slice_count = integer("slices", 128, 1, 4096, "", "slices: view-aligned planes over the box's view-depth range");
   ParamHandle<int64_t> bisections = integer("bisections", 8, 0, 32, "", "isosurface: halvings of the step where the density crosses `iso`");
@@ -67,12 +81,18 @@ struct VolumeVisualizeTable : PassTable {
                                             "the 2D transfer (Kniss et al. 2002): |∇ρ| below which a sample is transparent");
   ParamHandle<double> gradient_high = number("gradient_high", 0, 0, 1e9, "1/m",
                                              "the 2D transfer: |∇ρ| from which the table's opacity holds in full (0: off, the 1D table)");
+  ParamHandle<double> gradient_max = number("gradient_max", 10, 1e-9, 1e9, "1/m",
+                                             "with a transfer_table: the |∇ρ| of the table's top row (its bottom row 0)");
   ParamHandle<std::array<double, 3>> color = vec3("color", {1, 1, 1}, 0, 1e6, "", "transfer constant: the colour at every density");
   ParamHandle<double> opacity = number("opacity", 0.1, 0, 1, "", "transfer constant: the opacity per opacity_length at every density");
   // Slots.
   SlotHandle density = input("density", ResourceKind::texture3d, Usage::sampled, "volume_phantom.density: r the density in the unit box");
   SlotHandle depth = input("depth", ResourceKind::texture2d, Usage::sampled, "the scene's depth: the rays end there", {.format = Format::d32_float});
   SlotHandle scene_color = input("scene_color", ResourceKind::texture2d, Usage::sampled, "the scene's linear radiance, behind the volume");
+  SlotHandle transfer_table = optional_input("transfer_table", ResourceKind::texture2d, Usage::sampled,
+                                             "raymarch: transfer_table.table, the full 2D transfer (density × |∇ρ| up to gradient_max) "
+                                             "in place of `transfer` and the gradient ramp (unbound: those)",
+                                             {.format = Format::rgba8_unorm, .read_in = {raymarch}});
   SlotHandle color_out = output("color", ResourceKind::texture2d, Usage::storage_write, Format::rgba16_float, SizeSpec::of_output(),
                                 "the scene's radiance seen through the volume (the frame's size, as its scene_color)");
   SlotHandle hit = output("hit", ResourceKind::texture2d, Usage::storage_write, Format::rgba32_float, SizeSpec::of_output(),
@@ -82,12 +102,32 @@ struct VolumeVisualizeTable : PassTable {
   // Steps: the compute step (raymarch and isosurface draw there; slices copy the scene behind),
   // then slices' planes drawn over its colour.
   StepHandle volume = step("volume", PassKind::compute,
-                           {{density, Usage::sampled}, {depth, Usage::sampled}, {scene_color, Usage::sampled},
+                           {{density, Usage::sampled}, {depth, Usage::sampled}, {scene_color, Usage::sampled}, {transfer_table, Usage::sampled},
                             {color_out, Usage::storage_write}, {hit, Usage::storage_write}, {surface_normal, Usage::storage_write}});
   StepHandle slice_planes = step("slices", PassKind::graphics,
                                  {{density, Usage::sampled}, {depth, Usage::sampled}, {color_out, Usage::color_attachment_load}},
                                  only_in({slices}));
 };
+
+// `box: volume_data` needs the scene's volume file, whose header must read.
+std::vector<ParamProblem> volume_box_problems(const PassDecl& decl, const Scene& scene, const std::vector<ParamValue>& params) {
+  static const VolumeVisualizeTable table;
+  if (param_in(params, table.box.text) != "volume_data") return {};
+  if (!scene.volume_data) return {{param_name(decl, table.box.text), "volume_data needs scene.volume_data (a NRRD or .raw file)"}};
+  try {
+    volume_file::volume_layout(*scene.volume_data);
+  } catch (const volume_file::VolumeFileError& e) {
+    return {{param_name(decl, table.box.text), e.what()}};
+  }
+  return {};
+}
+
+// Half the box's sides (m): a cube of side `extent`, or the volume file's proportions, its longest side `extent`.
+std::array<double, 3> box_half_sides(BoxShape shape, double extent, const Scene& scene) {
+  std::array<double, 3> proportions{1, 1, 1};
+  if (shape == BoxShape::volume_data) proportions = volume_file::box_proportions(volume_file::volume_layout(*scene.volume_data));
+  return {0.5 * extent * proportions[0], 0.5 * extent * proportions[1], 0.5 * extent * proportions[2]};
+}
 
 physics::volume_transfer::TransferTable transfer_table(TransferPreset preset, const std::array<double, 3>& colour, double opacity) {
   namespace vt = physics::volume_transfer;
@@ -106,7 +146,8 @@ class VolumeVisualizeExecution final : public PassExecution {
   explicit VolumeVisualizeExecution(const VolumeVisualizeTable& table) : t_(table) {}
 
   void setup(PassSetup& s) override {
-    program_ = plumbing::create_compute_program(s.device, "volume_visualize.comp");
+    tabulated_ = s.bound(t_.transfer_table);
+    program_ = plumbing::create_compute_program(s.device, tabulated_ ? "volume_visualize_transfer_table.comp" : "volume_visualize.comp");
     plumbing::check_wrapped_uniform_mirror<gpu::VolumeVisualizeParams>(program_, volume_visualize_shader::params, s.name() + " params");
     params_ = s.device.create_buffer(
         {s.name() + " params", sizeof(gpu::VolumeVisualizeParams), rhi::buffer_usage::uniform | rhi::buffer_usage::copy_dst});
@@ -123,12 +164,13 @@ class VolumeVisualizeExecution final : public PassExecution {
     const gpu::VolumeVisualizeParams params = visualize_params(c);
     c.device.write_buffer(params_, 0, std::as_bytes(std::span(&params, 1)));
     const rhi::SamplerId nearest = c.sampler(rhi::StockSampler::nearest_clamp);
-    const rhi::BindGroupId group = c.bind_group(
-        program_, {bind(shader::params, params_), bind(shader::density, c.view(t_.density)),
-                   bind(shader::density_sampler, c.sampler(rhi::StockSampler::linear_clamp)), bind(shader::scene_depth, c.view(t_.depth)),
-                   bind(shader::scene_color, c.view(t_.scene_color)), bind(shader::nearest, nearest),
-                   bind(shader::color, c.view(t_.color_out)), bind(shader::hit, c.view(t_.hit)),
-                   bind(shader::surface_normal, c.view(t_.surface_normal))});
+    std::vector<rhi::BoundResource> entries = {
+        bind(shader::params, params_), bind(shader::density, c.view(t_.density)),
+        bind(shader::density_sampler, c.sampler(rhi::StockSampler::linear_clamp)), bind(shader::scene_depth, c.view(t_.depth)),
+        bind(shader::scene_color, c.view(t_.scene_color)), bind(shader::nearest, nearest), bind(shader::color, c.view(t_.color_out)),
+        bind(shader::hit, c.view(t_.hit)), bind(shader::surface_normal, c.view(t_.surface_normal))};
+    if (tabulated_) entries.push_back(bind(shaders::volume_visualize_transfer_table_comp::transfer_table, c.view(t_.transfer_table)));
+    const rhi::BindGroupId group = c.bind_group(program_, entries);
     plumbing::dispatch(c.encoder, c.name(), program_, {group}, c.extent(t_.color_out));
   }
 
@@ -151,12 +193,13 @@ class VolumeVisualizeExecution final : public PassExecution {
 
   // The slices' planes: `slices` of them, equally spaced over the box's view-depth range
   // (its corners' depths, from the near plane on), the farthest first.
-  static void place_slices(const Scene& scene, const std::array<double, 3>& centre, double half, int64_t count, gpu::VolumeVisualizeParams& p) {
+  static void place_slices(const Scene& scene, const std::array<double, 3>& centre, const std::array<double, 3>& half, int64_t count,
+                           gpu::VolumeVisualizeParams& p) {
     const Vec3 forward = physics::normalize(physics::sub(scene.camera.target, scene.camera.position));
     double nearest = 1e30, farthest = -1e30;
     for (int corner = 0; corner < 8; ++corner) {
       Vec3 q{};
-      for (int i = 0; i < 3; ++i) q[size_t(i)] = centre[size_t(i)] + ((corner >> i) & 1 ? half : -half);
+      for (size_t i = 0; i < 3; ++i) q[i] = centre[i] + ((corner >> i) & 1 ? half[i] : -half[i]);
       const double z = physics::dot(physics::sub(q, scene.camera.position), forward);
       nearest = std::min(nearest, z), farthest = std::max(farthest, z);
     }
@@ -172,15 +215,15 @@ class VolumeVisualizeExecution final : public PassExecution {
     gpu::VolumeVisualizeParams p{};
     p.view = fog::pack_view_rays(scene.camera, c.extent(t_.color_out));
     const std::array<double, 3> centre = c.param(t_.center);
-    const double half = 0.5 * c.param(t_.extent);
-    for (int i = 0; i < 3; ++i) {
-      p.box_min[i] = float(centre[size_t(i)] - half);
-      p.box_max[i] = float(centre[size_t(i)] + half);
+    const std::array<double, 3> half = box_half_sides(c.param(t_.box), c.param(t_.extent), scene);
+    for (size_t i = 0; i < 3; ++i) {
+      p.box_min[int(i)] = float(centre[i] - half[i]);
+      p.box_max[int(i)] = float(centre[i] + half[i]);
     }
     const physics::volume_transfer::TransferTable table = transfer_table(c.param(t_.transfer), c.param(t_.color), c.param(t_.opacity));
     p.march = {int32_t(c.param(t_.steps)), int32_t(c.param(t_.bisections)), table.count, c.variant().shader_code};
     p.surface = {float(c.param(t_.iso)), float(c.param(t_.opacity_length)), 0, 0};
-    p.gradient = {float(c.param(t_.gradient_low)), float(c.param(t_.gradient_high)), 0, 0};
+    p.gradient = {float(c.param(t_.gradient_low)), float(c.param(t_.gradient_high)), float(c.param(t_.gradient_max)), 0};
     if (c.variant_is(t_.slices)) place_slices(scene, centre, half, c.param(t_.slice_count), p);
     for (int i = 0; i < VOLUME_TRANSFER_MAX_KNOTS; ++i) {
       p.knot_density[i] = gpu_vec4(table.density[size_t(i)]);
@@ -193,6 +236,7 @@ class VolumeVisualizeExecution final : public PassExecution {
   const VolumeVisualizeTable& t_;
   plumbing::ComputeProgram program_;
   plumbing::RenderProgram slices_;  // the variant slices' planes
+  bool tabulated_ = false;          // the transfer_table input bound: volume_visualize_transfer_table.comp
   rhi::BufferId params_;
 };
 

@@ -29,6 +29,21 @@ vec3 density_gradient(vec3 p) {
               density_at(p + vec3(0, 0, h.z)) - density_at(p - vec3(0, 0, h.z))) / (2.0 * h);
 }
 
+#ifdef VOLUME_TRANSFER_TABLE
+// The 2D table's colour and opacity at world point p: its density and gradient magnitude
+// (six more lookups a sample) placed by volume_transfer_table_position, the four texels
+// around fetched whole and mixed (texel centres: exact at the table's samples; the including
+// shader declares `transfer_table` and `nearest`).
+vec4 transfer_at(vec3 p) {
+  const ivec2 size = textureSize(sampler2D(transfer_table, nearest), 0);
+  const vec2 at = volume_transfer_table_position(density_at(p), length(density_gradient(p)), params.gradient.z, vec2(size));
+  const ivec2 i0 = ivec2(floor(at)), i1 = min(i0 + 1, size - 1);
+  return volume_transfer_table_mix(texelFetch(sampler2D(transfer_table, nearest), i0, 0),
+                                   texelFetch(sampler2D(transfer_table, nearest), ivec2(i1.x, i0.y), 0),
+                                   texelFetch(sampler2D(transfer_table, nearest), ivec2(i0.x, i1.y), 0),
+                                   texelFetch(sampler2D(transfer_table, nearest), i1, 0), at - vec2(i0));
+}
+#else
 // The transfer function's colour and opacity at world point p: the 1D table at its density,
 // with the gradient ramp when on (volume_transfer_2d; six more lookups a sample).
 vec4 transfer_at(vec3 p) {
@@ -36,5 +51,6 @@ vec4 transfer_at(vec3 p) {
   if (!(params.gradient.y > 0.0)) return from_table;
   return volume_transfer_2d(from_table, length(density_gradient(p)), params.gradient.x, params.gradient.y);
 }
+#endif
 
 #endif

@@ -39,6 +39,23 @@ VOLUME_FN vec4 volume_transfer_2d(vec4 from_table, float gradient_magnitude, flo
   return vec4(from_table.x, from_table.y, from_table.z, from_table.w * ramp);
 }
 
+// A full 2D transfer table (Kniss, Kindlmann & Hansen 2002): texel (i, j) of a W × H table holds
+// the colour and opacity at density i/(W − 1) and gradient magnitude j/(H − 1)·gradient_max
+// (1/m). The texel position of (density, |∇ρ|), both clamped to the table; bilinear between
+// texels, so a lookup at a table's sample reads that texel alone (fraction 0) and equals it
+// exactly (when i/(W − 1)·(W − 1) is i in float: W − 1 a power of two, or density 0 or 1).
+VOLUME_FN vec2 volume_transfer_table_position(float density, float gradient_magnitude, float gradient_max, vec2 size) {
+  const float d = density > 0.0f ? min(density, 1.0f) : 0.0f;  // NaN → 0
+  const float g = gradient_max > 0.0f && gradient_magnitude > 0.0f ? min(gradient_magnitude / gradient_max, 1.0f) : 0.0f;
+  return vec2(d * (size.x - 1.0f), g * (size.y - 1.0f));
+}
+
+// Bilinear between the four texels around a position: t00 at its floor, t10 one texel on in
+// x, t01 one on in y; `fraction` the position minus its floor. Fraction 0: t00 exactly.
+VOLUME_FN vec4 volume_transfer_table_mix(vec4 t00, vec4 t10, vec4 t01, vec4 t11, vec2 fraction) {
+  return mix(mix(t00, t10, fraction.x), mix(t01, t11, fraction.x), fraction.y);
+}
+
 // The opacity of a step of length `step` when the table's opacity α holds for steps of
 // `reference_step` (Engel et al. 2006, Real-Time Volume Graphics, eq. 7.1; RTR4 14.3.1):
 // α' = 1 − (1 − α)^(Δ/Δ₀). 0 for an empty step, 1 for α = 1.

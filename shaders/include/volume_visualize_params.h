@@ -18,7 +18,8 @@ GPU_STRUCT(VolumeVisualizeParams) {
   ivec4 march;            // x steps (slices: the slice count), y bisection steps, z knots, w VOLUME_VISUALIZE_*
   vec4 surface;           // x the iso density, y the table's reference step Δ₀ (m); slices: z the slices' spacing,
                           // w the farthest slice's view depth (m)
-  vec4 gradient;          // the 2D transfer's ramp in |∇ρ| (1/m): x from 0 at, y to 1 at (y ≤ 0: the 1D table alone)
+  vec4 gradient;          // the 2D transfer's ramp in |∇ρ| (1/m): x from 0 at, y to 1 at (y ≤ 0: the 1D table alone);
+                          // z the 2D table's top row's |∇ρ| (1/m)
   vec4 light_direction;   // xyz toward the light (unit); w 1: a scene light, 0: the headlight
   vec4 light_irradiance;  // rgb E (W/m²)
   vec4 knot_density[VOLUME_TRANSFER_MAX_KNOTS];  // x each knot's density

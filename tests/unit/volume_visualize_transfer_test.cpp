@@ -81,6 +81,21 @@ TEST(VolumeTransfer, TheGradientRampScalesOnlyTheOpacity) {
   EXPECT_EQ(volume_transfer_2d(table, std::numeric_limits<float>::quiet_NaN(), 1.0f, 2.0f).w, 0.0f);
 }
 
+// The full 2D table (Kniss et al. 2002): every sample (i/(W − 1), j/(H − 1)·gradient_max) reads
+// its texel exactly (W − 1 = 4, H − 1 = 2: the positions are whole in float); halfway between
+// two samples the mean; outside the table its edge; NaN the first texel.
+TEST(VolumeTransfer, TheTwoDimensionalTableIsExactAtItsSamples) {
+  TransferTable2d table;
+  table.width = 5, table.height = 3, table.gradient_max = 6.0f;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 5; ++i) table.rgba.push_back(vec4(float(i) / 7.0f, float(j) / 3.0f, float(i * j) / 11.0f, 0.1f + 0.2f * float(i)));
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(table(float(i) / 4.0f, float(j) * 3.0f), table.texel(i, j)) << i << ", " << j;
+  EXPECT_EQ(table(0.125f, 0.0f), 0.5f * (table.texel(0, 0) + table.texel(1, 0)));
+  EXPECT_EQ(table(2.0f, 100.0f), table.texel(4, 2)) << "clamped to the table";
+  EXPECT_EQ(table(std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN()), table.texel(0, 0));
+}
+
 TEST(VolumePhantom, TheSpheresIsosurfacesAreSpheresOfKnownRadius) {
   using namespace volume_phantom;
   for (const float iso : {0.2f, 0.5f, 0.8f}) {
