@@ -35,14 +35,6 @@ namespace scene_shadow_shader = shaders::scene_media_translucent_shadowed_frag;
 // The cloud-shadowed ones add bindings 7–9 of set 2.
 namespace scene_cloud_shadow_shader = shaders::scene_shadowed_cloud_shadowed_frag;
 
-// The media the surfaces' lighting sees in closed form: the global and height fog (the
-// local volumes only through an opacity shadow map, media_shadow).
-Media fogs_of(const Media& media) {
-  Media fogs = media;
-  fogs.volumes.clear();
-  return fogs;
-}
-
 // glTF files must load and textures decode: a malformed one is bad input, reported at
 // the object's "file" or the material's "albedo_texture"; and the scene must fit the
 // draws the GPU passes can make (plumbing::kMaxSceneDraws), reported at the first
@@ -210,15 +202,7 @@ class SceneExecution final : public PassExecution {
   gpu::SceneFrame frame_of(PassContext& c) {
     const Scene& scene = *c.scene;
     const Extent size = c.extent(t_.color);
-    gpu::SceneFrame f{};
-    physics::to_floats(physics::view_projection(scene.camera, double(size.width) / size.height), f.view_projection);
-    // A surface facing any way receives π times the sky's isotropic radiance.
-    const std::array<double, 3>& ambient = c.param(t_.ambient);
-    const Vec3 sky = lighting_.sky_ambient_radiance(scene);
-    for (size_t i = 0; i < 3; ++i) f.ambient_irradiance[i] = float(ambient[i] + M_PI * sky[i]);
-    f.light_list = plumbing::pack_lights(lighting_.lights(scene));
-    f.media = physics::pack_media(fogs_of(scene.media));
-    return f;
+    return lighting_.scene_frame(scene, physics::view_projection(scene.camera, double(size.width) / size.height), c.param(t_.ambient));
   }
 
   const SceneTable& t_;
