@@ -318,7 +318,8 @@ RgbImage sweep_reference(const Args& args, const SweepSpec& spec, const LoadedCo
   std::error_code ec;
   if (fs::exists(kept, ec)) return read_reference_image(kept, spec.size.width, spec.size.height, "the kept reference");
   std::cerr << "sweep: rendering the CPU reference at " << spec.size.width << "x" << spec.size.height << "\n";
-  const RgbImage ref = render_reference(base, {unsigned(args.threads), args.tolerance, uint32_t(args.samples_per_axis), uint32_t(args.atmosphere_paths)});
+  const RgbImage ref = render_reference(base, {unsigned(args.threads), args.tolerance, uint32_t(args.samples_per_axis), uint32_t(args.atmosphere_paths),
+                                              spec.reference_mode == "refracted"});
   write_image(kept, Image{ref.width, ref.height, rgba_from_rgb(ref)}, "-o");
   return ref;
 }

@@ -61,6 +61,7 @@ TEST_F(SweepSpecTest, ReadsTheSettingsOfTheSpec) {
   EXPECT_EQ(spec.frames, 2);
   EXPECT_EQ(spec.backend, "vulkan");
   EXPECT_EQ(spec.reference, "cpu");
+  EXPECT_EQ(spec.reference_mode, "straight");  // the default
   EXPECT_EQ(spec.metric, "rel_rmse");
   EXPECT_EQ(spec.mask, "fog_only");
 }
@@ -233,6 +234,7 @@ const BrokenSpec kBrokenSpecs[] = {
     {"bad_reference_missing.json", "/reference", "file not found: \"missing.pfm\""},
     {"bad_metric.json", "/metric", "unknown metric \"rmes\" (did you mean \"rmse\"?); expected one of rmse, rel_rmse"},
     {"bad_mask.json", "/mask", "unknown mask \"fog\"; expected one of all, fog_only, surfaces"},
+    {"bad_reference_mode.json", "/reference_mode", "unknown reference_mode \"refrac\"; expected one of straight, refracted"},
     {"bad_config_missing.json", "/config", "file not found: \"no_such_config.json\""},
     {"bad_config_broken.json", "/config", "the config does not load: " },
     {"bad_no_config.json", "/", "missing \"config\""},

@@ -103,6 +103,10 @@ RgbImage render_reference(const LoadedConfig& loaded, const ReferenceSettings& s
   integration.relative_tolerance = settings.tolerance;
   // The config's cloud_noise sizes and cloud_march parameters, as `volgraph reference` takes them.
   integration.clouds = reference::cloud_reference_settings(loaded.graph, loaded.params);
+  if (settings.refracted) {
+    integration.translucency = reference::TranslucencyMode::refracted;
+    integration.directional_environment = true;
+  }
   reference::AtmosphereReferenceSettings atmosphere;
   atmosphere.samples = settings.atmosphere_paths;
   const reference::Renderer renderer(loaded.config.scene, integration, atmosphere);

@@ -49,6 +49,9 @@ struct ReferenceSettings {
   double tolerance = 1e-5;
   uint32_t samples_per_axis = 1;
   uint32_t atmosphere_paths = 64;  // the atmosphere's Monte Carlo paths a ray (orders ≥ 2)
+  // Solids' two interfaces traced and reflections toward the mirrored ray (reference/renderer.h's
+  // refracted mode, IntegrationSettings::directional_environment); false: straight layers.
+  bool refracted = false;
 };
 RgbImage render_reference(const LoadedConfig& loaded, const ReferenceSettings& settings);
 

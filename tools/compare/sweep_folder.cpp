@@ -50,7 +50,8 @@ std::string sweep_identity_text(const SweepSpec& spec) {
   std::ostringstream o;
   o << "spec " << canonical_path_text(spec.file) << "\nconfig " << canonical_path_text(spec.config) << "\nsize " << spec.size.width << "x"
     << spec.size.height << "\nruns " << spec.runs << "\nwarmup " << spec.warmup << "\nframes " << spec.frames << "\nbackend "
-    << spec.backend << "\nreference " << (spec.reference == "cpu" ? spec.reference : canonical_path_text(spec.reference)) << "\nmetric "
+    << spec.backend << "\nreference " << (spec.reference == "cpu" ? spec.reference : canonical_path_text(spec.reference))
+    << (spec.reference_mode == "straight" ? "" : " " + spec.reference_mode) << "\nmetric "
     << spec.metric << "\nmask " << spec.mask << "\n";
   return o.str();
 }

@@ -37,6 +37,7 @@ constexpr double kLargestExactInteger = 9007199254740992.0;
 bool integral(const Json& j) { return j.is_number_integer() && std::abs(j.get<double>()) < kLargestExactInteger; }
 
 const std::vector<std::string> kBackends{"vulkan", "webgpu"};
+const std::vector<std::string> kReferenceModes{"straight", "refracted"};
 
 // A value rounded to 12 significant digits, so that a range's 0.1 + 2 × 0.1 is 0.3.
 double round_12_digits(double v) {
@@ -122,8 +123,8 @@ class SpecReader {
   }
 
   void read_document(const Node& doc) {
-    if (!doc.object({"description", "config", "size", "runs", "warmup", "frames", "backend", "reference", "metric", "mask",
-                     "series"})) {
+    if (!doc.object({"description", "config", "size", "runs", "warmup", "frames", "backend", "reference", "reference_mode", "metric",
+                     "mask", "series"})) {
       return;
     }
     config::read(doc, "description", spec_.description);
@@ -140,6 +141,9 @@ class SpecReader {
       if (auto name = choice(*b, kBackends, "backend")) spec_.backend = *name;
     }
     if (auto r = doc.member("reference")) read_reference(*r);
+    if (auto m = doc.member("reference_mode")) {
+      if (auto name = choice(*m, kReferenceModes, "reference_mode")) spec_.reference_mode = *name;
+    }
     if (auto m = doc.member("metric")) read_metric(*m);
     if (auto m = doc.member("mask")) {
       if (auto name = choice(*m, mask_names(), "mask")) spec_.mask = *name;

@@ -6,6 +6,7 @@
 //     "config": "../demo_fog.json",          (relative to the spec's folder)
 //     "size": [160, 90], "runs": 5, "warmup": 1, "frames": 1, "backend": "vulkan",
 //     "reference": "cpu",                    (or an image file: .pfm / .exr, linear)
+//     "reference_mode": "straight",          (the CPU reference's translucency: straight | refracted)
 //     "metric": "rel_rmse",                  (metrics.h metric_names(); the error of the front)
 //     "mask": "fog_only",                    (all | fog_only | surfaces)
 //     "series": [
@@ -29,7 +30,9 @@
 // Keys and ranges: "config" and "series" are required; "size" [1…16384, 1…16384]
 // (default [160, 90]), "runs" 1…1000 (5), "warmup" 0…100 (1), "frames" 1…1000 (1),
 // "backend" vulkan | webgpu, "reference" "cpu" or an existing .pfm / .exr (relative to
-// the spec's folder), "metric" one of metric_names() (rel_rmse), "mask" all | fog_only |
+// the spec's folder), "reference_mode" straight (the translucency pass's one-interface
+// layers, the default) | refracted (solids' two interfaces traced, reflections toward the
+// mirrored ray: the truth refraction and environment techniques are measured against), "metric" one of metric_names() (rel_rmse), "mask" all | fog_only |
 // surfaces (all). Series: "name" (required, unique), "graph" (an existing file), "set"
 // and "vary" objects. A "vary" value is a non-empty array of distinct values, or a range
 // of a parameter (or of "frames", integers):
@@ -78,6 +81,7 @@ struct SweepSpec {
   int runs = 5, warmup = 1, frames = 1;
   std::string backend = "vulkan";
   std::string reference = "cpu";  // "cpu" or a resolved image path
+  std::string reference_mode = "straight";  // the CPU reference's: straight | refracted
   std::string metric = "rel_rmse";
   std::string mask = "all";
   std::vector<SweepPoint> points;  // expanded, in spec order; ids unique
