@@ -233,22 +233,44 @@ bool runs_whenever(const StepCondition& earlier, const StepCondition& later) {
   return later.count_param == earlier.count_param && later.above >= earlier.above;
 }
 
+// Whether two steps never run in one pass: each runs only in variants the other does not.
+bool never_together(const StepCondition& a, const StepCondition& b) {
+  if (a.variants.empty() || b.variants.empty()) return false;
+  for (const uint16_t v : a.variants) {
+    if (std::find(b.variants.begin(), b.variants.end(), v) != b.variants.end()) return false;
+  }
+  return true;
+}
+
+// Whether step k makes the slot afresh beside its earlier writers: it writes without reading,
+// and none of them runs with it (variants' alternative makers of one output).
+bool makes_alongside(const PassDecl& decl, const std::vector<int>& writers, size_t k, Usage usage) {
+  if (!usage_writes(usage) || usage_reads(usage)) return false;
+  for (const int w : writers) {
+    if (!never_together(decl.steps[size_t(w)].when, decl.steps[k].when)) return false;
+  }
+  return true;
+}
+
 void check_step_conditions(const PassDecl& decl) {
   if (!decl.steps.empty() && !decl.steps.front().when.always()) {
     throw std::logic_error("pass type " + decl.name + ": its first step \"" + decl.steps.front().name + "\" must always run");
   }
-  std::vector<int> maker(decl.slots.size(), -1);  // the step that first writes each slot
+  std::vector<std::vector<int>> makers(decl.slots.size());  // the steps that write each slot first (alternatives by variant)
   for (size_t k = 0; k < decl.steps.size(); ++k) {
     for (const auto& [slot, usage] : decl.steps[k].uses) {
       const SlotDirection outer = decl.slots.at(slot).direction;
       if (outer == SlotDirection::input || outer == SlotDirection::history || outer == SlotDirection::inout) continue;
-      if (maker[slot] < 0) {
-        if (usage_writes(usage)) maker[slot] = int(k);
+      std::vector<int>& made_by = makers[slot];
+      if (made_by.empty() || makes_alongside(decl, made_by, k, usage)) {
+        if (usage_writes(usage)) made_by.push_back(int(k));
         continue;
       }
-      if (!runs_whenever(decl.steps[size_t(maker[slot])].when, decl.steps[k].when)) {
+      const bool covered = std::any_of(made_by.begin(), made_by.end(),
+                                       [&](int m) { return runs_whenever(decl.steps[size_t(m)].when, decl.steps[k].when); });
+      if (!covered) {
         throw std::logic_error("pass type " + decl.name + ": step \"" + decl.steps[k].name + "\" uses slot \"" + decl.slots[slot].name +
-                               "\" where step \"" + decl.steps[size_t(maker[slot])].name + "\", which makes it, does not run");
+                               "\" where step \"" + decl.steps[size_t(made_by.front())].name + "\", which makes it, does not run");
       }
     }
   }
@@ -258,8 +280,9 @@ void check_step_conditions(const PassDecl& decl) {
 
 void finish_steps(PassDecl& decl) {
   check_step_conditions(decl);
-  std::vector<uint8_t> written(decl.slots.size(), 0);
-  for (StepDecl& step : decl.steps) {
+  std::vector<std::vector<int>> writers(decl.slots.size());  // the earlier steps that write each slot
+  for (size_t k = 0; k < decl.steps.size(); ++k) {
+    StepDecl& step = decl.steps[k];
     PassDecl d = decl;
     d.steps.clear();
     d.kind = step.kind;
@@ -272,13 +295,13 @@ void finish_steps(PassDecl& decl) {
         s.direction = SlotDirection::input;
         s.optional = false;
         s.format = Format::undefined;  // the resource's own (checked where it is made)
-      } else if (outer == SlotDirection::inout || written[slot]) {
+      } else if (outer == SlotDirection::inout || (!writers[slot].empty() && !makes_alongside(decl, writers[slot], k, usage))) {
         s.direction = SlotDirection::inout;
         s.format = Format::undefined;
       } else {
         s.direction = SlotDirection::output;
       }
-      if (usage_writes(usage)) written[slot] = 1;
+      if (usage_writes(usage)) writers[slot].push_back(int(k));
     }
     step.decl = std::make_shared<const PassDecl>(std::move(d));
   }

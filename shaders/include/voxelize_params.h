@@ -5,7 +5,7 @@
 
 GPU_BEGIN
 GPU_STRUCT(VoxelizeParams) {
-  ivec4 counts;  // x the triangles, y the grid's resolution
+  ivec4 counts;  // x the triangles, y the grid's resolution; six_view_depth's views: z the view (0…5, include/six_view_depth.glsl)
 };
 GPU_END
 

@@ -158,6 +158,32 @@ TEST(PassDecl, AStepThatMakesASlotRunsWheneverItsUsersDo) {
   EXPECT_TRUE(refused(StepCondition{{t.a.index}}, {}, {}));  // the first step is the pass's own graph pass
 }
 
+// Two steps of variants that never run together may each make one output (voxelize's
+// overlap and fill): both are its maker, unless the second reads what it writes.
+struct AlternativeMakersTable : PassTable {
+  explicit AlternativeMakersTable(Usage second_usage, bool overlapping)
+      : PassTable("alternatives", PassKind::graphics, "an output made by either variant's step") {
+    step("first", PassKind::graphics, {{scratch, Usage::color_attachment}});
+    step("in_a", PassKind::graphics, {{result, Usage::color_attachment}}, only_in({a}));
+    step("in_b", PassKind::graphics, {{result, second_usage}}, overlapping ? only_in({a, b}) : only_in({b}));
+  }
+  VariantHandle a = variant("a", "variant a");
+  VariantHandle b = variant("b", "variant b");
+  SlotHandle result = output("result", ResourceKind::texture2d, Usage::color_attachment, Format::rgba16_float, SizeSpec::of_output(), "the image");
+  SlotHandle scratch = internal("scratch", ResourceKind::texture2d, Format::rgba16_float, SizeSpec::of_output(), "in between");
+};
+
+TEST(PassDecl, StepsOfVariantsThatNeverRunTogetherEachMakeAnOutput) {
+  AlternativeMakersTable table(Usage::color_attachment, false);
+  finish_steps(table.decl);
+  EXPECT_EQ(table.decl.steps[1].decl->slots[table.result.index].direction, SlotDirection::output);
+  EXPECT_EQ(table.decl.steps[2].decl->slots[table.result.index].direction, SlotDirection::output);
+  AlternativeMakersTable reads(Usage::color_attachment_load, false);  // b would read what a never wrote
+  EXPECT_THROW(finish_steps(reads.decl), std::logic_error);
+  AlternativeMakersTable overlapping(Usage::color_attachment, true);  // in a, the second step modifies the first's
+  EXPECT_THROW(finish_steps(overlapping.decl), std::logic_error);
+}
+
 TEST(PassDecl, AConditionHoldsInItsVariantsWhileItsCountExceedsItsBound) {
   const SteppedTable t({}, {}, {});
   const StepCondition in_a_past_two{{t.a.index}, t.count.index, 2};
