@@ -29,6 +29,16 @@ Real refraction_blur_lod(Real roughness, Real ior, Real path_behind, Real distan
   return std::clamp(std::log2(width / (distance_behind * pixel_angle)), Real(0), Real(16));
 }
 
+// The level of an environment cube's mip chain whose texels span a lobe `spread` rad wide,
+// level 0's faces `face_size` texels (a texel ~(π/2)/face_size): log2 of the ratio in [0, 16],
+// 0 for a sharp lobe. Twin of shaders/include/translucency.glsl's.
+template <typename Real>
+Real environment_lod(Real spread, int face_size) {
+  const Real texel = Real(1.5707963) / Real(std::max(face_size, 1));
+  if (!(spread > texel)) return Real(0);
+  return std::min(std::log2(spread / texel), Real(16));
+}
+
 // Reflectance at normal incidence between media of indices n1 and n2: ((n1 − n2)/(n1 + n2))²
 // (RTR4 eq. 9.17; 0.04 for air and glass, n = 1.5).
 template <typename Real>

@@ -63,7 +63,7 @@ vec3 refracted_sample_at(SurfacePoint p, float ior) {
   // What screen space cannot show (off the screen, behind the camera, hidden by something in
   // front of the refractor) and the sky where the ray meets no surface: the environment
   // toward the way out, where a cube is wired; else the straight sample.
-  const vec3 missed = has_environment_cube() ? environment_toward(exit.direction) : straight;
+  const vec3 missed = has_environment_cube() ? environment_toward(exit.direction, refracted_spread(ior)) : straight;
   // The point the way out reaches at the distance the straight ray meets the opaque surface.
   const vec3 exit_point = p.position + exit.offset;
   const vec3 target = slab ? translucency.camera.xyz - p.to_camera * behind + exit.offset

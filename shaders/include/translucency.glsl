@@ -121,6 +121,17 @@ float refraction_blur_lod(float roughness, float ior, float path_behind, float d
   return clamp(log2(width / (distance_behind * pixel_angle)), 0.0, 16.0);  // 16: past any chain (finite for any input)
 }
 
+// The level of an environment cube's mip chain (cube_mips) whose texels span a lobe
+// `spread` rad wide, on a cube whose level 0 faces are `face_size` texels (a texel spans
+// ~(π/2)/face_size there): log2 of the ratio, in [0, 16]; 0 for a sharp lobe. The spread of
+// a rough interface's lobe: 2α (α = roughness², GGX's slope width) for the reflection, turned by
+// 1 − 1/η for the refraction, as refraction_blur_lod. physics::environment_lod.
+float environment_lod(float spread, int face_size) {
+  const float texel = 1.5707963 / float(max(face_size, 1));
+  if (!(spread > texel)) return 0.0;
+  return min(log2(spread / texel), 16.0);
+}
+
 // C = radiance + transmittance ⊙ C_behind, per channel.
 struct SurfaceLayer {
   vec3 radiance;

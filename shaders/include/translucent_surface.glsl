@@ -34,13 +34,19 @@ layout(set = 3, binding = 4) uniform AerialBlock { AerialLookup f; } air;
 layout(set = 3, binding = 5) uniform texture3D aerial_scattering;
 layout(set = 3, binding = 6) uniform texture3D aerial_transmittance;
 
-// The environment's radiance toward `direction`: the wired cube's (sky_cube), else the
-// uniform radiance of the block (the background, or the sky's mean under an atmosphere).
+// The environment's radiance toward `direction` over a lobe `spread` rad wide: the wired
+// cube's (sky_cube, scene_probe; through cube_mips, a rough lobe reads the level whose texels
+// span it), else the uniform radiance of the block (the background, or the sky's mean).
 bool has_environment_cube() { return translucency.refraction.y > 0.5; }
-vec3 environment_toward(vec3 direction) {
+vec3 environment_toward(vec3 direction, float spread) {
   if (!has_environment_cube()) return translucency.environment.rgb;
-  return textureLod(samplerCube(environment_cube, trilinear), direction, 0.0).rgb;
+  const float lod = environment_lod(spread, textureSize(samplerCube(environment_cube, trilinear), 0).x);
+  return textureLod(samplerCube(environment_cube, trilinear), direction, lod).rgb;
 }
+// The lobes' widths of the object's rough interface (GGX α = roughness²): 2α reflected,
+// 2α(1 − 1/η) refracted (as refraction_blur_lod turns it).
+float reflected_spread() { return 2.0 * object.emissive.w * object.emissive.w; }
+float refracted_spread(float ior) { return reflected_spread() * (1.0 - 1.0 / max(ior, 1.0)); }
 
 layout(location = 0) in vec3 world_position;
 layout(location = 1) in vec3 world_normal;
@@ -108,7 +114,7 @@ void main() {
   l.albedo = albedo;
   l.emissive = emission;
   l.irradiance = surface_irradiance(world_position, n);
-  l.environment = environment_toward(reflect(-to_camera / distance_to_fragment, n));  // the mirrored view ray
+  l.environment = environment_toward(reflect(-to_camera / distance_to_fragment, n), reflected_spread());  // the mirrored view ray
   const float inside = inside_path(cos_view, distance_to_fragment, thickness, object.translucency.z);  // along the view ray (refraction's offset needs it)
   SurfaceLayer layer = layer_at_ior(l, object.translucency.z, cos_view, inside);
   if (dispersive()) {

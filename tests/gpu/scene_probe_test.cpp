@@ -17,6 +17,7 @@
 #include "passes/passes.h"
 #include "physics/cube_face.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/six_emissive_boxes.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
@@ -56,18 +57,11 @@ std::string six_boxes(const std::string& probe_params, const std::string& extra_
   "scene": { "camera": { "position": [0, 1, 0], "target": [0, 1, -1], "fov_y_deg": 90, "near": 0.05, "far": 200 },
     "background": { "radiance": [0.01, 0.02, 0.03] },
     "materials": {
-      "px": { "albedo": [0, 0, 0], "emissive": [1, 0, 0] }, "nx": { "albedo": [0, 0, 0], "emissive": [0, 1, 0] },
-      "py": { "albedo": [0, 0, 0], "emissive": [0, 0, 1] }, "ny": { "albedo": [0, 0, 0], "emissive": [1, 1, 0] },
-      "pz": { "albedo": [0, 0, 0], "emissive": [0, 1, 1] }, "nz": { "albedo": [0, 0, 0], "emissive": [1, 0, 1] },
+      )" + six_emissive_box_materials() + R"(,
       "marker": { "albedo": [0, 0, 0], "emissive": [4, 4, 4] }, "lit": { "albedo": [0.6, 0.5, 0.4] } },
     "lights": [ { "name": "sun", "type": "directional", "direction": [0.3, -1, -0.2], "irradiance": [2, 2, 2] } ],
     "objects": [
-      { "shape": "box", "size": [0.2, 1, 1], "material": "px", "transform": { "translate": [3, 1, 0] } },
-      { "shape": "box", "size": [0.2, 1, 1], "material": "nx", "transform": { "translate": [-3, 1, 0] } },
-      { "shape": "box", "size": [1, 0.2, 1], "material": "py", "transform": { "translate": [0, 4, 0] } },
-      { "shape": "box", "size": [1, 0.2, 1], "material": "ny", "transform": { "translate": [0, -2, 0] } },
-      { "shape": "box", "size": [1, 1, 0.2], "material": "pz", "transform": { "translate": [0, 1, 3] } },
-      { "shape": "box", "size": [1, 1, 0.2], "material": "nz", "transform": { "translate": [0, 1, -3] } },
+      )" + six_emissive_box_objects() + R"(,
       { "shape": "sphere", "size": [0.1, 0.1, 0.1], "material": "marker", "transform": { "translate": [2, 2, -0.6] } },
       { "shape": "box", "size": [0.5, 0.5, 0.5], "material": "lit", "transform": { "translate": [-0.8, 0.6, -1.5], "rotate_deg": [20, 30, 0] } })" +
          extra_objects + R"( ] },

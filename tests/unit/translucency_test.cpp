@@ -197,3 +197,20 @@ TEST(Translucency, TheSphereModelGoesStraightWithoutAnInterface) {
 
 }  // namespace
 }  // namespace volgraph::physics
+
+namespace volgraph::physics {
+namespace {
+
+// A lobe as wide as a level-0 texel (π/2 over the face) reads level 0; twice that, level 1;
+// a sharp lobe and a huge one stay in [0, 16].
+TEST(Translucency, TheEnvironmentLevelIsTheLobesWidthInTexels) {
+  const double texel = 1.5707963 / 64;
+  EXPECT_EQ(environment_lod(0.0, 64), 0.0);
+  EXPECT_EQ(environment_lod(texel, 64), 0.0);
+  EXPECT_NEAR(environment_lod(2 * texel, 64), 1.0, 1e-12);
+  EXPECT_NEAR(environment_lod(8 * texel, 64), 3.0, 1e-12);
+  EXPECT_EQ(environment_lod(1e9, 64), 16.0);
+}
+
+}  // namespace
+}  // namespace volgraph::physics
