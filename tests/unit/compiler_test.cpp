@@ -345,3 +345,27 @@ TEST_F(ShippedConfigs, JsonReportCarriesTheMemoryFigures) {
 
 }  // namespace
 }  // namespace volgraph
+
+namespace volgraph {
+namespace {
+
+// Cubes are transients like any image: in the glass of water, the probe's mip chain takes
+// over bytes an earlier transient used (a hand-over), and every cube's bytes are six faces'.
+TEST_F(ShippedConfigs, CubeMapsAreAliasedAsAnyTransient) {
+  const LoadedConfig c = load("demo_glass_of_water.json");
+  const Plan plan = compile_loaded(c);
+  bool cube_takes_over = false;
+  for (const Handover& h : plan.handovers) {
+    cube_takes_over |= c.graph.resources[h.resource].desc.kind == ResourceKind::texture_cube;
+  }
+  EXPECT_TRUE(cube_takes_over);
+  for (const GraphResource& r : c.graph.resources) {
+    if (r.desc.kind != ResourceKind::texture_cube) continue;
+    ResourceDesc one_face = r.desc;
+    one_face.kind = ResourceKind::texture2d;
+    EXPECT_EQ(content_bytes(r.desc), 6 * content_bytes(one_face)) << r.desc.name;
+  }
+}
+
+}  // namespace
+}  // namespace volgraph
