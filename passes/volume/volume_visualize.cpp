@@ -121,15 +121,14 @@ struct VolumeVisualizeTable : PassTable {
   StepHandle slice_planes = step("slices", PassKind::graphics,
                                  {{density, Usage::sampled}, {depth, Usage::sampled}, {color_out, Usage::color_attachment_load}},
                                  only_in({slices}));
-  // The light buffer alternates between target and sampled texture inside this step (the record's own barriers).
+  StepHandle light_clear = step("light_clear", PassKind::graphics, {{light, Usage::color_attachment}}, only_in({half_angle}));
+  // The light buffer is sampled here, and between the eye's slices a target (the record's own barriers).
   StepHandle half_angle_slices = step("half_angle", PassKind::graphics,
                                       {{density, Usage::sampled}, {depth, Usage::sampled}, {eye, Usage::color_attachment_load},
-                                       {light, Usage::color_attachment_load}},
+                                       {light, Usage::sampled}},
                                       only_in({half_angle}));
-  // The light buffer is declared sampled here too, so that its texture can be sampled (in the step before).
   StepHandle half_angle_composite = step("half_angle_composite", PassKind::graphics,
-                                         {{eye, Usage::sampled}, {light, Usage::sampled}, {color_out, Usage::color_attachment_load}},
-                                         only_in({half_angle}));
+                                         {{eye, Usage::sampled}, {color_out, Usage::color_attachment_load}}, only_in({half_angle}));
 };
 
 // `box: volume_data` needs the scene's volume file, whose header must read.
@@ -184,6 +183,7 @@ class VolumeVisualizeExecution final : public PassExecution {
 
   void record(PassContext& c) override {
     if (c.step_is(t_.slice_planes)) return record_slices(c);
+    if (c.step_is(t_.light_clear)) return record_light_clear(c);
     if (c.step_is(t_.half_angle_slices)) return record_half_angle(c);
     if (c.step_is(t_.half_angle_composite)) return record_half_angle_composite(c);
     namespace shader = volume_visualize_shader;
@@ -217,11 +217,21 @@ class VolumeVisualizeExecution final : public PassExecution {
                          rhi::BlendMode::premultiplied_over);
   }
 
+  // The light buffer's transmittance 1 before the first slice.
+  void record_light_clear(PassContext& c) {
+    rhi::RenderPassDesc pass;
+    pass.label = c.name();
+    pass.colors = {{c.view(t_.light), rhi::LoadOp::clear, {1, 1, 1, 1}}};
+    c.encoder.begin_render_pass(pass);
+    c.encoder.end_render_pass();
+  }
+
   // Half-angle slicing (Kniss et al. 2003): one graphics step whose render passes alternate, per
   // slice from the light on, the eye buffer (slice k lit by the light buffer) and the light buffer
-  // (slice k's opacity multiplied in), with its own barriers between them (the light buffer
-  // target → sampled and back; the eye buffer target → target). Not a graph step per slice: the
-  // slice count is a parameter up to 4096, and steps are declared once per pass type.
+  // (slice k's opacity multiplied in), with its own barriers between them: the light buffer,
+  // sampled as the step declares, a target for its slice and back; the eye buffer target →
+  // target between its passes. Not a graph step per slice: the slice count is a parameter up to
+  // 4096, and a pass type declares its steps once.
   void record_half_angle(PassContext& c) {
     namespace eye_shader = shaders::volume_half_angle_eye_frag;
     namespace light_shader = shaders::volume_half_angle_light_frag;
@@ -237,31 +247,33 @@ class VolumeVisualizeExecution final : public PassExecution {
     const AccessState target = access_state(Usage::color_attachment_load, PassKind::graphics, ResourceKind::texture2d);
     const AccessState sampled = access_state(Usage::sampled, PassKind::graphics, ResourceKind::texture2d);
     const rhi::TextureId eye = c.texture(t_.eye), light = c.texture(t_.light);
-    const auto render_pass = [&](const char* what, SlotHandle slot, rhi::LoadOp load, float clear) {
+    const auto render_pass = [&](const char* what, SlotHandle slot, rhi::LoadOp load) {
       rhi::RenderPassDesc pass;
       pass.label = c.name() + " " + what;
-      pass.colors = {{c.view(slot), load, {clear, clear, clear, clear}}};
+      pass.colors = {{c.view(slot), load}};
       c.encoder.begin_render_pass(pass);
     };
-    render_pass("light clear", t_.light, rhi::LoadOp::clear, 1.0f);  // transmittance 1 before the first slice
-    c.encoder.end_render_pass();
     const uint32_t count = uint32_t(c.param(t_.slice_count));
     for (uint32_t k = 0; k < count; ++k) {
-      const std::array<rhi::ResourceBarrier, 2> to_eye = {{{.texture = light, .from = target, .to = sampled}, {.texture = eye, .from = target, .to = target}}};
-      c.encoder.barrier(std::span(to_eye.data(), k == 0 ? 1 : 2));
-      render_pass("eye slice", t_.eye, k == 0 ? rhi::LoadOp::clear : rhi::LoadOp::load, 0.0f);
+      if (k > 0) {
+        const std::array<rhi::ResourceBarrier, 2> to_eye = {{{.texture = light, .from = target, .to = sampled}, {.texture = eye, .from = target, .to = target}}};
+        c.encoder.barrier(to_eye);
+      }
+      render_pass("eye slice", t_.eye, k == 0 ? rhi::LoadOp::clear : rhi::LoadOp::load);  // cleared to 0: nothing in front yet
       c.encoder.set_pipeline(eye_program.pipeline);
       c.encoder.set_bind_group(0, eye_group);
       c.encoder.draw(3, 1, 3 * k);  // volume_half_angle.vert: vertices 3k … 3k + 2 are slice k
       c.encoder.end_render_pass();
       const std::array<rhi::ResourceBarrier, 1> to_light = {{{.texture = light, .from = sampled, .to = target}}};
       c.encoder.barrier(to_light);
-      render_pass("light slice", t_.light, rhi::LoadOp::load, 1.0f);
+      render_pass("light slice", t_.light, rhi::LoadOp::load);
       c.encoder.set_pipeline(light_slices_.pipeline);
       c.encoder.set_bind_group(0, light_group);
       c.encoder.draw(3, 1, 3 * k);
       c.encoder.end_render_pass();
     }
+    const std::array<rhi::ResourceBarrier, 1> to_sampled = {{{.texture = light, .from = target, .to = sampled}}};
+    if (count > 0) c.encoder.barrier(to_sampled);  // as the step declares it, for the plan's next barrier
   }
 
   // The eye buffer over the compute step's copy of the scene.
