@@ -12,6 +12,12 @@
 //               the crossing refined by `bisections`, shaded by Lambert with the normal of
 //               the density's gradient (central differences) lit by the scene's sun (else a
 //               headlight of irradiance π), the transfer function's colour at `iso` as albedo.
+//   slices:     `slices` view-aligned planes blended back to front (graphics step `slices`);
+//   half_angle: `slices` planes across the half vector of the view and the light (Kniss et al.
+//               2003), each drawn into the eye buffer lit by the light buffer's transmittance,
+//               then into the light buffer; one graphics step alternating the two targets' render
+//               passes with its own barriers (a step per slice cannot be: the count is a
+//               parameter), then the eye buffer composited over the scene (record_half_angle).
 // Output `color`: the scene's colour behind, times the volume's transmittance, plus what it
 // emits (an isosurface is opaque). A compute pass that writes a new image, because fog_apply
 // (the graph's compositor of scattering and transmittance) runs only with a medium or clouds

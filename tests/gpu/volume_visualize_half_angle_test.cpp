@@ -64,7 +64,8 @@ double worst_difference(const Texels& a, const Texels& b) {
 // under), half_angle samples the planes `slices` samples (back to front, over): with an
 // absorbing-only transfer (black, occlusion on) and with the grey ramp unoccluded (the
 // headlight's 4π makes a sample emit its colour), the images agree within 64 slices' half-float
-// roundings of the blend targets (tolerance 64 · 2⁻¹¹ ≈ 0.031 absolute on colours ≤ 1).
+// roundings of the blend targets (tolerance 64 · 2⁻¹¹ ≈ 0.031 absolute on colours ≤ 1; measured
+// 2.4e-3 and 5.4e-3 on lavapipe and Dawn: over and under round differently).
 TEST_P(VolumeHalfAngle, LitFromTheCameraItEqualsTheViewAlignedSlices) {
   struct Case {
     const char* what;
@@ -96,8 +97,9 @@ double mean_of_half(const Texels& t, bool left) {
 }
 
 // The sphere phantom (grey ramp) lit from +x: with occlusion its far side (x < 0) is darker
-// than without (measured ratio printed; asserted < 0.8), and no pixel is brighter (beyond one
-// half-float step).
+// than without (mean colour ratio over the middle rows' left half, measured 0.019 against 0.35
+// on the lit half; asserted < 0.8 and below the lit half's), and no pixel is brighter (beyond
+// one half-float step).
 TEST_P(VolumeHalfAngle, TheSlicesNearerTheLightShadowTheFarSide) {
   const std::string lights = R"([ { "name": "sun", "type": "directional", "direction": [-1, 0, 0], "irradiance": [12.566, 12.566, 12.566] } ])";
   const std::string params = R"("transfer": "grey", "opacity_length": 0.02, "slices": 128, "light_occlusion": )";
@@ -117,7 +119,8 @@ TEST_P(VolumeHalfAngle, TheSlicesNearerTheLightShadowTheFarSide) {
 // pixel's shadowed / unshadowed colour is the light's transmittance exp(−σ (1 − x)) at its
 // column's x, discretised by the slices: within the factor of one slice's spacing along the light
 // and one light texel (the light buffer's edge padding), 1 − 0.9^((Δ_light + texel)/Δ₀), plus
-// 0.01 (the light buffer's half-float products and bilinear lookups).
+// 0.01 (the light buffer's half-float products and bilinear lookups): 0.070 for 256 slices and a
+// 256² light buffer; measured 0.044 on both backends.
 TEST_P(VolumeHalfAngle, ALightThroughAUniformBoxDecaysAsTheClosedForm) {
   const std::string lights = R"([ { "name": "sun", "type": "directional", "direction": [-1, 0, 0], "irradiance": [12.566, 12.566, 12.566] } ])";
   const std::string params = R"("transfer": "constant", "color": [1, 1, 1], "opacity": 0.1, "opacity_length": 0.05, "slices": 256, "light_occlusion": )";
