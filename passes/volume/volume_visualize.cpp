@@ -260,6 +260,14 @@ class VolumeVisualizeExecution final : public PassExecution {
       c.encoder.begin_render_pass(pass);
     };
     const uint32_t count = uint32_t(c.param(t_.slice_count));
+    if (!c.param(t_.light_occlusion)) {  // unshadowed: every slice in one render pass, in order (the light buffer stays 1)
+      render_pass("eye slices", t_.eye, rhi::LoadOp::clear);
+      c.encoder.set_pipeline(eye_program.pipeline);
+      c.encoder.set_bind_group(0, eye_group);
+      c.encoder.draw(3 * count);
+      c.encoder.end_render_pass();
+      return;
+    }
     for (uint32_t k = 0; k < count; ++k) {
       if (k > 0) {
         const std::array<rhi::ResourceBarrier, 2> to_eye = {{{.texture = light, .from = target, .to = sampled}, {.texture = eye, .from = target, .to = target}}};
