@@ -174,8 +174,9 @@ enum class CullMode : uint8_t { none, front, back };
 // the destination's factor: a layer's radiance over its transmittance in one draw, on a
 // device with Device::has_dual_source_blending().
 // premultiplied_over: src + dst × (1 − src alpha), Porter & Duff's over for premultiplied
-// colour (slices blended back to front).
-enum class BlendMode : uint8_t { replace, additive, multiply, source_plus_dest_times_source1, premultiplied_over };
+// colour (slices blended back to front). premultiplied_under: dst + src × (1 − dst alpha), the
+// same composite drawn front to back (half-angle slices whose light comes from behind the eye).
+enum class BlendMode : uint8_t { replace, additive, multiply, source_plus_dest_times_source1, premultiplied_over, premultiplied_under };
 enum class IndexFormat : uint8_t { uint16, uint32 };
 enum class LoadOp : uint8_t { clear, load };
 

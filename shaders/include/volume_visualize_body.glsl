@@ -96,7 +96,7 @@ void main() {
   const vec3 behind = texelFetch(sampler2D(scene_color, nearest), pixel, 0).rgb;
   vec4 result = vec4(behind, 1.0);
   vec4 hit_point = vec4(0.0), normal = vec4(0.0);
-  if (span.x < span.y && params.march.w != VOLUME_VISUALIZE_SLICES) {  // slices: the scene behind, blended over next
+  if (span.x < span.y && params.march.w < VOLUME_VISUALIZE_SLICES) {  // slices, half_angle: the scene behind, blended over next
     if (params.march.w == VOLUME_VISUALIZE_ISOSURFACE) {
       const float z = first_crossing(origin, ray, span);
       if (z >= 0.0) {

@@ -9,6 +9,7 @@
 #define VOLUME_VISUALIZE_RAYMARCH 0
 #define VOLUME_VISUALIZE_ISOSURFACE 1
 #define VOLUME_VISUALIZE_SLICES 2
+#define VOLUME_VISUALIZE_HALF_ANGLE 3
 
 GPU_BEGIN
 GPU_STRUCT(VolumeVisualizeParams) {
@@ -22,6 +23,10 @@ GPU_STRUCT(VolumeVisualizeParams) {
                           // z the 2D table's top row's |∇ρ| (1/m)
   vec4 light_direction;   // xyz toward the light (unit); w 1: a scene light, 0: the headlight
   vec4 light_irradiance;  // rgb E (W/m²)
+  vec4 half_axis;         // half_angle: xyz the slices' axis s (unit, Kniss et al. 2003's half vector), w the first slice's s·p (m)
+  vec4 light_u;           // half_angle: xyz the light buffer's x axis (unit, ⟂ the light), w the half side it covers (m)
+  vec4 light_v;           // half_angle: xyz its y axis (unit); w its side (texels)
+  vec4 half_angle_mode;   // half_angle: x 1 front to back (blended under), 0 back to front (over); y 1 light occlusion on, 0 off
   vec4 knot_density[VOLUME_TRANSFER_MAX_KNOTS];  // x each knot's density
   vec4 knot_rgba[VOLUME_TRANSFER_MAX_KNOTS];     // each knot's colour and opacity
 };

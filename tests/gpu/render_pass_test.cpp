@@ -129,6 +129,14 @@ TEST_P(RenderPass, AdditiveBlendingSums) {
   EXPECT_EQ(red(render({a, b}, CullMode::none, BlendMode::additive, false), 5, 9), 0.75f);
 }
 
+// Premultiplied under, front to back (dst + src·(1 − dst α)), is over, back to front: a front
+// layer (0.25, α 0.5) and a back one (0.5, α 0.5) make 0.25 + 0.5 · 0.5 either way, exactly.
+TEST_P(RenderPass, PremultipliedUnderFrontToBackIsOverBackToFront) {
+  const Quad front{-1, 1, 0.5f, {0.25f, 0, 0, 0.5f}}, back{-1, 1, 0.5f, {0.5f, 0, 0, 0.5f}};
+  EXPECT_EQ(red(render({front, back}, CullMode::none, BlendMode::premultiplied_under, false), 5, 9), 0.5f);
+  EXPECT_EQ(red(render({back, front}, CullMode::none, BlendMode::premultiplied_over, false), 5, 9), 0.5f);
+}
+
 // In-stream buffer updates are ordered like any transfer write: update, barrier, copy.
 TEST_P(RenderPass, UpdateBufferLandsBeforeTheCopyAfterIt) {
   const BufferId a = device_->create_buffer({"a", 64, buffer_usage::copy_src | buffer_usage::copy_dst});

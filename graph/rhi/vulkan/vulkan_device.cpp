@@ -585,6 +585,12 @@ rhi::RenderPipelineId VulkanDevice::create_render_pipeline(const rhi::RenderPipe
       b.dstColorBlendFactor = b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
       b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
     }
+    if (c.blend == rhi::BlendMode::premultiplied_under) {  // dst + src × (1 − dst alpha)
+      b.blendEnable = VK_TRUE;
+      b.srcColorBlendFactor = b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA;
+      b.dstColorBlendFactor = b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+      b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
     if (c.blend == rhi::BlendMode::source_plus_dest_times_source1) {  // src0 + dst × src1
       b.blendEnable = VK_TRUE;
       b.srcColorBlendFactor = b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;

@@ -243,10 +243,14 @@ constexpr wgpu::BlendState kSourcePlusDestTimesSource1 = {
 // src + dst × (1 − src alpha) for colour and alpha: over, premultiplied.
 constexpr wgpu::BlendState kPremultipliedOver = {{wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::OneMinusSrcAlpha},
                                                  {wgpu::BlendOperation::Add, wgpu::BlendFactor::One, wgpu::BlendFactor::OneMinusSrcAlpha}};
+// dst + src × (1 − dst alpha) for colour and alpha: under, premultiplied (front to back).
+constexpr wgpu::BlendState kPremultipliedUnder = {{wgpu::BlendOperation::Add, wgpu::BlendFactor::OneMinusDstAlpha, wgpu::BlendFactor::One},
+                                                  {wgpu::BlendOperation::Add, wgpu::BlendFactor::OneMinusDstAlpha, wgpu::BlendFactor::One}};
 
 const wgpu::BlendState* blend_state(rhi::BlendMode mode) {
   switch (mode) {
     case rhi::BlendMode::premultiplied_over: return &kPremultipliedOver;
+    case rhi::BlendMode::premultiplied_under: return &kPremultipliedUnder;
     case rhi::BlendMode::additive: return &kAdditive;
     case rhi::BlendMode::multiply: return &kMultiply;
     case rhi::BlendMode::source_plus_dest_times_source1: return &kSourcePlusDestTimesSource1;
