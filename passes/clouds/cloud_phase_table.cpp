@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "graph/execute/pass_execution.h"
+#include "passes/plumbing/staged_upload.h"
 #include "passes/register_pass.h"
 #include "physics/mie.h"
 
@@ -59,13 +60,7 @@ class CloudPhaseTableExecution final : public PassExecution {
   // Runs when the cache key changed: the first frame, another size or distribution.
   void record(PassContext& c) override {
     const std::vector<float> texels = phase_texels(table(c));
-    const size_t bytes = texels.size() * sizeof(float);
-    if (staging_bytes_ != bytes) {
-      staging_ = c.device.create_buffer({c.name() + " texels", bytes, rhi::buffer_usage::copy_src | rhi::buffer_usage::copy_dst});
-      staging_bytes_ = bytes;
-    }
-    c.device.write_buffer(staging_, 0, std::as_bytes(std::span(texels)));
-    c.encoder.copy_buffer_to_texture(staging_, 0, c.texture(t_.phase));
+    upload_.record(c, std::as_bytes(std::span(texels)), c.texture(t_.phase));
   }
 
  private:
@@ -77,8 +72,7 @@ class CloudPhaseTableExecution final : public PassExecution {
 
   const CloudPhaseTableTable& t_;
   bool henyey_greenstein_ = false;
-  rhi::BufferId staging_;
-  size_t staging_bytes_ = 0;
+  plumbing::StagedUpload upload_;
 };
 
 }  // namespace

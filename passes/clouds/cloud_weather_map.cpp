@@ -11,6 +11,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/clouds/cloud_weather_map.h"
+#include "passes/plumbing/staged_upload.h"
 #include "passes/register_pass.h"
 
 namespace volgraph {
@@ -60,18 +61,12 @@ class CloudWeatherMapExecution final : public PassExecution {
   void record(PassContext& c) override {
     const plumbing::Rgba8Image image = plumbing::read_image_file(c.scene->clouds->weather_map->image);
     const std::vector<uint8_t> texels = clouds::weather_texels(image, uint32_t(c.param(t_.size)));
-    if (staging_bytes_ != texels.size()) {
-      staging_ = c.device.create_buffer({c.name() + " texels", texels.size(), rhi::buffer_usage::copy_src | rhi::buffer_usage::copy_dst});
-      staging_bytes_ = texels.size();
-    }
-    c.device.write_buffer(staging_, 0, std::as_bytes(std::span(texels)));
-    c.encoder.copy_buffer_to_texture(staging_, 0, c.texture(t_.weather));
+    upload_.record(c, std::as_bytes(std::span(texels)), c.texture(t_.weather));
   }
 
  private:
   const CloudWeatherMapTable& t_;
-  rhi::BufferId staging_;
-  size_t staging_bytes_ = 0;
+  plumbing::StagedUpload upload_;
 };
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
 #include "passes/plumbing/textures.h"
+#include "passes/plumbing/staged_upload.h"
 #include "passes/register_pass.h"
 
 namespace volgraph {
@@ -77,18 +78,12 @@ class TransferTableExecution final : public PassExecution {
   // Runs when the cache key changed: the first frame, another image (or the image rewritten), another size.
   void record(PassContext& c) override {
     const std::vector<uint8_t> texels = rows_bottom_first(plumbing::read_image_file(c.scene->volume_data->transfer_2d));
-    if (staging_bytes_ != texels.size()) {
-      staging_ = c.device.create_buffer({c.name() + " texels", texels.size(), rhi::buffer_usage::copy_src | rhi::buffer_usage::copy_dst});
-      staging_bytes_ = texels.size();
-    }
-    c.device.write_buffer(staging_, 0, std::as_bytes(std::span(texels)));
-    c.encoder.copy_buffer_to_texture(staging_, 0, c.texture(t_.table));
+    upload_.record(c, std::as_bytes(std::span(texels)), c.texture(t_.table));
   }
 
  private:
   const TransferTableTable& t_;
-  rhi::BufferId staging_;
-  size_t staging_bytes_ = 0;
+  plumbing::StagedUpload upload_;
 };
 
 }  // namespace

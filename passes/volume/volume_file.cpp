@@ -17,6 +17,7 @@
 
 #include "graph/execute/pass_execution.h"
 #include "graph/scene/scene.h"
+#include "passes/plumbing/staged_upload.h"
 #include "passes/register_pass.h"
 #include "passes/volume/volume_file_reader.h"
 
@@ -85,19 +86,12 @@ class VolumeFileExecution final : public PassExecution {
     const std::vector<float> values = volume_file::normalised(volume_file::read_samples(layout), volume_file::volume_window(volume, layout));
     std::vector<uint16_t> texels(values.size() * 4, 0);  // r the value, g b a zero
     for (size_t i = 0; i < values.size(); ++i) texels[4 * i] = glm::packHalf1x16(values[i]);
-    const size_t bytes = texels.size() * sizeof(uint16_t);
-    if (staging_bytes_ != bytes) {
-      staging_ = c.device.create_buffer({c.name() + " texels", bytes, rhi::buffer_usage::copy_src | rhi::buffer_usage::copy_dst});
-      staging_bytes_ = bytes;
-    }
-    c.device.write_buffer(staging_, 0, std::as_bytes(std::span(texels)));
-    c.encoder.copy_buffer_to_texture(staging_, 0, c.texture(t_.density));
+    upload_.record(c, std::as_bytes(std::span(texels)), c.texture(t_.density));
   }
 
  private:
   const VolumeFileTable& t_;
-  rhi::BufferId staging_;
-  size_t staging_bytes_ = 0;
+  plumbing::StagedUpload upload_;
 };
 
 }  // namespace
