@@ -12,6 +12,7 @@
 #include "passes/passes.h"
 #include "physics/translucency.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/config_on_each_backend.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
@@ -67,23 +68,11 @@ inline void expect_tinted_by_red_glass(const Texels& plain, const Texels& tinted
   EXPECT_EQ(otherwise_changed, 0) << what << "s changed other than by the sheet's transmittance";
 }
 
-class ConfigOutputOnEachBackend : public OnEachBackend<Backend> {
+class ConfigOutputOnEachBackend : public ConfigOnEachBackend<Backend> {
  protected:
   Backend backend() const override { return GetParam(); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
   // The config's first graph output after one frame (`name` names the text in messages).
-  Texels first_output(const std::string& name, const std::string& text) {
-    const LoadedConfig loaded = load_config_text(name, text, registry_);
-    scene_ = loaded.config.scene;
-    Executor executor(device(), loaded.graph, &scene_, {});
-    executor.run_frame();
-    return executor.read_output(0);
-  }
-  PassRegistry registry_;
-  Scene scene_;
+  Texels first_output(const std::string& name, const std::string& text) { return render_outputs(name, text, 1).front(); }
 };
 
 }  // namespace volgraph::testing

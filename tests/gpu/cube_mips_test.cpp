@@ -15,6 +15,7 @@
 #include "passes/passes.h"
 #include "physics/translucency.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/config_on_each_backend.h"
 #include "tests/gpu/six_emissive_boxes.h"
 #include "tests/support/image_compare.h"
 
@@ -46,13 +47,9 @@ std::string boxes_and_ball(double roughness) {
     "outputs": ["glass.color", "chain.mips", "probe.cube"] } })";
 }
 
-class CubeMips : public OnEachBackend<> {
+class CubeMips : public ConfigOnEachBackend<> {
  protected:
   Backend backend() const override { return GetParam(); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
   // The image, the chain's levels 0…5 and the probe's cube after one frame.
   struct Rendered {
     Texels image;
@@ -67,7 +64,6 @@ class CubeMips : public OnEachBackend<> {
     for (uint32_t level = 0; level < 6; ++level) out.levels.push_back(executor.read_texture_level(config.graph.outputs[1].resource, level));
     return out;
   }
-  PassRegistry registry_;
 };
 
 float cube_mips_texel(const Texels& t, int face, int i, int j, int c) {

@@ -17,28 +17,17 @@
 #include "passes/passes.h"
 #include "physics/cube_face.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/config_on_each_backend.h"
 #include "tests/gpu/six_emissive_boxes.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
 namespace {
 
-class SceneProbe : public OnEachBackend<> {
+class SceneProbe : public ConfigOnEachBackend<> {
  protected:
   Backend backend() const override { return GetParam(); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
-  std::vector<Texels> render(const std::string& text, size_t outputs) {
-    const LoadedConfig config = load_config_text("scene_probe.json", text, registry_);
-    Executor executor(device(), config.graph, &config.config.scene, {});
-    executor.run_frame();
-    std::vector<Texels> out;
-    for (size_t i = 0; i < outputs; ++i) out.push_back(executor.read_output(i));
-    return out;
-  }
-  PassRegistry registry_;
+  std::vector<Texels> render(const std::string& text, size_t outputs) { return render_outputs("scene_probe.json", text, outputs); }
 };
 
 struct ProbeColor {

@@ -21,6 +21,7 @@
 #include "physics/camera.h"
 #include "physics/cube_face.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/config_on_each_backend.h"
 #include "tests/support/image_compare.h"
 
 namespace volgraph::testing {
@@ -63,21 +64,14 @@ std::string sky_cube_config(const SkyCubeCase& k) {
     "outputs": ["sky.color", "env.cube"] } })";
 }
 
-class SkyCube : public OnEachBackend<> {
+class SkyCube : public ConfigOnEachBackend<> {
  protected:
   Backend backend() const override { return GetParam(); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
+  // The sky pass's image and the cube (six slices, face after face) after one frame; scene_ the case's scene.
+  std::pair<Texels, Texels> render(const SkyCubeCase& k) {
+    std::vector<Texels> out = render_outputs("sky_cube.json", sky_cube_config(k), 2);
+    return {std::move(out[0]), std::move(out[1])};
   }
-  LoadedConfig load(const SkyCubeCase& k) { return load_config_text("sky_cube.json", sky_cube_config(k), registry_); }
-  // The sky pass's image and the cube (six slices, face after face) after one frame.
-  std::pair<Texels, Texels> render(const LoadedConfig& config) {
-    Executor executor(device(), config.graph, &config.config.scene, {});
-    executor.run_frame();
-    return {executor.read_output(0), executor.read_output(1)};
-  }
-  PassRegistry registry_;
 };
 
 Vec3 cube_texel(const Texels& cube, int face, uint32_t i, uint32_t j) {
@@ -91,8 +85,7 @@ Vec3 image_texel(const Texels& image, uint32_t i, uint32_t j) {
 }
 
 TEST_P(SkyCube, HasSixSquareFacesOfItsSize) {
-  const LoadedConfig config = load({});
-  const auto [sky, cube] = render(config);
+  const auto [sky, cube] = render({});
   EXPECT_EQ(cube.width, kSkyCubeFace);
   EXPECT_EQ(cube.height, kSkyCubeFace);
   EXPECT_EQ(cube.depth, 6u);
@@ -105,9 +98,8 @@ TEST_P(SkyCube, HasSixSquareFacesOfItsSize) {
 // backends: equal, largest relative difference 0; bound: one fp16 step).
 TEST_P(SkyCube, FaceMinusZHoldsTheSkyPassImageMirrored) {
   const SkyCubeCase k;
-  const LoadedConfig config = load(k);
-  const auto [sky, cube] = render(config);
-  const physics::ViewRays rays = physics::view_rays(config.config.scene.camera, 1.0);
+  const auto [sky, cube] = render(k);
+  const physics::ViewRays rays = physics::view_rays(scene_.camera, 1.0);
   double largest = 0;
   for (uint32_t j = 0; j < k.face; ++j) {
     for (uint32_t i = 0; i < k.face; ++i) {
@@ -130,9 +122,8 @@ TEST_P(SkyCube, EveryFaceMatchesTheSkyTwinAwayFromTheHorizon) {
   SkyCubeCase k;
   k.cube_params = R"({ "size": 16, "multiscattering": false })";
   k.lut_params = R"({ "multiscattering": false })";
-  const LoadedConfig config = load(k);
-  const auto [sky, cube] = render(config);
-  const Scene& scene = config.config.scene;
+  const auto [sky, cube] = render(k);
+  const Scene& scene = scene_;
   const Atmosphere& a = *scene.atmosphere;
   const physics::AtmosphereView view = physics::atmosphere_view(scene);
   const double mu_h = physics::mu_horizon(a, std::min(view.r, a.top_radius));
@@ -167,8 +158,7 @@ TEST_P(SkyCube, EveryFaceMatchesTheSkyTwinAwayFromTheHorizon) {
 TEST_P(SkyCube, StaysFiniteAtItsLimits) {
   for (const SkyCubeCase& k : {SkyCubeCase{2, 0.35, 1, "{ \"size\": 1 }"}, SkyCubeCase{1e6, 0.35, 8, "{}"},
                                SkyCubeCase{2, -0.3, 8, "{ \"size\": 8, \"sun_disk\": true }"}}) {
-    const LoadedConfig config = load(k);
-    const auto [sky, cube] = render(config);
+    const auto [sky, cube] = render(k);
     EXPECT_TRUE(all_finite(cube)) << k.altitude << " m, face " << k.face;
     EXPECT_TRUE(std::all_of(cube.rgba.begin(), cube.rgba.end(), [](float v) { return v >= 0; }));
   }

@@ -17,10 +17,11 @@
 #include "graph/scene/scene.h"
 #include "passes/passes.h"
 #include "tests/gpu/backends.h"
+#include "tests/gpu/config_on_each_backend.h"
 
 namespace volgraph::testing {
 
-class TranslucencyVariantFixture : public OnEachBackend<std::tuple<Backend, std::string>> {
+class TranslucencyVariantFixture : public ConfigOnEachBackend<std::tuple<Backend, std::string>> {
  public:
   // A glass slab (IOR `ior`, `glass_extra` more material keys) turned 35° before a wall bright
   // on the left, dark on the right, `size` ("[W, H]") pixels, the pass's variant and
@@ -53,21 +54,8 @@ class TranslucencyVariantFixture : public OnEachBackend<std::tuple<Backend, std:
  protected:
   Backend backend() const override { return std::get<0>(GetParam()); }
   const std::string& variant() const { return std::get<1>(GetParam()); }
-  void SetUp() override {
-    register_builtin_passes(registry_);
-    OnEachBackend::SetUp();
-  }
   // `path` names the config (its includes resolve against its folder); scene_ keeps its scene.
-  Texels render(const std::string& text, const std::string& path = "translucency.json") {
-    const LoadedConfig loaded = load_config_text(path, text, registry_);
-    scene_ = loaded.config.scene;
-    Executor executor(device(), loaded.graph, &scene_, {});
-    executor.run_frame();
-    return executor.read_output(0);
-  }
-
-  PassRegistry registry_;
-  Scene scene_;
+  Texels render(const std::string& text, const std::string& path = "translucency.json") { return render_outputs(path, text, 1).front(); }
 };
 
 }  // namespace volgraph::testing
